@@ -1,0 +1,67 @@
+#include "core/induced_moments.h"
+
+#include <cmath>
+
+#include "core/coupling_frame.h"
+#include "core/coupling_geometry.h"
+
+namespace gc {
+
+double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double friction) {
+  const double c = std::cos(misalignment_rad);
+  const double s = std::sin(misalignment_rad);
+  return tooth_load_n * (friction * c + s) / (c - friction * s);  // eq 37
+}
+
+double self_weight_moment_nm(const CouplingGeometry& coupling) {
+  const CouplingDefinition& d = coupling.definition();
+  const double cos_tilt = std::cos(d.tilt_rad);
+  return d.coupling_weight_n * cos_tilt * d.shaft_length_m +
+         d.shaft_weight_per_length_n_per_m * cos_tilt * d.shaft_length_m * d.shaft_length_m / 2.0;
+}
+
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ToothContact& contact) {
+  const int n = coupling.teeth();
+  const double q_n = contact.load_sharing.q * n;
+  const double alpha = contact.offset_alpha_rad;
+  const double radius = coupling.pitch_radius_m();
+  const double zeta = point.misalignment_rad;
+  const double max_offset = contact.max_contact_offset_m;  // R_F sin(zeta), eq 15
+
+  // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
+  const int last = static_cast<int>(q_n / 4.0);
+  double sum_y = 0.0;
+  double sum_z = 0.0;
+  for (int j = 0; j <= last; ++j) {
+    const ToothLoad& tooth = contact.teeth[static_cast<std::size_t>(j)];
+    const double projection = std::cos(tooth.angle_rad);                        // cos(2 pi j/N + a)
+    const double offset = max_offset * std::cos(2.0 * M_PI * j / q_n + alpha);  // f_d, eq 40
+    const double arm = std::sqrt(radius * radius - offset * offset);            // R_d, eq 39
+    const double axial = axial_tooth_load_n(tooth.load_n, zeta, point.friction_coefficient);
+    sum_z += projection * axial * arm;          // M_dz'' = W_d R_d, eq 38
+    sum_y += projection * tooth.load_n * offset;  // M_dy'' = P_d f_d, eq 41
+  }
+  InducedMoments m;
+  m.teeth_summed = 4 * (last + 1);
+  m.moment_y_dd_nm = 4.0 * sum_y;  // eq 43
+  m.moment_z_dd_nm = 4.0 * sum_z;  // eq 42
+  const Eigen::Vector2d global =
+      double_prime_to_coupling(coupling.pressure_angle_rad(), point.direction_rad) *
+      Eigen::Vector2d(m.moment_y_dd_nm, m.moment_z_dd_nm);  // eqs 44-47
+  m.moment_y_nm = global.x();
+  m.moment_z_nm = global.y();
+  m.self_weight_moment_nm = self_weight_moment_nm(coupling);
+  m.sensor_moment_y_nm = m.moment_y_nm - m.self_weight_moment_nm;  // eq 48
+  m.sensor_moment_z_nm = m.moment_z_nm;
+  m.magnitude_nm = global.norm();
+  m.direction_rad = std::atan2(global.y(), global.x());
+  return m;
+}
+
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ContactOptions& options) {
+  return induced_moments(coupling, point, tooth_contact(coupling, point, options));
+}
+
+}  // namespace gc

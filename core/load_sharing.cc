@@ -1,0 +1,62 @@
+#include "core/load_sharing.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/model_error.h"
+
+namespace gc {
+
+double load_sharing_ratio(double x) {
+  if (std::isinf(x)) return 1.0;
+  if (x < 0.4) return std::sqrt(1.195 + 1.75 * x - x * x) - 1.033;
+  if (x < 1.0) return 0.36 * x + 0.14;
+  return 1.0 - 1.0 / (2.0 * x);
+}
+
+LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_m,
+                               double separation_m, const LoadSharingOptions& options) {
+  require_positive("options.load_sharing.tolerance", options.tolerance);
+  if (options.max_iterations < 1) {
+    throw InvalidInput("options.load_sharing.max_iterations", options.max_iterations, "[1, inf)");
+  }
+  LoadSharing result;
+  if (separation_m <= 0.0) {  // aligned: z_o = 0, every tooth shares equally
+    result.ze_over_zo = std::numeric_limits<double>::infinity();
+    return result;
+  }
+  // x(q) = z_e / z_o = P_t' / (q C z_o)   (eqs 10, 20, 21)
+  const double x_at_unit_q = mean_tooth_load_n / (stiffness_n_per_m * separation_m);
+  const auto residual = [x_at_unit_q](double q) { return load_sharing_ratio(x_at_unit_q / q) - q; };
+
+  // residual(q) decreases in q; eq 22 never returns less than its x -> 0 limit, so the root
+  // lies in [q_min, 1].
+  double lo = load_sharing_ratio(0.0);
+  double hi = 1.0;
+  double q = 1.0;                 // the paper's initial guess: the aligned coupling
+  double r = residual(q);
+  double q_prev = lo;
+  double r_prev = residual(lo);
+  for (int i = 1; i <= options.max_iterations; ++i) {
+    if (std::abs(r) <= options.tolerance) {
+      result.q = q;
+      result.ze_over_zo = x_at_unit_q / q;
+      result.iterations = i;
+      return result;
+    }
+    (r > 0.0 ? lo : hi) = q;
+    double next = q - r * (q - q_prev) / (r - r_prev);  // secant on residual
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    q_prev = q;
+    r_prev = r;
+    q = next;
+    r = residual(q);
+  }
+  throw NotConverged("load sharing (eqs 20-22) did not reach tolerance " +
+                     std::to_string(options.tolerance) + " in " +
+                     std::to_string(options.max_iterations) + " iterations; last q = " +
+                     std::to_string(q) + ", residual = " + std::to_string(r));
+}
+
+}  // namespace gc

@@ -1,0 +1,45 @@
+// Errors raised by the core when its inputs are not a physical coupling or operating point, or
+// when an iteration does not converge. The core never aborts and never returns NaN: every
+// entry point either returns finite numbers or throws one of these.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace gc {
+
+/// Base of every error the core raises; edges (CLI, service) catch this one type.
+class ModelError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An input outside its physical range. `field` names it as the user wrote it
+/// (e.g. "operating_point.misalignment_rad"), `value` is what was given and `allowed` the range.
+class InvalidInput : public ModelError {
+ public:
+  InvalidInput(std::string field, double value, std::string allowed);
+  InvalidInput(std::string field, std::string message);
+
+  const std::string& field() const noexcept { return field_; }
+
+ private:
+  std::string field_;
+};
+
+/// An iteration (eqs 20-22, eq 23's root) stopped before meeting its tolerance.
+class NotConverged : public ModelError {
+ public:
+  using ModelError::ModelError;
+};
+
+/// Throws InvalidInput unless `value` is finite and lo <= value <= hi (bounds inclusive).
+void require_in_range(const std::string& field, double value, double lo, double hi);
+/// Throws InvalidInput unless `value` is finite and strictly positive.
+void require_positive(const std::string& field, double value);
+/// Throws InvalidInput unless `value` is finite and not negative.
+void require_non_negative(const std::string& field, double value);
+/// Throws InvalidInput unless `value` is finite.
+void require_finite(const std::string& field, double value);
+
+}  // namespace gc

@@ -1,0 +1,31 @@
+#include "core/operating_point.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/coupling_geometry.h"
+#include "core/model_error.h"
+
+namespace gc {
+
+void validate_operating_point(const CouplingGeometry& coupling, const OperatingPoint& point) {
+  require_positive("operating_point.torque_nm", point.torque_nm);
+  require_finite("operating_point.direction_rad", point.direction_rad);
+  require_in_range("operating_point.friction_coefficient", point.friction_coefficient, 0.0, 1.0);
+  const JamAngle& jam = coupling.jam_angle();
+  if (!std::isfinite(point.misalignment_rad) || point.misalignment_rad < 0.0 ||
+      point.misalignment_rad >= jam.angle_rad) {
+    std::ostringstream allowed;
+    allowed.precision(6);
+    allowed << "[0, " << jam.angle_rad << ") rad: below the jam angle of " << coupling.name()
+            << ", " << jam.angle_rad * 180.0 / M_PI << " deg (" << to_string(jam.governing)
+            << ", eqs 23-35)";
+    throw InvalidInput("operating_point.misalignment_rad", point.misalignment_rad, allowed.str());
+  }
+  if (point.friction_coefficient * std::tan(point.misalignment_rad) >= 1.0) {
+    throw InvalidInput("operating_point.friction_coefficient", point.friction_coefficient,
+                       "mu tan(zeta) < 1 (eq 37)");
+  }
+}
+
+}  // namespace gc

@@ -1,0 +1,43 @@
+#include "core/stress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/coupling_geometry.h"
+
+namespace gc {
+namespace {
+
+double safety(double allowable_pa, double stress_pa) {
+  return stress_pa > 0.0 ? allowable_pa / stress_pa : std::numeric_limits<double>::max();
+}
+
+}  // namespace
+
+ToothStress tooth_stress(const CouplingGeometry& coupling, double tooth_load_n,
+                         double contact_length_m) {
+  const CouplingDefinition& d = coupling.definition();
+  ToothStress result;
+  if (tooth_load_n <= 0.0) {
+    result.contact_safety_factor = std::numeric_limits<double>::max();
+    result.bending_safety_factor = std::numeric_limits<double>::max();
+    return result;
+  }
+  // Hertz, cylinder (radius R_F) on a plane, both steel: E* = E / (2 (1 - nu^2)).
+  const double e_star = d.youngs_modulus_pa / (2.0 * (1.0 - d.poisson_ratio * d.poisson_ratio));
+  const double line_length = coupling.working_depth_m() / std::cos(d.pressure_angle_rad);
+  const double r = coupling.crown_radius_m();
+  result.contact_stress_pa = std::sqrt(tooth_load_n * e_star / (M_PI * line_length * r));
+  result.contact_half_width_m = std::sqrt(4.0 * tooth_load_n * r / (M_PI * line_length * e_star));
+  // Lewis/AGMA: sigma = W_t / (F_e m Y), weaker member's Y.
+  const double tangential_load = tooth_load_n * std::cos(d.pressure_angle_rad);
+  const double loaded_face = std::min(d.facewidth_m, contact_length_m);
+  const double form_factor = std::min(d.form_factor_hub, d.form_factor_sleeve);
+  result.bending_stress_pa = tangential_load / (loaded_face * d.module_m * form_factor);
+  result.contact_safety_factor = safety(d.allowables.contact_stress_pa, result.contact_stress_pa);
+  result.bending_safety_factor = safety(d.allowables.bending_stress_pa, result.bending_stress_pa);
+  return result;
+}
+
+}  // namespace gc

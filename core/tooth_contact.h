@@ -1,0 +1,68 @@
+// Tooth contact of a misaligned crowned-tooth coupling (Section 4.1): load sharing, the normal
+// load on every tooth and facewidth slice, contact zones, deformation, stress.
+//
+// Frame: tooth j sits at angle theta_j = 2 pi j / N + alpha from the z'' axis, which passes
+// through the most loaded tooth and is rotated from the misalignment axis by the pressure angle
+// (Figure 3b); z'' lies at phi + beta from z' (eqs 44-45).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/load_sharing.h"
+#include "core/operating_point.h"
+#include "core/stress.h"
+
+namespace gc {
+
+class CouplingGeometry;
+
+struct ContactOptions {
+  LoadSharingOptions load_sharing;  ///< eqs 20-22
+  int slices = 20;                  ///< N_s, even, slices across each contact zone (eq 14)
+};
+
+/// One tooth of the hub.
+struct ToothLoad {
+  double angle_rad = 0.0;           ///< theta_j = 2 pi j / N + alpha, from the z'' axis [rad]
+  double load_n = 0.0;              ///< P_d, eq 9 (clipped at zero) [N]
+  double contact_offset_m = 0.0;    ///< F_d, eq 16: contact centre from the flank centre [m]
+  double deformation_m = 0.0;       ///< delta_d = P_d / C, eq 17 [m]
+  double contact_length_m = 0.0;    ///< F_c, eq 18 [m]
+  double zone_begin_m = 0.0;        ///< eq 19 lower bound, clipped to -F/2 [m]
+  double zone_end_m = 0.0;          ///< eq 19 upper bound, clipped to +F/2 [m]
+  bool in_contact() const { return load_n > 0.0; }
+};
+
+struct ToothContact {
+  LoadSharing load_sharing;             ///< q and its iteration, eqs 20-22
+  double total_normal_load_n = 0.0;     ///< P_t = T / (R cos phi), eq 7 [N]
+  double mean_tooth_load_n = 0.0;       ///< P_t' = P_t / N, eq 20 [N]
+  double peak_tooth_load_n = 0.0;       ///< P_i = P_t' / q, eq 20 [N]
+  double elastic_deformation_m = 0.0;   ///< z_e = P_i / C, eq 10 [m]
+  double max_separation_m = 0.0;        ///< z_o, eq 11 [m]
+  double offset_alpha_rad = 0.0;        ///< alpha, eq 13 (residue as an angle) [rad]
+  double max_contact_offset_m = 0.0;    ///< F_i = R_F sin(zeta), eq 15 [m]
+  double z_axis_angle_rad = 0.0;        ///< phi + beta: z'' from z' [rad]
+  std::vector<ToothLoad> teeth;         ///< j = 0 .. N-1
+  int teeth_in_contact = 0;             ///< count of P_d > 0
+  int max_load_tooth = 0;               ///< j of the largest P_d
+  double max_tooth_load_n = 0.0;        ///< largest P_d [N]
+  double sum_tooth_loads_n = 0.0;       ///< sum of P_d, against P_t [N]
+  bool edge_loaded = false;             ///< some eq 19 zone reached a facewidth edge
+  Eigen::VectorXd slice_weights;        ///< cos(pi l / N_s), l = -N_s/2 .. N_s/2, eq 14
+  ToothStress max_stress;               ///< stress of the most loaded tooth (it governs)
+
+  /// Eq 14: load on every slice, P_ds = P_d cos(pi l / N_s): row j, column l + N_s/2 [N].
+  Eigen::MatrixXd slice_loads() const;
+  /// Facewidth position of slice l of tooth j: F_d + (l / N_s) F_c, from the flank centre [m].
+  double slice_position_m(int tooth, int slice) const;
+};
+
+/// Eqs 5-22 for `point` (friction is not used here). Validates the operating point (throws
+/// InvalidInput naming the field) and throws NotConverged when eqs 20-22 do not converge.
+ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
+                           const ContactOptions& options = {});
+
+}  // namespace gc
