@@ -110,6 +110,21 @@ TEST(ToothContact, ContactZoneFollowsEqs16To19) {
   EXPECT_NEAR(t.zone_end_m, t.contact_offset_m + t.contact_length_m / 2, 1e-15);
 }
 
+TEST(ToothContact, DownwindBecomesEdgeLoadedNearItsJamAngle) {
+  // Section 7: "in the extreme, the teeth are edge-loaded". At 1.5 MN·m the downwind coupling's
+  // zones reach the facewidth edge from about 88 % of its 1.7217 deg jam angle (1.515 deg);
+  // the upwind coupling's never do (largest |F_d| + F_c/2 = 53.6 mm of 63.5 mm).
+  const CouplingGeometry downwind(testing::nrel_downwind());
+  EXPECT_FALSE(tooth_contact(downwind, {kReferenceTorque, deg(1.50), 0.0, 0.0}).edge_loaded);
+  const ToothContact edge = tooth_contact(downwind, {kReferenceTorque, deg(1.53), 0.0, 0.0});
+  EXPECT_TRUE(edge.edge_loaded);
+  for (const ToothLoad& t : edge.teeth) {
+    EXPECT_GE(t.zone_begin_m, -0.0635);
+    EXPECT_LE(t.zone_end_m, 0.0635);
+  }
+  EXPECT_FALSE(upwind_contact(0.75).edge_loaded);
+}
+
 TEST(ToothContact, UnloadedTeethHaveNoContactZone) {
   const ToothContact c = upwind_contact(0.5);
   const ToothLoad& side = c.teeth[25];  // 90 deg from z'': the largest separation
