@@ -76,6 +76,7 @@ void evaluate_lines(std::span<const std::string> lines, long first_number, const
                     ChunkPart& part) {
   part.output.clear();
   part.errors.clear();
+  part.failed_rows = 0;
   BatchRow row;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     evaluate_line(lines[i], first_number + static_cast<long>(i), job, row, part);

@@ -14,14 +14,15 @@ Flags::Flags(std::vector<FlagSpec> specs, std::span<const char* const> args)
       help_ = true;
       continue;
     }
-    if (arg.size() == 2 && arg[0] == '-' && arg[1] != '-') {
+    std::optional<std::string> inline_value;
+    if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {  // "-j 2" or "-j2"
+      if (arg.size() > 2) inline_value = std::string(arg.substr(2));
       arg = long_name(arg[1]);
     } else if (arg.starts_with("--")) {
       arg.remove_prefix(2);
     } else {
       throw UsageError(fmt::format("unexpected argument '{}'", arg));
     }
-    std::optional<std::string> inline_value;
     if (const auto equals = arg.find('='); equals != std::string_view::npos) {
       inline_value = std::string(arg.substr(equals + 1));
       arg = arg.substr(0, equals);

@@ -99,7 +99,12 @@ int main(int argc, char** argv) {
   }
   const Subcommand* subcommand = find_subcommand(args[1]);
   if (subcommand == nullptr) {
-    fmt::print(stderr, "gearcoupling: error: unknown subcommand '{}'\n{}", args[1], overview());
+    std::string names;
+    for (const Subcommand* known : subcommands()) {
+      names += (names.empty() ? "" : ", ") + std::string(known->name);
+    }
+    fmt::print(stderr, "gearcoupling: error: unknown subcommand '{}' (one of {}; see --help)\n",
+               args[1], names);
     return kBadInput;
   }
   return run(*subcommand, args.subspan(2));
