@@ -180,8 +180,8 @@ int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* stand
 const Subcommand& batch_subcommand() {
   static const Subcommand subcommand{
       "batch",
-      "Runs every load case of a CSV through tooth contact and induced moments (eqs 5-48) on\n"
-      "all cores, streaming, and writes one CSV row per input row in input order.\n"
+      "CSV of load cases through contact and moments (eqs 5-48), on all cores, streaming.\n"
+      "Writes one CSV row per input row, in input order.\n"
       "Input header: torque_nm,misalignment_deg,direction_deg,mu[,coupling] (any order;\n"
       "coupling per row defaults to --coupling). Output: line,coupling,q,teeth_in_contact,\n"
       "max_tooth_load_n,moment_y_nm,moment_z_nm,sensor_moment_y_nm,sensor_moment_z_nm,\n"

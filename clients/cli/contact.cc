@@ -81,9 +81,9 @@ int run_contact(const Flags& flags, const Calculator& calculator, std::FILE* out
 const Subcommand& contact_subcommand() {
   static const Subcommand subcommand{
       "contact",
-      "Tooth contact of the coupling at one load case (eqs 5-22): load sharing, the load,\n"
-      "contact offset, deformation and contact zone of every tooth, and the most loaded\n"
-      "tooth's contact and bending stress.",
+      "Tooth contact at one load case (eqs 5-22).\n"
+      "Load sharing, the load, contact offset, deformation and contact zone of every tooth,\n"
+      "and the most loaded tooth's contact and bending stress.",
       contact_flags, run_contact};
   return subcommand;
 }

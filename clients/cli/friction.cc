@@ -51,8 +51,9 @@ int run_friction(const Flags& flags, const Calculator& calculator, std::FILE* ou
 const Subcommand& friction_subcommand() {
   static const Subcommand subcommand{
       "friction",
-      "Friction coefficient from measured torque, misalignment, direction and sensor moments\n"
-      "(eqs 1-4; an approximation of eqs 42-47, see docs/model.md).",
+      "Friction coefficient from test-cell measurements (eqs 1-4).\n"
+      "From measured torque, misalignment, direction and sensor moments; an approximation of\n"
+      "eqs 42-47, see docs/model.md.",
       friction_flags, run_friction};
   return subcommand;
 }

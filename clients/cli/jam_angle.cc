@@ -45,8 +45,8 @@ int run_jam_angle(const Flags& flags, const Calculator& calculator, std::FILE* o
 const Subcommand& jam_angle_subcommand() {
   static const Subcommand subcommand{
       "jam-angle",
-      "Jam angle of the coupling (eqs 23-35): the both-flanks, facewidth and radial criteria\n"
-      "and the smallest, which governs.",
+      "Jam angle and its three criteria (eqs 23-35).\n"
+      "The both-flanks, facewidth and radial criteria; the smallest governs.",
       no_flags, run_jam_angle};
   return subcommand;
 }

@@ -54,8 +54,9 @@ int run_moments(const Flags& flags, const Calculator& calculator, std::FILE* out
 const Subcommand& moments_subcommand() {
   static const Subcommand subcommand{
       "moments",
-      "Coupling-induced bending moments at one load case (eqs 36-48): in the double-prime\n"
-      "frame, the coupling frame and at the sensors, with the self-weight terms.",
+      "Coupling-induced bending moments at one load case (eqs 36-48).\n"
+      "In the double-prime frame, the coupling frame and at the sensors, with the self-weight\n"
+      "terms.",
       moments_flags, run_moments};
   return subcommand;
 }

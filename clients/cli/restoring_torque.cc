@@ -34,8 +34,8 @@ int run_restoring_torque(const Flags& flags, const Calculator& calculator, std::
 const Subcommand& restoring_torque_subcommand() {
   static const Subcommand subcommand{
       "restoring-torque",
-      "Minimum torque that lifts the hub off the sleeve and centres it (eqs 49-53), with the\n"
-      "root-clearance case the geometry selects.",
+      "Torque that lifts the hub off the sleeve and centres it (eqs 49-53).\n"
+      "With the root-clearance case the geometry selects and the teeth in contact.",
       no_flags, run_restoring_torque};
   return subcommand;
 }
