@@ -1,0 +1,84 @@
+#include "clients/cli/in_process_calculator.h"
+
+#include "codec/coupling_catalog.h"
+#include "core/model_error.h"
+
+namespace gc::cli {
+namespace {
+
+bool is_file_reference(std::string_view coupling) {
+  return coupling.find('/') != std::string_view::npos || coupling.ends_with(".textproto");
+}
+
+std::string known_names(const std::map<std::string, std::shared_ptr<const CouplingGeometry>,
+                                       std::less<>>& catalog) {
+  std::string names;
+  for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
+  return names;
+}
+
+}  // namespace
+
+InProcessCalculator::InProcessCalculator(std::filesystem::path catalog_dir)
+    : catalog_dir_(std::move(catalog_dir)) {}
+
+const CouplingGeometry& InProcessCalculator::geometry(std::string_view coupling) const {
+  std::lock_guard lock(mutex_);
+  if (is_file_reference(coupling)) {
+    auto found = files_.find(coupling);
+    if (found == files_.end()) {
+      auto geometry = std::make_shared<const CouplingGeometry>(
+          codec::load_coupling_geometry(std::filesystem::path(coupling)));
+      found = files_.emplace(std::string(coupling), std::move(geometry)).first;
+    }
+    return *found->second;
+  }
+  if (!catalog_) {
+    std::map<std::string, std::shared_ptr<const CouplingGeometry>, std::less<>> loaded;
+    for (auto& [name, geometry] : codec::load_coupling_catalog(catalog_dir_)) {
+      loaded.emplace(name, std::make_shared<const CouplingGeometry>(std::move(geometry)));
+    }
+    catalog_ = std::move(loaded);
+  }
+  const auto found = catalog_->find(coupling);
+  if (found == catalog_->end()) {
+    throw InvalidInput("coupling", "no coupling named \"" + std::string(coupling) + "\" in " +
+                                       catalog_dir_.string() + " (known: " +
+                                       known_names(*catalog_) + ")");
+  }
+  return *found->second;
+}
+
+std::string InProcessCalculator::coupling_name(std::string_view coupling) const {
+  return geometry(coupling).name();
+}
+
+ToothContact InProcessCalculator::tooth_contact(std::string_view coupling,
+                                                const OperatingPoint& point,
+                                                const ContactOptions& options) const {
+  return gc::tooth_contact(geometry(coupling), point, options);
+}
+
+LoadCase InProcessCalculator::load_case(std::string_view coupling, const OperatingPoint& point,
+                                        const ContactOptions& options) const {
+  const CouplingGeometry& g = geometry(coupling);
+  LoadCase result{gc::tooth_contact(g, point, options), {}};
+  result.moments = gc::induced_moments(g, point, result.contact);
+  return result;
+}
+
+JamAngleReport InProcessCalculator::jam_angle(std::string_view coupling) const {
+  const CouplingGeometry& g = geometry(coupling);
+  return {g.jam_angle(), g.crown_radius_m(), g.crown_radius_derived()};
+}
+
+RestoringTorque InProcessCalculator::restoring_torque(std::string_view coupling) const {
+  return gc::restoring_torque(geometry(coupling));
+}
+
+FrictionEstimate InProcessCalculator::estimate_friction(
+    std::string_view coupling, const FrictionMeasurement& measurement) const {
+  return gc::estimate_friction(geometry(coupling), measurement);
+}
+
+}  // namespace gc::cli
