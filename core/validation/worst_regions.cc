@@ -84,6 +84,32 @@ std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, 
   return regions;
 }
 
+double explained_share(const ErrorBinning& binning, const ErrorMetrics& overall,
+                       Channel channel) {
+  const double total = overall.rmse_nm * overall.rmse_nm * static_cast<double>(overall.count);
+  if (total <= 0.0) return 0.0;
+  double explained = 0.0;
+  for (const ErrorBin& bin : binning.bins()) {
+    const ErrorMetrics m = bin.errors[channel].metrics();
+    explained += static_cast<double>(m.count) * m.bias_nm * m.bias_nm;
+  }
+  return std::clamp(explained / total, 0.0, 1.0);
+}
+
+ErrorSignature error_signature(const ValidationAccumulator& validation, Channel channel) {
+  const ErrorMetrics overall = validation.overall()[channel].metrics();
+  ErrorSignature signature{channel};
+  signature.noise_estimate_nm = validation.noise_estimate_nm(channel);
+  const double noise_sq = signature.noise_estimate_nm * signature.noise_estimate_nm;
+  signature.systematic_rms_nm = std::sqrt(std::max(0.0, overall.rmse_nm * overall.rmse_nm - noise_sq));
+  // Below a third of the noise the systematic part adds under 6 % to the RMSE.
+  signature.at_noise_level = signature.systematic_rms_nm < signature.noise_estimate_nm / 3.0;
+  for (std::size_t d = 0; d < kBinDimensions.size(); ++d) {
+    signature.explained_share[d] = explained_share(validation.binnings()[d], overall, channel);
+  }
+  return signature;
+}
+
 std::string describe_region(const RegionError& r) {
   const ErrorBin& bin = r.region;
   switch (r.dimension) {
