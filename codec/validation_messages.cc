@@ -112,14 +112,11 @@ v1::ModelValidation to_message(std::string_view model_name,
     out->set_first_message(rejection.first_message);
   }
   *record.mutable_overall() = to_message(validation.overall(), reference);
-  std::vector<RegionError> regions;
   for (Channel channel : kChannels) {
-    for (const RegionError& region : worst_regions(validation, channel)) regions.push_back(region);
+    for (const RegionError& region : worst_regions(validation, channel)) {
+      *record.add_worst_regions() = region_message(region, reference);
+    }
   }
-  std::stable_sort(regions.begin(), regions.end(), [](const auto& a, const auto& b) {
-    return a.contrast > b.contrast;
-  });
-  for (const RegionError& region : regions) *record.add_worst_regions() = region_message(region, reference);
   for (const ErrorBinning& binning : validation.binnings()) {
     *record.add_binnings() = binning_message(binning, reference);
   }

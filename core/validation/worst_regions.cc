@@ -78,8 +78,11 @@ std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, 
     }
     if (worst) regions.push_back(*worst);
   }
+  // Time last: in a designed load sequence every input is a function of time, so a time bin
+  // repeats what a load input says more plainly; it leads only for drift (no other region).
   std::stable_sort(regions.begin(), regions.end(), [](const RegionError& a, const RegionError& b) {
-    return a.contrast > b.contrast;
+    const bool a_time = a.dimension == BinDimension::time, b_time = b.dimension == BinDimension::time;
+    return a_time != b_time ? b_time : a.contrast > b.contrast;
   });
   return regions;
 }
@@ -91,7 +94,8 @@ double explained_share(const ErrorBinning& binning, const ErrorMetrics& overall,
   double explained = 0.0;
   for (const ErrorBin& bin : binning.bins()) {
     const ErrorMetrics m = bin.errors[channel].metrics();
-    explained += static_cast<double>(m.count) * m.bias_nm * m.bias_nm;
+    const double deviation = m.bias_nm - overall.bias_nm;
+    explained += static_cast<double>(m.count) * deviation * deviation;
   }
   return std::clamp(explained / total, 0.0, 1.0);
 }

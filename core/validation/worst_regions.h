@@ -25,14 +25,15 @@ struct RegionError {
 };
 
 /// For `channel`, the worst bin of every dimension with more than one populated bin, worst
-/// first. A bin counts when it holds at least `min_share` of the samples (and 10 or more),
+/// first (time last: see worst_regions.cc). A bin counts when it holds at least `min_share` of the samples (and 10 or more),
 /// so a handful of samples cannot name a region.
 std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, Channel channel,
                                        double min_share = 0.02);
 
-/// How much of `channel`'s mean-square error the bin biases of `dimension` explain:
-/// sum_b n_b bias_b^2 / sum e^2, in [0, 1]. Near 1: the error is a systematic function of that
-/// input; near 0: not (noise, or an error whose sign another input sets).
+/// How much of `channel`'s mean-square error the bin biases of `dimension` explain beyond the
+/// overall bias: sum_b n_b (bias_b - bias)^2 / sum e^2, in [0, 1]. Near 1: the error is a
+/// systematic function of that input; near 0: not (noise, a uniform bias, or an error whose
+/// sign another input sets).
 double explained_share(const ErrorBinning& binning, const ErrorMetrics& overall, Channel channel);
 
 /// The error of one channel split into noise and a systematic part.
