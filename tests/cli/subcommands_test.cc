@@ -179,7 +179,7 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, CliBadInput,
     ::testing::Values(
         BadInputCase{{"contact", "--torque", "-5", "--misalignment-deg", "0.4"},
-                     {"--torque -5", "operating_point.torque_nm", "allowed a finite value > 0"}},
+                     {"--torque -5", "operating_point.torque_nm", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "2"},
                      {"--misalignment-deg 2", "jam angle", "0.750906 deg"}},
         BadInputCase{{"moments", "--torque", "1e6", "--misalignment-deg", "0.4", "--mu", "1.5"},
@@ -191,7 +191,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "3"},
                      {"--slices 3", "even number in [2, 1000]"}},
         BadInputCase{{"contact", "--torque", "nan", "--misalignment-deg", "0.4"},
-                     {"--torque nan", "allowed a finite value > 0"}},
+                     {"--torque nan", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
                      {"unknown flag --colour"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--coupling",
