@@ -190,6 +190,10 @@ INSTANTIATE_TEST_SUITE_P(
                      {"--torque 'abc' is not a number"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "3"},
                      {"--slices 3", "even number in [2, 1000]"}},
+        BadInputCase{{"moments", "--torque", "1e308", "--misalignment-deg", "0.4", "--mu", "0.1"},
+                     {"--torque 1e308", "stay finite"}},  // eq 7 overflows: no NaN printed
+        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "x"},
+                     {"--slices 'x' is not a whole number"}},
         BadInputCase{{"contact", "--torque", "nan", "--misalignment-deg", "0.4"},
                      {"--torque nan", "allowed a finite value > 0"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
