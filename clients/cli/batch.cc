@@ -29,8 +29,8 @@ std::vector<FlagSpec> batch_flags() {
   std::vector<FlagSpec> flags = {
       {"in", "FILE|-", "input CSV of load cases ('-': standard input)", std::nullopt},
       {"out", "FILE|-", "output CSV of results ('-': standard output)", "-"},
-      {"jobs", "N", "worker threads", std::to_string(std::max(1u, std::thread::hardware_concurrency())),
-       false, 'j'},
+      {"jobs", "N", "worker threads",
+       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
   };
   for (FlagSpec& flag : contact_option_flags()) flags.push_back(std::move(flag));
   return flags;

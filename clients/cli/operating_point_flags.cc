@@ -24,9 +24,11 @@ std::vector<FlagSpec> operating_point_flags(bool friction_used) {
       {"direction-deg", "deg", "direction beta of the misalignment axis [deg]", "0"},
   };
   if (friction_used) {
-    flags.push_back({"mu", "number", "tooth sliding friction coefficient mu [-], 0..1", std::nullopt});
+    flags.push_back(
+        {"mu", "number", "tooth sliding friction coefficient mu [-], 0..1", std::nullopt});
   } else {
-    flags.push_back({"mu", "number", "friction coefficient mu [-]; not used by this calculation", "0"});
+    flags.push_back(
+        {"mu", "number", "friction coefficient mu [-]; not used by this calculation", "0"});
   }
   return flags;
 }
