@@ -145,7 +145,7 @@ void write_parts(const std::vector<ChunkPart>& parts, std::FILE* out) {
 
 int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* standard_output) {
   if (flags.enabled("json")) throw UsageError("--json: batch writes CSV (see --help)");
-  const int threads = flags.integer("jobs", 1, 1024);
+  const int threads = flags.integer("jobs", 1, 256);
   const std::unique_ptr<std::istream> in = open_input(flags.text("in"));
   std::string header;
   if (!std::getline(*in, header)) throw UsageError("--in " + flags.text("in") + ": no header line");

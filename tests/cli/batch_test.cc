@@ -135,6 +135,28 @@ TEST(CliBatch, WritesToTheOutFile) {
   EXPECT_EQ(lines_of(read_file(out)).size(), 6u);
 }
 
+TEST(CliBatch, AcceptsByteOrderMarkAndWindowsLineEnds) {
+  const std::string in = temp_path("gc_batch_crlf");
+  write_file(in, "\xEF\xBB\xBFtorque_nm,misalignment_deg,direction_deg,mu\r\n1e6,0.2,90,0.12\r\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> rows = lines_of(run.out);
+  ASSERT_EQ(rows.size(), 2u);
+  expect_row_equals_core(rows[1], 2, "nrel_upwind", {1e6, 0.2 * kDegree, 90 * kDegree, 0.12});
+}
+
+TEST(CliBatch, HeaderOnlyGivesHeaderOnlyAndNoHeaderIsAnError) {
+  const std::string in = temp_path("gc_batch_header_only");
+  write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(lines_of(run.out).size(), 1u);
+  write_file(in, "");
+  const ProcessResult empty = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("no header line"), std::string::npos) << empty.err;
+}
+
 TEST(CliBatch, BadHeaderExitsTwoNamingTheColumn) {
   const std::string in = temp_path("gc_batch_header");
   write_file(in, "torque_nm,misalignment_deg,direction_deg,friction\n1e6,0.1,0,0.1\n");
