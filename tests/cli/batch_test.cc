@@ -169,6 +169,16 @@ TEST(CliBatch, BadHeaderExitsTwoNamingTheColumn) {
   EXPECT_NE(missing.err.find("required column 'mu' missing"), std::string::npos) << missing.err;
 }
 
+TEST(CliBatch, RefusesToOverwriteItsInput) {
+  const std::string in = temp_path("gc_batch_same");
+  const std::string cases = "torque_nm,misalignment_deg,direction_deg,mu\n1e6,0.1,0,0.1\n";
+  write_file(in, cases);
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in, "--out", in});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("is the input file"), std::string::npos) << run.err;
+  EXPECT_EQ(read_file(in), cases);
+}
+
 TEST(CliBatch, OneAndTwoThreadsWriteIdenticalOutputInInputOrder) {
   // 20 000 rows: several chunks of 4096 lines per thread, and bad rows in several of them.
   const std::string in = temp_path("gc_batch_threads");
