@@ -65,6 +65,7 @@ TEST(InputValidation, OperatingPointErrorsNameTheField) {
   EXPECT_EQ(field_of(contact({kNaN, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
   EXPECT_EQ(field_of(contact({0.0, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
   EXPECT_EQ(field_of(contact({-1e6, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
+  EXPECT_EQ(field_of(contact({1e308, deg(0.3), 0.0, 0.1})), "operating_point.torque_nm");  // overflow
   EXPECT_EQ(field_of(contact({1e6, kNaN, 0.0, 0.0})), "operating_point.misalignment_rad");
   EXPECT_EQ(field_of(contact({1e6, -1e-3, 0.0, 0.0})), "operating_point.misalignment_rad");
   EXPECT_EQ(field_of(contact({1e6, g.jam_angle().angle_rad, 0.0, 0.0})),

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/coupling_geometry.h"
+#include "core/coupling_model.h"
+#include "core/effects/effect_registry.h"
 #include "core/induced_moments.h"
 #include "core/restoring_torque.h"
 #include "tests/core/nrel_couplings.h"
@@ -53,6 +55,33 @@ TEST(Reentrancy, EightThreadsMatchSingleThreadedResultsBitForBit) {
   }
   for (std::thread& thread : threads) thread.join();
   for (int i = 0; i < kCases; ++i) EXPECT_TRUE(bitwise_equal(serial[i], parallel[i])) << i;
+}
+
+TEST(Reentrancy, ModelWithEveryEffectOnMatchesSerialResultsBitForBit) {
+  std::vector<std::shared_ptr<const Effect>> effects;
+  for (const EffectRegistration& r : effect_registry()) effects.push_back(r.make({}));  // defaults
+  const CouplingModel model(testing::nrel_downwind(), effects);
+  const auto predict = [&model](int i) {
+    MeasurementSample s;
+    s.torque_nm = 1e5 + 2e4 * i;
+    s.misalignment_rad = deg(1.2) * (i % 50) / 50.0;
+    s.direction_rad = deg(7.0 * i);
+    s.loading_direction = i % 3 - 1;
+    return model.predict(s).moments;
+  };
+  constexpr int kCases = 400;
+  std::vector<SensorMoments> serial(kCases), parallel(kCases);
+  for (int i = 0; i < kCases; ++i) serial[i] = predict(i);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 8; ++t) {
+    threads.emplace_back([&, t] {
+      for (int i = t; i < kCases; i += 8) parallel[i] = predict(i);
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (int i = 0; i < kCases; ++i) {
+    EXPECT_EQ(std::memcmp(&serial[i], &parallel[i], sizeof(SensorMoments)), 0) << i;
+  }
 }
 
 }  // namespace
