@@ -1,6 +1,7 @@
-// The last guard before results reach the user: the core promises finite numbers, but accepts
-// any finite torque, and a large enough one (1e308 N·m) overflows eq 7 into infinite loads and
-// NaN moments. Rather than print those, the calculator refuses the load case by name.
+// The last guard before results reach the user: the core promises finite numbers, but its
+// input ranges do not cover every overflow (eq 4 divides measured moments by the torque:
+// 1e308 N·m / 1e-300 N·m; before the core bounded the torque, 1e308 N·m gave NaN moments).
+// Rather than print a NaN or an infinity, the calculator refuses the load case by name.
 #pragma once
 
 #include "core/friction_estimate.h"
