@@ -83,7 +83,7 @@ TEST(CliBatch, BadRowIsReportedWithItsLineAndTheOthersMatchTheCore) {
              "1e6,0.2,90,0.12\n"      // line 4
              "1e6,0.2,x,0.12\n"       // line 5: not a number
              "8e5,0,0,0\n"            // line 6: aligned
-             "1e308,0.4,0,0.1\n");    // line 7: overflows eq 7
+             "1e308,0.4,0,0.1\n");    // line 7: above the core's torque bound
   const ProcessResult run = run_gearcoupling({"batch", "--in", in});
   EXPECT_EQ(run.exit_code, 1);  // some rows failed
   const std::vector<std::string> rows = lines_of(run.out);
