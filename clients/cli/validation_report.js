@@ -173,7 +173,7 @@ const AXIS = { torque: "torque bin [MN·m]", misalignment: "misalignment bin [% 
   direction: "direction bin [deg]", loading: "loading direction", time: "time bin [s]" };
 
 function binnedErrors() {
-  const grid = section("Error by input", "RMSE (bars) of every populated bin; the bias is in the tooltip and the JSON.");
+  const grid = section("Error by input", "RMSE (bars) of every populated bin; each bin's bias is in --json (binnings).");
   const dimensions = (MODELS[0] || { binnings: [] }).binnings.map((b) => b.dimension);
   for (const dimension of dimensions) {
     const bins0 = MODELS[0].binnings.find((b) => b.dimension === dimension).bins;
