@@ -111,6 +111,30 @@ TEST(ValidateCli, MissingColumnIsBadInputNamingIt) {
   EXPECT_NE(run.err.find("required column msz missing"), std::string::npos) << run.err;
 }
 
+TEST(ValidateCli, ModelFileErrorIsBadInputNamingFieldAndFile) {
+  const std::string model = temp_path("bad_model") + ".textproto";
+  write_file(model, "coupling: \"nrel_upwind\"\neffects { name: \"friction\" parameters { key: "
+                    "\"mu0\" value: -0.1 } }\n");
+  const ProcessResult run = run_gearcoupling(
+      {"validate", "--data", kRecordings + "/paper_torque_ramp.csv", "--model", model});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("model.effects[0].friction.mu0"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("bad_model"), std::string::npos) << run.err;
+}
+
+TEST(ValidateCli, ResultDoesNotDependOnTheThreadCount) {
+  const std::vector<std::string> args = {"validate", "--data",
+      kRecordings + "/paper_moment_sweep.csv", "--model", "paper", "--json"};
+  auto with_threads = [&](const std::string& threads) {
+    auto a = args;
+    a.insert(a.end(), {"-j", threads});
+    return run_gearcoupling(a);
+  };
+  const ProcessResult one = with_threads("1"), three = with_threads("3");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(one.out, three.out);
+}
+
 TEST(ValidateCli, HtmlReportIsOneFileWithChartJsInlinedAndNothingFetched) {
   const std::string html = temp_path("report") + ".html";
   const ProcessResult run = run_gearcoupling({"validate", "--data",
