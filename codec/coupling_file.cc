@@ -1,0 +1,143 @@
+#include "codec/coupling_file.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/text_format.h>
+
+#include "codec/angle_units.h"
+#include "core/model_error.h"
+#include "idl/coupling.pb.h"
+
+namespace gc::codec {
+namespace {
+
+namespace pb = google::protobuf;
+
+// Fields idl/coupling.proto marks "optional use"; every other field is required. The field
+// names are the schema's, so a renamed field fails the catalogue tests rather than passing here.
+const std::set<std::string, std::less<>>& optional_fields() {
+  static const std::set<std::string, std::less<>> fields = {
+      "description", "crown_radius_m", "sleeve_root_diameter_m"};
+  return fields;
+}
+
+// Turns the text-format parser's first error into an InvalidInput naming the field when the
+// parser names one ("... has no field named \"x\"."), and the source, line and column always.
+class ThrowingErrorCollector : public pb::io::ErrorCollector {
+ public:
+  explicit ThrowingErrorCollector(std::string_view source) : source_(source) {}
+
+  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
+    if (!first_error_.empty()) return;
+    // The parser counts lines and columns from zero; editors count from one.
+    first_error_ = std::string(source_) + ":" + std::to_string(line + 1) + ":" +
+                   std::to_string(column + 1) + ": " + message;
+    field_ = "coupling" + named_field(message);
+  }
+
+  void throw_if_failed() const {
+    if (!first_error_.empty()) throw InvalidInput(field_, first_error_);
+  }
+
+ private:
+  static std::string named_field(const std::string& message) {
+    static constexpr std::string_view kMarker = "field named \"";
+    const auto begin = message.find(kMarker);
+    if (begin == std::string::npos) return "";
+    const auto name_begin = begin + kMarker.size();
+    const auto end = message.find('"', name_begin);
+    if (end == std::string::npos) return "";
+    std::string field(".");
+    field.append(message, name_begin, end - name_begin);
+    return field;
+  }
+
+  std::string_view source_;
+  std::string first_error_;
+  std::string field_;
+};
+
+// Every field of `message` (and of its set sub-messages) that is neither set nor optional use.
+void require_fields(const pb::Message& message, const std::string& path,
+                    std::string_view source) {
+  const pb::Descriptor* descriptor = message.GetDescriptor();
+  const pb::Reflection* reflection = message.GetReflection();
+  for (int i = 0; i < descriptor->field_count(); ++i) {
+    const pb::FieldDescriptor* field = descriptor->field(i);
+    const std::string field_path = path + "." + field->name();
+    if (!reflection->HasField(message, field)) {
+      if (optional_fields().contains(field->name())) continue;
+      throw InvalidInput(field_path, "required field missing in " + std::string(source));
+    }
+    if (field->type() == pb::FieldDescriptor::TYPE_MESSAGE) {
+      require_fields(reflection->GetMessage(message, field), field_path, source);
+    }
+  }
+}
+
+CouplingDefinition from_message(const gearcoupling::v1::CouplingDefinition& m) {
+  CouplingDefinition d;
+  d.name = m.name();
+  d.teeth = m.teeth();
+  d.module_m = m.module_m();
+  d.pressure_angle_rad = radians_from_degrees(m.pressure_angle_deg());
+  d.pitch_diameter_m = m.pitch_diameter_m();
+  d.base_diameter_m = m.base_diameter_m();
+  d.outer_diameter_m = m.outer_diameter_m();
+  d.root_diameter_m = m.root_diameter_m();
+  d.center_distance_m = m.center_distance_m();
+  d.backlash_m = m.backlash_m();
+  d.tooth_thickness_m = m.tooth_thickness_m();
+  d.tool_tip_radius_m = m.tool_tip_radius_m();
+  d.facewidth_m = m.facewidth_m();
+  d.lead_modification_m = m.lead_modification_m();
+  d.profile_tip_relief_m = m.profile_tip_relief_m();
+  d.profile_relief_start_roll_rad = radians_from_degrees(m.profile_relief_start_roll_deg());
+  if (m.has_crown_radius_m()) d.crown_radius_m = m.crown_radius_m();
+  d.form_factor_hub = m.form_factor_hub();
+  d.form_factor_sleeve = m.form_factor_sleeve();
+  d.youngs_modulus_pa = m.youngs_modulus_pa();
+  d.poisson_ratio = m.poisson_ratio();
+  d.design_misalignment_rad = radians_from_degrees(m.design_misalignment_deg());
+  d.coupling_weight_n = m.coupling_weight_n();
+  d.shaft_weight_per_length_n_per_m = m.shaft_weight_per_length_n_per_m();
+  d.shaft_length_m = m.shaft_length_m();
+  d.tilt_rad = radians_from_degrees(m.tilt_deg());
+  if (m.has_sleeve_root_diameter_m()) d.sleeve_root_diameter_m = m.sleeve_root_diameter_m();
+  d.allowables.contact_stress_pa = m.allowables().contact_stress_pa();
+  d.allowables.bending_stress_pa = m.allowables().bending_stress_pa();
+  return d;
+}
+
+}  // namespace
+
+CouplingDefinition parse_coupling_text(std::string_view text, std::string_view source_name) {
+  gearcoupling::v1::CouplingDefinition message;
+  ThrowingErrorCollector errors(source_name);
+  pb::TextFormat::Parser parser;
+  parser.RecordErrorsTo(&errors);
+  const bool parsed = parser.ParseFromString(std::string(text), &message);
+  errors.throw_if_failed();
+  if (!parsed) {
+    throw InvalidInput("coupling", std::string(source_name) + ": not a coupling text proto");
+  }
+  require_fields(message, "coupling", source_name);
+  if (message.name().empty()) {
+    throw InvalidInput("coupling.name", "must not be empty in " + std::string(source_name));
+  }
+  return from_message(message);
+}
+
+CouplingDefinition load_coupling_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput("coupling", "cannot read coupling file " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_coupling_text(text.str(), path.filename().string());
+}
+
+}  // namespace gc::codec

@@ -1,0 +1,23 @@
+// Coupling files: gearcoupling.v1.CouplingDefinition (idl/coupling.proto) in protobuf text
+// format, as bundled in data/couplings/. Translates to gc::CouplingDefinition: SI, radians.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "core/coupling_definition.h"
+
+namespace gc::codec {
+
+/// Parses one coupling in text format. Throws gc::InvalidInput naming the field and
+/// `source_name` (with line and column for syntax errors and unknown fields) when the text does
+/// not parse, names a field the schema lacks, or omits a required field: every field except
+/// those the schema marks "optional use" (description, crown_radius_m, sleeve_root_diameter_m).
+/// Angles in the file are degrees (_deg) and come out in radians. Values are not range-checked
+/// here: gc::CouplingGeometry does that.
+CouplingDefinition parse_coupling_text(std::string_view text, std::string_view source_name);
+
+/// Reads and parses `path`; errors name the file by its file name.
+CouplingDefinition load_coupling_file(const std::filesystem::path& path);
+
+}  // namespace gc::codec

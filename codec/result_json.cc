@@ -1,0 +1,20 @@
+#include "codec/result_json.h"
+
+#include <stdexcept>
+
+#include <google/protobuf/util/json_util.h>
+
+namespace gc::codec {
+
+std::string to_json(const google::protobuf::Message& message) {
+  google::protobuf::util::JsonPrintOptions options;
+  options.add_whitespace = true;
+  options.always_print_primitive_fields = true;
+  options.preserve_proto_field_names = true;
+  std::string json;
+  const auto status = google::protobuf::util::MessageToJsonString(message, &json, options);
+  if (!status.ok()) throw std::runtime_error("JSON printing failed: " + status.ToString());
+  return json;
+}
+
+}  // namespace gc::codec

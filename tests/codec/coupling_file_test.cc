@@ -1,0 +1,123 @@
+#include "codec/coupling_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/model_error.h"
+
+namespace gc::codec {
+namespace {
+
+std::string bundled_text(const std::string& name) {
+  std::ifstream in(std::string(GC_BUNDLED_CATALOG_DIR) + "/" + name + ".textproto");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The bundled upwind text with the line holding `field` removed.
+std::string without_line_of(const std::string& text, const std::string& field) {
+  std::istringstream in(text);
+  std::string out, line;
+  while (std::getline(in, line)) {
+    if (line.rfind(field, 0) != 0) out += line + "\n";
+  }
+  return out;
+}
+
+// Runs `parse` and returns the InvalidInput it throws; fails the test if it throws nothing.
+template <typename Parse>
+InvalidInput error_of(Parse parse) {
+  try {
+    parse();
+  } catch (const InvalidInput& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no InvalidInput thrown";
+  return InvalidInput("none", "none");
+}
+
+TEST(CouplingFile, LoadsBundledUpwindWithTable1ValuesInSi) {
+  const CouplingDefinition d =
+      load_coupling_file(std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_upwind.textproto");
+  EXPECT_EQ(d.name, "nrel_upwind");
+  EXPECT_EQ(d.teeth, 100);
+  EXPECT_DOUBLE_EQ(d.pitch_diameter_m, 1.016);
+  EXPECT_DOUBLE_EQ(d.backlash_m, 0.00064);
+  EXPECT_DOUBLE_EQ(d.allowables.contact_stress_pa, 1.1e9);
+  EXPECT_FALSE(d.crown_radius_m.has_value());  // optional use, absent in the file
+}
+
+TEST(CouplingFile, LoadsBundledDownwind) {
+  const CouplingDefinition d =
+      load_coupling_file(std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_downwind.textproto");
+  EXPECT_EQ(d.name, "nrel_downwind");
+  EXPECT_GT(d.teeth, 0);
+}
+
+TEST(CouplingFile, ConvertsDegreesToRadians) {
+  const CouplingDefinition d = parse_coupling_text(bundled_text("nrel_upwind"), "up");
+  EXPECT_NEAR(d.pressure_angle_rad, 20.0 * M_PI / 180.0, 1e-15);          // file: 20.0 deg
+  EXPECT_NEAR(d.profile_relief_start_roll_rad, 23.6 * M_PI / 180.0, 1e-15);  // file: 23.6 deg
+  const std::string tilted =
+      without_line_of(bundled_text("nrel_upwind"), "tilt_deg") + "tilt_deg: 5\n";
+  EXPECT_NEAR(parse_coupling_text(tilted, "t").tilt_rad, 5.0 * M_PI / 180.0, 1e-15);
+}
+
+TEST(CouplingFile, MissingRequiredFieldIsNamedWithTheFile) {
+  const std::string text = without_line_of(bundled_text("nrel_upwind"), "backlash_m");
+  const InvalidInput error =
+      error_of([&] { parse_coupling_text(text, "nrel_upwind.textproto"); });
+  EXPECT_EQ(error.field(), "coupling.backlash_m");
+  EXPECT_STREQ(error.what(),
+               "coupling.backlash_m: required field missing in nrel_upwind.textproto");
+}
+
+TEST(CouplingFile, MissingNestedAllowableIsNamedWithItsPath) {
+  std::string text = bundled_text("nrel_upwind");
+  text = without_line_of(text, "  bending_stress_pa");
+  const InvalidInput error = error_of([&] { parse_coupling_text(text, "f.textproto"); });
+  EXPECT_EQ(error.field(), "coupling.allowables.bending_stress_pa");
+}
+
+TEST(CouplingFile, OptionalUseFieldsMayBeAbsentOrGiven) {
+  const std::string text = bundled_text("nrel_upwind") + "crown_radius_m: 1.64\n";
+  const CouplingDefinition d = parse_coupling_text(text, "f");
+  ASSERT_TRUE(d.crown_radius_m.has_value());
+  EXPECT_DOUBLE_EQ(*d.crown_radius_m, 1.64);
+}
+
+TEST(CouplingFile, UnknownFieldIsNamedWithLineAndColumn) {
+  // Line 1 of the text; protobuf reports the column just past the name (the colon, column 14).
+  const std::string text = "  backlash_mm: 0.1\n" + bundled_text("nrel_upwind");
+  const InvalidInput error = error_of([&] { parse_coupling_text(text, "bad.textproto"); });
+  EXPECT_EQ(error.field(), "coupling.backlash_mm");
+  const std::string what = error.what();
+  EXPECT_NE(what.find("bad.textproto:1:14:"), std::string::npos) << what;
+  EXPECT_NE(what.find("backlash_mm"), std::string::npos) << what;
+}
+
+TEST(CouplingFile, SyntaxErrorNamesLineAndColumn) {
+  const std::string text = "name: \"x\"\nteeth 100\n";  // line 2 lacks its colon
+  const InvalidInput error = error_of([&] { parse_coupling_text(text, "syntax.textproto"); });
+  const std::string what = error.what();
+  EXPECT_NE(what.find("syntax.textproto:2:"), std::string::npos) << what;
+}
+
+TEST(CouplingFile, WrongValueTypeIsAnError) {
+  const std::string text =
+      without_line_of(bundled_text("nrel_upwind"), "teeth") + "teeth: \"many\"\n";
+  const InvalidInput error = error_of([&] { parse_coupling_text(text, "type.textproto"); });
+  EXPECT_NE(std::string(error.what()).find("type.textproto:"), std::string::npos);
+}
+
+TEST(CouplingFile, UnreadableFileIsAnError) {
+  EXPECT_THROW(load_coupling_file("/nonexistent/none.textproto"), InvalidInput);
+}
+
+}  // namespace
+}  // namespace gc::codec
