@@ -30,6 +30,14 @@ Qos status_qos(double lease_s) {
   return qos;
 }
 
+Qos status_reader_qos() {
+  Qos qos;
+  dds_qset_reliability(qos.get(), DDS_RELIABILITY_RELIABLE, seconds(1.0));
+  dds_qset_history(qos.get(), DDS_HISTORY_KEEP_LAST, 1);
+  dds_qset_durability(qos.get(), DDS_DURABILITY_TRANSIENT_LOCAL);
+  return qos;
+}
+
 Qos partition_qos(const std::string& partition) {
   Qos qos;
   dds_qset_partition1(qos.get(), partition.c_str());

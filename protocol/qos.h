@@ -22,6 +22,10 @@ Qos tagged_reply_writer_qos(const std::string& tag);
 /// liveliness with `lease_s` so a killed service's status goes NOT_ALIVE within that time.
 Qos status_qos(double lease_s);
 
+/// Status readers (and the topic): as status_qos() but without a liveliness request, so any
+/// writer's lease is accepted and judged by its own offer.
+Qos status_reader_qos();
+
 /// A publisher or subscriber in exactly one partition.
 Qos partition_qos(const std::string& partition);
 

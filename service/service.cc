@@ -11,6 +11,7 @@
 #include "protocol/random_id.h"
 #include "protocol/reply_status.h"
 #include "protocol/samples.h"
+#include "protocol/topics.h"
 #include "protocol/wire_inputs.h"
 #include "protocol/wire_requests.h"
 #include "protocol/wire_results.h"
@@ -35,27 +36,6 @@ Clock::duration seconds(double s) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
 }
 
-/// The five request topics (`replies` false) or the five reply topics.
-std::array<Entity, 5> make_topics(dds_entity_t participant, bool replies) {
-  std::array<Entity, 5> topics;
-  const protocol::Qos qos = protocol::request_reply_qos();
-  protocol::for_each_calculation([&](auto calculation) {
-    using T = CalculationTraits<decltype(calculation)::value>;
-    const dds_topic_descriptor_t& type = replies ? T::reply_type() : T::request_type();
-    const std::string name =
-        replies ? protocol::reply_topic_name(T::kId) : protocol::request_topic_name(T::kId);
-    topics[protocol::index_of(T::kId)] = Entity(check_dds(
-        dds_create_topic(participant, &type, name.c_str(), qos.get(), nullptr), "dds_create_topic"));
-  });
-  return topics;
-}
-
-std::array<dds_entity_t, 5> handles(const std::array<Entity, 5>& entities) {
-  std::array<dds_entity_t, 5> out{};
-  for (std::size_t i = 0; i < entities.size(); ++i) out[i] = entities[i].get();
-  return out;
-}
-
 }  // namespace
 
 Service::Service(const ServiceConfig& config, Catalogue catalogue)
@@ -65,9 +45,9 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
       participant_(check_dds(dds_create_participant(static_cast<dds_domainid_t>(config.domain),
                                                     nullptr, nullptr),
                              "dds_create_participant")),
-      request_topics_(make_topics(participant_.get(), false)),
-      reply_topics_(make_topics(participant_.get(), true)),
-      reply_writers_(participant_.get(), handles(reply_topics_), protocol::hex_id(instance_id_)),
+      request_topics_(protocol::make_request_topics(participant_.get())),
+      reply_topics_(protocol::make_reply_topics(participant_.get())),
+      reply_writers_(participant_.get(), protocol::handles(reply_topics_), protocol::hex_id(instance_id_)),
       status_(participant_.get(), instance_id_, worker_count(config.threads),
               config.liveliness_lease_s, catalogue_, stats_),
       pool_(worker_count(config.threads)) {

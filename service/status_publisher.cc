@@ -8,6 +8,7 @@
 #include "protocol/names.h"
 #include "protocol/qos.h"
 #include "protocol/samples.h"
+#include "protocol/topics.h"
 #include "protocol/wire_inputs.h"
 
 namespace gc::service {
@@ -23,9 +24,7 @@ StatusPublisher::StatusPublisher(dds_entity_t participant, std::uint64_t instanc
   gethostname(host, sizeof(host) - 1);
   host_ = host;
   const protocol::Qos qos = protocol::status_qos(liveliness_lease_s);
-  topic_ = Entity(check_dds(dds_create_topic(participant, &gearcoupling_ServiceStatus_desc,
-                                             protocol::kStatusTopic, qos.get(), nullptr),
-                            "dds_create_topic(status)"));
+  topic_ = protocol::make_status_topic(participant);
   const protocol::Qos partition = protocol::partition_qos(protocol::kStatusPartition);
   publisher_ = Entity(check_dds(dds_create_publisher(participant, partition.get(), nullptr),
                                 "dds_create_publisher(status)"));
