@@ -15,8 +15,8 @@ Qos request_reply_qos(double max_blocking_s) {
   return qos;
 }
 
-Qos tagged_reply_writer_qos(const std::string& tag) {
-  Qos qos = request_reply_qos();
+Qos tagged_reply_writer_qos(const std::string& tag, double max_blocking_s) {
+  Qos qos = request_reply_qos(max_blocking_s);
   dds_qset_userdata(qos.get(), tag.data(), tag.size());
   return qos;
 }

@@ -13,9 +13,11 @@ namespace gc::protocol {
 /// (up to `max_blocking_s`) for the reader to acknowledge instead of dropping samples.
 Qos request_reply_qos(double max_blocking_s = 10.0);
 
-/// The same, with USER_DATA = `tag` on a writer: the service tags its reply writers with its
-/// instance id so a client can tell which instance's writer its reply reader matched.
-Qos tagged_reply_writer_qos(const std::string& tag);
+/// Reply writers: request_reply_qos() blocking at most `max_blocking_s` when the client does not
+/// acknowledge (a killed client still matched until its lease ends), with USER_DATA = `tag`: the
+/// service tags its reply writers with its instance id so a client can tell which instance's
+/// writer its reply reader matched.
+Qos tagged_reply_writer_qos(const std::string& tag, double max_blocking_s);
 
 /// Status topic: RELIABLE, KEEP_LAST 1 per instance (the newest status is all that matters),
 /// TRANSIENT_LOCAL so a late-joining client gets every live instance at once, and AUTOMATIC

@@ -58,11 +58,13 @@ int main(int argc, char** argv) {
                                                     ? gc::codec::default_catalog_dir()
                                                     : std::filesystem::path(config.catalogue_dir);
     spdlog::info("config: domain={} threads={} catalogue_dir={} log_level={} status_interval={}s "
-                 "stats_interval={}s lease={}s reply_match_timeout={}s shutdown_grace={}s "
+                 "stats_interval={}s lease={}s reply_match_timeout={}s reply_block={}s departed_hold={}s "
+                 "shutdown_grace={}s "
                  "CYCLONEDDS_URI={}",
                  config.domain, config.threads, catalogue_dir.string(), config.log_level,
                  config.status_interval_s, config.stats_log_interval_s, config.liveliness_lease_s,
-                 config.reply_match_timeout_s, config.shutdown_grace_s,
+                 config.reply_match_timeout_s, config.reply_block_s, config.departed_hold_s,
+                 config.shutdown_grace_s,
                  std::getenv("CYCLONEDDS_URI") ? std::getenv("CYCLONEDDS_URI") : "(unset)");
     gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
     gc::service::Service service(config, std::move(catalogue));

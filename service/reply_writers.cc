@@ -1,5 +1,7 @@
 #include "service/reply_writers.h"
 
+#include <set>
+
 #include "protocol/matching.h"
 #include "protocol/names.h"
 #include "protocol/qos.h"
@@ -11,10 +13,11 @@ using protocol::check_dds;
 using protocol::Entity;
 
 ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-                           std::string instance_tag)
+                           std::string instance_tag, double max_blocking_s)
     : participant_(participant),
       reply_topics_(reply_topics),
-      instance_tag_(std::move(instance_tag)) {}
+      instance_tag_(std::move(instance_tag)),
+      max_blocking_s_(max_blocking_s) {}
 
 dds_entity_t ReplyWriters::writer_locked(const Key& key) {
   Writer& entry = writers_[key];
@@ -23,7 +26,7 @@ dds_entity_t ReplyWriters::writer_locked(const Key& key) {
     entry.publisher =
         Entity(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
                          "dds_create_publisher"));
-    const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_);
+    const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, max_blocking_s_);
     entry.writer = Entity(check_dds(
         dds_create_writer(entry.publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
         "dds_create_writer"));
@@ -46,12 +49,17 @@ void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation)
   if (--found->second.readers > 0) return;
   writers_.erase(found);
   const auto next = writers_.lower_bound({client_id, 0});
-  if (next == writers_.end() || next->first.first != client_id) departed_.insert(client_id);
+  if (next == writers_.end() || next->first.first != client_id) {
+    departed_[client_id] = std::chrono::steady_clock::time_point::max();  // ids are never reused
+  }
 }
 
-void ReplyWriters::mark_departed(std::uint64_t client_id) {
+void ReplyWriters::mark_departed(std::uint64_t client_id, double hold_s) {
   std::lock_guard lock(mutex_);
-  departed_.insert(client_id);
+  auto& until = departed_[client_id];
+  until = std::max(until, std::chrono::steady_clock::now() +
+                              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(hold_s)));
 }
 
 dds_entity_t ReplyWriters::matched_writer(std::uint64_t client_id, Calculation calculation,
@@ -59,7 +67,11 @@ dds_entity_t ReplyWriters::matched_writer(std::uint64_t client_id, Calculation c
   dds_entity_t writer = 0;
   {
     std::lock_guard lock(mutex_);
-    if (departed_.count(client_id) != 0) return 0;
+    const auto departed = departed_.find(client_id);
+    if (departed != departed_.end()) {
+      if (std::chrono::steady_clock::now() < departed->second) return 0;
+      departed_.erase(departed);
+    }
     writer = writer_locked({client_id, static_cast<int>(protocol::index_of(calculation))});
   }
   const bool matched =

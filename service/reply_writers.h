@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
-#include <set>
 #include <string>
 #include <utility>
 
@@ -23,8 +22,9 @@ namespace gc::service {
 class ReplyWriters {
  public:
   /// `reply_topics[index_of(c)]` is calculation c's reply topic on `participant`.
+  /// Writes block at most `max_blocking_s` for an unacknowledging client.
   ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-               std::string instance_tag);
+               std::string instance_tag, double max_blocking_s);
 
   /// A reader of `calculation`'s replies appeared in `client_id`'s partition: make its writer.
   void reader_appeared(std::uint64_t client_id, protocol::Calculation calculation);
@@ -39,9 +39,9 @@ class ReplyWriters {
                               std::chrono::steady_clock::time_point deadline);
 
   /// A reply to `client_id` could not be written in time (a killed client whose reader has not
-  /// yet expired): drop its further replies at once instead of blocking a worker on each, until
-  /// one of its readers appears again.
-  void mark_departed(std::uint64_t client_id);
+  /// yet expired): drop its further replies at once, for `hold_s` or until one of its readers
+  /// appears again, instead of blocking a worker on each.
+  void mark_departed(std::uint64_t client_id, double hold_s);
 
   /// Clients with at least one writer.
   std::size_t clients() const;
@@ -59,9 +59,11 @@ class ReplyWriters {
   dds_entity_t participant_;
   std::array<dds_entity_t, 5> reply_topics_;
   std::string instance_tag_;
+  double max_blocking_s_;
   mutable std::mutex mutex_;
   std::map<Key, Writer> writers_;
-  std::set<std::uint64_t> departed_;  ///< clients whose readers all went
+  /// Clients whose readers all went (forever) or who stopped acknowledging (until then).
+  std::map<std::uint64_t, std::chrono::steady_clock::time_point> departed_;
 };
 
 }  // namespace gc::service

@@ -47,7 +47,8 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
                              "dds_create_participant")),
       request_topics_(protocol::make_request_topics(participant_.get())),
       reply_topics_(protocol::make_reply_topics(participant_.get())),
-      reply_writers_(participant_.get(), protocol::handles(reply_topics_), protocol::hex_id(instance_id_)),
+      reply_writers_(participant_.get(), protocol::handles(reply_topics_), protocol::hex_id(instance_id_),
+                     config.reply_block_s),
       status_(participant_.get(), instance_id_, worker_count(config.threads),
               config.liveliness_lease_s, catalogue_, stats_),
       pool_(worker_count(config.threads)) {
@@ -145,12 +146,14 @@ void Service::answer(const gearcoupling_Correlation& correlation,
                  "matched (client gone or did not wait for discovery)",
                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
                  correlation.sequence_number);
-    reply_writers_.mark_departed(correlation.client_id);
+    reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
   } else if (const dds_return_t rc = dds_write(writer, &reply); rc < 0) {
     spdlog::error("{} client={} seq={}: dds_write of the reply failed: {}",
                   protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
                   correlation.sequence_number, dds_strretcode(rc));
-    if (rc == DDS_RETCODE_TIMEOUT) reply_writers_.mark_departed(correlation.client_id);
+    if (rc == DDS_RETCODE_TIMEOUT) {
+      reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
+    }
   }
   const double service_time_s = std::chrono::duration<double>(Clock::now() - received).count();
   stats_.record(kCalculation, ok, service_time_s);

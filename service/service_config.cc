@@ -69,6 +69,8 @@ void apply_config_file(const std::string& path, ServiceConfig& config) {
   if (file.has_liveliness_lease_s()) config.liveliness_lease_s = file.liveliness_lease_s();
   if (file.has_reply_match_timeout_s()) config.reply_match_timeout_s = file.reply_match_timeout_s();
   if (file.has_shutdown_grace_s()) config.shutdown_grace_s = file.shutdown_grace_s();
+  if (file.has_reply_block_s()) config.reply_block_s = file.reply_block_s();
+  if (file.has_departed_hold_s()) config.departed_hold_s = file.departed_hold_s();
 }
 
 ServiceCommand parse_service_command(const std::vector<std::string>& args) {
@@ -108,6 +110,10 @@ ServiceCommand parse_service_command(const std::vector<std::string>& args) {
       c.liveliness_lease_s = parse_number(flag, value);
     } else if (flag == "--reply-match-timeout") {
       c.reply_match_timeout_s = parse_number(flag, value);
+    } else if (flag == "--reply-block") {
+      c.reply_block_s = parse_number(flag, value);
+    } else if (flag == "--departed-hold") {
+      c.departed_hold_s = parse_number(flag, value);
     } else if (flag == "--shutdown-grace") {
       c.shutdown_grace_s = parse_number(flag, value);
     } else {
@@ -130,6 +136,8 @@ void validate(const ServiceConfig& c) {
   require_in_range("liveliness_lease_s", c.liveliness_lease_s, 0.1, 3600.0);
   require_in_range("reply_match_timeout_s", c.reply_match_timeout_s, 0.0, 60.0);
   require_in_range("shutdown_grace_s", c.shutdown_grace_s, 0.0, 60.0);
+  require_in_range("reply_block_s", c.reply_block_s, 0.001, 60.0);
+  require_in_range("departed_hold_s", c.departed_hold_s, 0.0, 3600.0);
 }
 
 std::string service_usage() {
@@ -137,7 +145,8 @@ std::string service_usage() {
 
 usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalogue DIR]
                             [--log-level LEVEL] [--status-interval S] [--stats-interval S]
-                            [--lease S] [--reply-match-timeout S] [--shutdown-grace S]
+                            [--lease S] [--reply-match-timeout S] [--reply-block S]
+                            [--departed-hold S] [--shutdown-grace S]
 
   --config FILE          settings in protobuf text format (service/service_config.proto);
                          flags override it
@@ -151,6 +160,9 @@ usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalo
   --stats-interval S     periodic stats log line in seconds (default 10)
   --lease S              liveliness lease of the status writer in seconds (default 2)
   --reply-match-timeout S  longest wait for a client's reply reader (default 1)
+  --reply-block S        longest a reply write waits for a client that does not acknowledge
+                         (killed, lease not yet expired) (default 0.5)
+  --departed-hold S      then drop that client's replies for this long (default 5)
   --shutdown-grace S     after SIGINT/SIGTERM keep answering this long, then exit (default 0.2)
 )";
 }

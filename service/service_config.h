@@ -17,6 +17,10 @@ struct ServiceConfig {
   double liveliness_lease_s = 2.0;    ///< status writer lease: a killed instance is noticed
                                       ///< within this time [s]
   double reply_match_timeout_s = 1.0; ///< longest wait for a client's reply reader [s]
+  double reply_block_s = 0.5;         ///< longest a reply write blocks on an unacknowledging
+                                      ///< (killed) client before its replies are dropped [s]
+  double departed_hold_s = 5.0;       ///< how long such a client's replies are then dropped;
+                                      ///< longer than any participant lease in use [s]
   double shutdown_grace_s = 0.2;      ///< after SIGINT/SIGTERM: keep answering requests already
                                       ///< on their way this long, then drain and exit [s]
 };
@@ -30,7 +34,7 @@ struct ServiceCommand {
 /// Parses `args` (without the program name): --config FILE is applied first wherever it
 /// appears, then --domain N, --threads N, --catalogue DIR (or --catalog), --log-level L,
 /// --status-interval S, --stats-interval S, --lease S, --reply-match-timeout S,
-/// --shutdown-grace S, --help. Throws InvalidInput naming the flag or the file's field.
+/// --reply-block S, --departed-hold S, --shutdown-grace S, --help. Throws InvalidInput naming the flag or the file's field.
 ServiceCommand parse_service_command(const std::vector<std::string>& args);
 
 /// Reads a config file into `config` (fields it sets override). Errors name the file, line and
