@@ -19,6 +19,13 @@ std::string message_after_field(const InvalidInput& error) {
   return std::string(what);
 }
 
+// The core names angles in radians; the file states them in degrees under a _deg name.
+std::string file_units_note(const std::string& field) {
+  if (!field.ends_with("_rad")) return "";
+  const std::string name = field.substr(field.rfind('.') + 1);
+  return ", where it is " + name.substr(0, name.size() - 4) + "_deg in degrees";
+}
+
 std::vector<std::filesystem::path> coupling_files(const std::filesystem::path& dir) {
   std::error_code error;
   std::filesystem::directory_iterator entries(dir, error);
@@ -44,8 +51,9 @@ CouplingGeometry load_coupling_geometry(const std::filesystem::path& file) {
     return CouplingGeometry(std::move(definition));
   } catch (const InvalidInput& error) {
     // The core names the field; the user also needs the file it came from.
-    throw InvalidInput(error.field(), message_after_field(error) + " (in " +
-                                          file.filename().string() + ")");
+    const std::string where =
+        " (in " + file.filename().string() + file_units_note(error.field()) + ")";
+    throw InvalidInput(error.field(), message_after_field(error) + where);
   }
 }
 

@@ -30,9 +30,10 @@ ToothStress tooth_stress(const CouplingGeometry& coupling, double tooth_load_n,
   const double r = coupling.crown_radius_m();
   result.contact_stress_pa = std::sqrt(tooth_load_n * e_star / (M_PI * line_length * r));
   result.contact_half_width_m = std::sqrt(4.0 * tooth_load_n * r / (M_PI * line_length * e_star));
-  // Lewis/AGMA: sigma = W_t / (F_e m Y), weaker member's Y.
+  // Lewis/AGMA: sigma = W_t / (F_e m Y), weaker member's Y, 45 deg dispersion to the root.
   const double tangential_load = tooth_load_n * std::cos(d.pressure_angle_rad);
-  const double loaded_face = std::min(d.facewidth_m, contact_length_m);
+  const double tooth_height = 0.5 * (d.outer_diameter_m - d.root_diameter_m);
+  const double loaded_face = std::min(d.facewidth_m, contact_length_m + 2.0 * tooth_height);
   const double form_factor = std::min(d.form_factor_hub, d.form_factor_sleeve);
   result.bending_stress_pa = tangential_load / (loaded_face * d.module_m * form_factor);
   result.contact_safety_factor = safety(d.allowables.contact_stress_pa, result.contact_stress_pa);

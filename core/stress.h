@@ -3,8 +3,10 @@
 // - contact: Hertz line contact of a cylinder of radius R_F (the crown, in the lead direction)
 //   on the conformal sleeve flank, over the active profile length h_w / cos(phi);
 // - bending: Lewis/AGMA root stress sigma = W_t / (F_e m Y) with W_t = P_d cos(phi), the form
-//   factor of the weaker member and the loaded face length F_e = min(F, F_c) (conservative:
-//   a crowned tooth carries its load on the eq 18 contact length).
+//   factor of the weaker member, and the root length that carries a load applied over the
+//   eq 18 contact length F_c: spread at 45 deg down the tooth height h_t on either side,
+//   F_e = min(F, F_c + 2 h_t), h_t = (D_o - D_root) / 2 (the load-dispersion rule for
+//   concentrated loads on cantilever teeth).
 #pragma once
 
 namespace gc {

@@ -13,6 +13,7 @@ void validate_options(const ContactOptions& options) {
   if (options.slices < 2 || options.slices > 1000 || options.slices % 2 != 0) {
     throw InvalidInput("options.slices", options.slices, "an even number in [2, 1000]");
   }
+  require_in_range("options.spacing_error_m", options.spacing_error_m, 0.0, 1e-3);
 }
 
 // Eq 11 with eq 12's R_c: maximum tooth separation, at a turning angle of 90 deg [m].
@@ -52,7 +53,8 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
   c.total_normal_load_n =
       point.torque_nm / (coupling.pitch_radius_m() * std::cos(coupling.pressure_angle_rad()));  // 7
   c.mean_tooth_load_n = c.total_normal_load_n / n;                                   // eq 20
-  c.max_separation_m = max_separation_m(coupling, point.misalignment_rad);           // eq 11
+  c.max_separation_m =
+      max_separation_m(coupling, point.misalignment_rad) + options.spacing_error_m;  // eq 11
   c.load_sharing = solve_load_sharing(c.mean_tooth_load_n, stiffness, c.max_separation_m,
                                       options.load_sharing);                         // 20-22
   c.peak_tooth_load_n = c.mean_tooth_load_n / c.load_sharing.q;                      // eq 20

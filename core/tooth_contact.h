@@ -21,6 +21,10 @@ class CouplingGeometry;
 struct ContactOptions {
   LoadSharingOptions load_sharing;  ///< eqs 20-22
   int slices = 20;                  ///< N_s, even, slices across each contact zone (eq 14)
+  /// Tooth spacing error [m], added to the maximum separation z_o of eq 11. Zero in the
+  /// paper's model (equally spaced teeth, Section 4); the spacing_errors effect sets it
+  /// (Section 6.4, docs/effects.md).
+  double spacing_error_m = 0.0;
 };
 
 /// One tooth of the hub.

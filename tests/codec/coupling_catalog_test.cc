@@ -65,6 +65,26 @@ TEST(CouplingCatalog, UnphysicalCouplingNamesFieldAndFile) {
   }
 }
 
+TEST(CouplingCatalog, AngleOutOfRangeNamesTheFilesDegreeField) {
+  const fs::path dir = scratch_dir("angle");
+  std::ifstream in(fs::path(GC_BUNDLED_CATALOG_DIR) / "nrel_upwind.textproto");
+  std::ofstream out(dir / "steep.textproto");
+  std::string line;
+  while (std::getline(in, line)) {
+    out << (line.rfind("pressure_angle_deg", 0) == 0 ? "pressure_angle_deg: 60" : line) << "\n";
+  }
+  out.close();
+  try {
+    load_coupling_geometry(dir / "steep.textproto");
+    FAIL() << "60 deg pressure angle accepted";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "coupling.pressure_angle_rad");
+    EXPECT_NE(std::string(error.what()).find("steep.textproto, where it is pressure_angle_deg"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(CouplingCatalog, MissingDirectoryIsAnError) {
   EXPECT_THROW(load_coupling_catalog("/nonexistent/catalog"), InvalidInput);
 }

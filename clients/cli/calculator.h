@@ -1,0 +1,53 @@
+// What the subcommands ask of the model, behind one interface: the in-process implementation
+// (in_process_calculator.h) calls the core directly; a remote one can answer over DDS without
+// the subcommands changing. Couplings are named by reference: a catalogue name or a file.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/friction_estimate.h"
+#include "core/induced_moments.h"
+#include "core/jam_angle.h"
+#include "core/restoring_torque.h"
+#include "core/tooth_contact.h"
+
+namespace gc::cli {
+
+/// Tooth contact and the moments computed from it (eqs 5-48), for one load case.
+struct LoadCase {
+  ToothContact contact;
+  InducedMoments moments;
+};
+
+/// The jam angle with the crown radius it was computed for.
+struct JamAngleReport {
+  JamAngle jam;
+  double crown_radius_m = 0.0;       ///< R_F [m]
+  bool crown_radius_derived = false; ///< R_F came from the lead modification
+};
+
+/// Every method may be called from any number of threads at once. Errors are gc::ModelError
+/// (gc::InvalidInput naming the field for bad input, gc::NotConverged).
+class Calculator {
+ public:
+  virtual ~Calculator() = default;
+
+  /// The coupling's own name (from its definition) for a reference.
+  virtual std::string coupling_name(std::string_view coupling) const = 0;
+  /// Eqs 5-22.
+  virtual ToothContact tooth_contact(std::string_view coupling, const OperatingPoint& point,
+                                     const ContactOptions& options) const = 0;
+  /// Eqs 5-48.
+  virtual LoadCase load_case(std::string_view coupling, const OperatingPoint& point,
+                             const ContactOptions& options) const = 0;
+  /// Eqs 23-35.
+  virtual JamAngleReport jam_angle(std::string_view coupling) const = 0;
+  /// Eqs 49-53.
+  virtual RestoringTorque restoring_torque(std::string_view coupling) const = 0;
+  /// Eqs 1-4.
+  virtual FrictionEstimate estimate_friction(std::string_view coupling,
+                                             const FrictionMeasurement& measurement) const = 0;
+};
+
+}  // namespace gc::cli

@@ -1,0 +1,26 @@
+#include <fmt/format.h>
+
+#include "clients/cli/subcommand.h"
+#include "codec/coupling_catalog.h"
+#include "codec/result_json.h"
+
+namespace gc::cli {
+
+std::vector<FlagSpec> common_flags() {
+  return {
+      {"coupling", "NAME|FILE",
+       "coupling: a name in the catalogue, or a .textproto file (a path with '/' or ending in "
+       ".textproto)",
+       "nrel_upwind"},
+      {"catalog", "DIR", "catalogue directory of *.textproto couplings ($GEARCOUPLING_CATALOG)",
+       codec::default_catalog_dir().string()},
+      {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
+       true},
+  };
+}
+
+void print_json(const google::protobuf::Message& message, std::FILE* out) {
+  fmt::print(out, "{}", codec::to_json(message));
+}
+
+}  // namespace gc::cli

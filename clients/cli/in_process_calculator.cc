@@ -1,0 +1,91 @@
+#include "clients/cli/in_process_calculator.h"
+
+#include "clients/cli/finite_results.h"
+#include "codec/coupling_catalog.h"
+#include "core/model_error.h"
+
+namespace gc::cli {
+namespace {
+
+bool is_file_reference(std::string_view coupling) {
+  return coupling.find('/') != std::string_view::npos || coupling.ends_with(".textproto");
+}
+
+template <typename Catalog>
+std::string known_names(const Catalog& catalog) {
+  std::string names;
+  for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
+  return names;
+}
+
+}  // namespace
+
+InProcessCalculator::InProcessCalculator(std::filesystem::path catalog_dir)
+    : catalog_dir_(std::move(catalog_dir)) {}
+
+const CouplingGeometry& InProcessCalculator::geometry(std::string_view coupling) const {
+  std::lock_guard lock(mutex_);
+  if (is_file_reference(coupling)) {
+    auto found = files_.find(coupling);
+    if (found == files_.end()) {
+      found = files_.emplace(std::string(coupling),
+                             codec::load_coupling_geometry(std::filesystem::path(coupling)))
+                  .first;
+    }
+    return found->second;
+  }
+  if (!catalog_) {
+    Couplings loaded;
+    for (auto& [name, geometry] : codec::load_coupling_catalog(catalog_dir_)) {
+      loaded.emplace(name, std::move(geometry));
+    }
+    catalog_ = std::move(loaded);
+  }
+  const auto found = catalog_->find(coupling);
+  if (found == catalog_->end()) {
+    throw InvalidInput("coupling", "no coupling named \"" + std::string(coupling) + "\" in " +
+                                       catalog_dir_.string() + " (known: " +
+                                       known_names(*catalog_) + ")");
+  }
+  return found->second;
+}
+
+std::string InProcessCalculator::coupling_name(std::string_view coupling) const {
+  return geometry(coupling).name();
+}
+
+ToothContact InProcessCalculator::tooth_contact(std::string_view coupling,
+                                                const OperatingPoint& point,
+                                                const ContactOptions& options) const {
+  ToothContact contact = gc::tooth_contact(geometry(coupling), point, options);
+  require_finite_result(point, contact);
+  return contact;
+}
+
+LoadCase InProcessCalculator::load_case(std::string_view coupling, const OperatingPoint& point,
+                                        const ContactOptions& options) const {
+  const CouplingGeometry& g = geometry(coupling);
+  LoadCase result{gc::tooth_contact(g, point, options), {}};
+  require_finite_result(point, result.contact);
+  result.moments = gc::induced_moments(g, point, result.contact);
+  require_finite_result(point, result.moments);
+  return result;
+}
+
+JamAngleReport InProcessCalculator::jam_angle(std::string_view coupling) const {
+  const CouplingGeometry& g = geometry(coupling);
+  return {g.jam_angle(), g.crown_radius_m(), g.crown_radius_derived()};
+}
+
+RestoringTorque InProcessCalculator::restoring_torque(std::string_view coupling) const {
+  return gc::restoring_torque(geometry(coupling));
+}
+
+FrictionEstimate InProcessCalculator::estimate_friction(
+    std::string_view coupling, const FrictionMeasurement& measurement) const {
+  const FrictionEstimate estimate = gc::estimate_friction(geometry(coupling), measurement);
+  require_finite_result(measurement, estimate);
+  return estimate;
+}
+
+}  // namespace gc::cli

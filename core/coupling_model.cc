@@ -1,0 +1,75 @@
+#include "core/coupling_model.h"
+
+#include <algorithm>
+
+#include "core/coupling_frame.h"
+#include "core/induced_moments.h"
+#include "core/model_error.h"
+#include "core/restoring_torque.h"
+
+namespace gc {
+namespace {
+
+CouplingDefinition adjusted(CouplingDefinition coupling,
+                            const std::vector<std::shared_ptr<const Effect>>& effects) {
+  for (const auto& effect : effects) effect->adjust_coupling(coupling);
+  return coupling;
+}
+
+}  // namespace
+
+CouplingModel::CouplingModel(const CouplingDefinition& coupling,
+                             std::vector<std::shared_ptr<const Effect>> effects,
+                             const ContactOptions& options)
+    : base_coupling_(coupling),
+      effects_(std::move(effects)),
+      options_(options),
+      geometry_(adjusted(coupling, effects_)),
+      restoring_torque_nm_(restoring_torque(geometry_).torque_nm),
+      self_weight_moment_nm_(self_weight_moment_nm(geometry_)) {
+  for (std::size_t i = 0; i < effects_.size(); ++i) {
+    if (!effects_[i]) throw InvalidInput("effects", "a null effect");
+    for (std::size_t k = 0; k < i; ++k) {
+      if (effects_[k]->name() == effects_[i]->name()) {
+        throw InvalidInput("effects." + effects_[i]->name(), "appears twice in one model");
+      }
+    }
+  }
+}
+
+bool CouplingModel::has_effect(const std::string& name) const {
+  return std::any_of(effects_.begin(), effects_.end(),
+                     [&name](const auto& effect) { return effect->name() == name; });
+}
+
+CouplingModel CouplingModel::with_effect(std::shared_ptr<const Effect> effect) const {
+  std::vector<std::shared_ptr<const Effect>> effects;
+  for (const auto& existing : effects_) {
+    if (existing->name() != effect->name()) effects.push_back(existing);
+  }
+  effects.push_back(std::move(effect));
+  return CouplingModel(base_coupling_, std::move(effects), options_);
+}
+
+ModelPrediction CouplingModel::predict(const MeasurementSample& sample) const {
+  const ModelContext context{geometry_, restoring_torque_nm_, self_weight_moment_nm_};
+  ModelPrediction prediction;
+  ModelState& state = prediction.state;
+  state.point = {sample.torque_nm, sample.misalignment_rad, sample.direction_rad, 0.0};
+  state.contact = options_;
+  for (const auto& effect : effects_) effect->adjust_inputs(sample, context, state);
+
+  const ToothContact contact = tooth_contact(geometry_, state.point, state.contact);
+  const InducedMoments moments = induced_moments(geometry_, state.point, contact);
+  // Eqs 44-47 with the frame shift the effects chose (phi with pressure_angle_rotation on).
+  const Eigen::Vector2d global =
+      double_prime_to_coupling(state.frame_shift_rad, state.point.direction_rad) *
+      Eigen::Vector2d(moments.moment_y_dd_nm, moments.moment_z_dd_nm);
+  prediction.moments = {global.x(), global.y()};
+  for (const auto& effect : effects_) {
+    effect->adjust_outputs(sample, context, state, prediction.moments);
+  }
+  return prediction;
+}
+
+}  // namespace gc

@@ -1,0 +1,52 @@
+// The model a recording is compared with: a coupling and an ordered list of effects around the
+// paper's tooth contact and induced moments (docs/effects.md). The paper's model is the
+// configuration {friction, pressure_angle_rotation, self_weight} (data/models/paper.textproto).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/coupling_geometry.h"
+#include "core/effects/effect.h"
+
+namespace gc {
+
+/// One prediction, with the inputs the calculation saw after the effects.
+struct ModelPrediction {
+  SensorMoments moments;   ///< M_sy', M_sz' [N·m]
+  ModelState state;        ///< T, zeta, beta, mu, options after the effects
+};
+
+class CouplingModel {
+ public:
+  /// Applies the effects' coupling adjustments and builds the geometry (throws InvalidInput).
+  /// Effects act in the given order; at most one effect of each name.
+  CouplingModel(const CouplingDefinition& coupling,
+                std::vector<std::shared_ptr<const Effect>> effects,
+                const ContactOptions& options = {});
+
+  const CouplingGeometry& geometry() const { return geometry_; }
+  const CouplingDefinition& base_coupling() const { return base_coupling_; }
+  const std::vector<std::shared_ptr<const Effect>>& effects() const { return effects_; }
+  const ContactOptions& options() const { return options_; }
+  bool has_effect(const std::string& name) const;
+
+  /// This model with `effect` appended (or replacing the one of the same name).
+  CouplingModel with_effect(std::shared_ptr<const Effect> effect) const;
+
+  /// Sensor moments for one measured sample: effects on the inputs, eqs 5-47 through the
+  /// z'' frame turned by the state's frame shift plus beta, effects on the outputs. Throws
+  /// InvalidInput (e.g. the effective misalignment at or beyond the jam angle).
+  ModelPrediction predict(const MeasurementSample& sample) const;
+
+ private:
+  CouplingDefinition base_coupling_;
+  std::vector<std::shared_ptr<const Effect>> effects_;
+  ContactOptions options_;
+  CouplingGeometry geometry_;
+  double restoring_torque_nm_;
+  double self_weight_moment_nm_;
+};
+
+}  // namespace gc

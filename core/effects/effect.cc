@@ -1,0 +1,50 @@
+#include "core/effects/effect.h"
+
+#include <cmath>
+
+#include "core/model_error.h"
+
+namespace gc {
+
+Effect::Effect(const EffectInfo& info, const ParameterValues& values) : info_(info) {
+  for (const auto& [name, value] : values) {
+    bool known = false;
+    for (const ParameterSpec& spec : info.parameters) known = known || spec.name == name;
+    if (!known) {
+      std::string names;
+      for (const ParameterSpec& spec : info.parameters) names += (names.empty() ? "" : ", ") + spec.name;
+      throw InvalidInput("effects." + info.name + "." + name,
+                         "unknown parameter; " + info.name + " takes: " + names);
+    }
+  }
+  for (const ParameterSpec& spec : info.parameters) {
+    const auto given = values.find(spec.name);
+    const double value = given == values.end() ? spec.default_value : given->second;
+    require_in_range("effects." + info.name + "." + spec.name, value, spec.lower, spec.upper);
+    values_.push_back(value);
+  }
+}
+
+double Effect::value(const std::string& parameter) const {
+  for (std::size_t i = 0; i < info_.parameters.size(); ++i) {
+    if (info_.parameters[i].name == parameter) return values_[i];
+  }
+  throw InvalidInput("effects." + info_.name + "." + parameter, "no such parameter");
+}
+
+bool Effect::neutral() const {
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    if (values_[i] != info_.parameters[i].neutral) return false;
+  }
+  return true;
+}
+
+void add_misalignment(double zeta_rad, double beta_rad, OperatingPoint& point) {
+  const double y = point.misalignment_rad * std::cos(point.direction_rad) + zeta_rad * std::cos(beta_rad);
+  const double z = point.misalignment_rad * std::sin(point.direction_rad) + zeta_rad * std::sin(beta_rad);
+  point.misalignment_rad = std::hypot(y, z);
+  // Keep the measured direction when the sum vanishes: any direction is then right.
+  if (point.misalignment_rad > 0.0) point.direction_rad = std::atan2(z, y);
+}
+
+}  // namespace gc

@@ -1,0 +1,88 @@
+// A physical effect as a part of the model (docs/effects.md): a name, the physics it stands
+// for, its parameters with units, bounds and neutral values, and how it changes the model's
+// coupling, inputs or outputs. An effect holds parameter values only, never per-call state,
+// so a model with effects stays reentrant.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/coupling_definition.h"
+#include "core/measurement_sample.h"
+#include "core/operating_point.h"
+#include "core/tooth_contact.h"
+
+namespace gc {
+
+class CouplingGeometry;
+
+struct ParameterSpec {
+  std::string name;           ///< e.g. "mu0"
+  std::string unit;           ///< SI unit, "-" for none
+  std::string meaning;        ///< one line
+  double lower = 0.0;         ///< physical bounds, inclusive
+  double upper = 0.0;
+  double neutral = 0.0;       ///< the value at which the effect does nothing
+  double default_value = 0.0; ///< the value used when a configuration omits it
+};
+
+struct EffectInfo {
+  std::string name;     ///< registry name, snake_case
+  std::string physics;  ///< what it represents, one paragraph
+  std::string source;   ///< where the paper discusses it
+  std::vector<ParameterSpec> parameters;
+};
+
+using ParameterValues = std::map<std::string, double>;
+
+/// What the model computes with for one sample; effects adjust it before the calculation.
+struct ModelState {
+  OperatingPoint point;          ///< T, zeta, beta, mu as the calculation will see them
+  ContactOptions contact;        ///< eqs 14, 20-22 options and the spacing error
+  double frame_shift_rad = 0.0;  ///< rotation of z'' from the misalignment axis (eqs 44-45)
+};
+
+/// Quantities of the coupling that effects read, computed once per model.
+struct ModelContext {
+  const CouplingGeometry& geometry;
+  double restoring_torque_nm;     ///< eqs 49-53
+  double self_weight_moment_nm;   ///< eq 48's weight term
+};
+
+class Effect {
+ public:
+  /// Fills omitted parameters with their defaults. Throws InvalidInput naming
+  /// "effects.<name>.<parameter>" for an unknown parameter or a value outside its bounds.
+  Effect(const EffectInfo& info, const ParameterValues& values);
+  virtual ~Effect() = default;
+
+  const EffectInfo& info() const { return info_; }
+  const std::string& name() const { return info_.name; }
+  /// Parameter values in the order of info().parameters.
+  const std::vector<double>& values() const { return values_; }
+  double value(const std::string& parameter) const;
+  /// True when every parameter sits at its neutral value: the effect changes nothing.
+  bool neutral() const;
+
+  /// Once, when the model is built (e.g. a stiffness factor).
+  virtual void adjust_coupling(CouplingDefinition& /*coupling*/) const {}
+  /// Per sample, before tooth contact and moments are computed.
+  virtual void adjust_inputs(const MeasurementSample& /*sample*/, const ModelContext& /*context*/,
+                             ModelState& /*state*/) const {}
+  /// Per sample, on the moments at the sensors.
+  virtual void adjust_outputs(const MeasurementSample& /*sample*/,
+                              const ModelContext& /*context*/, const ModelState& /*state*/,
+                              SensorMoments& /*moments*/) const {}
+
+ private:
+  const EffectInfo& info_;
+  std::vector<double> values_;
+};
+
+/// Adds the misalignment vector (zeta, beta) to the state's, in the plane of misalignment.
+/// Shared by the effects that offset the measured misalignment.
+void add_misalignment(double zeta_rad, double beta_rad, OperatingPoint& point);
+
+}  // namespace gc

@@ -1,0 +1,29 @@
+// One sample of a test-cell recording, as the model reads it (docs/recordings.md).
+#pragma once
+
+#include <optional>
+
+namespace gc {
+
+/// What was measured at one instant. SI units; angles in radians.
+struct MeasurementSample {
+  double time_s = 0.0;             ///< [s]
+  double torque_nm = 0.0;          ///< T [N·m]
+  double misalignment_rad = 0.0;   ///< zeta, measured amplitude [rad]
+  double direction_rad = 0.0;      ///< beta, measured direction [rad]
+  /// +1 while the misalignment amplitude rises, -1 while it falls, 0 when unknown or still.
+  /// Derived from the sequence by the recording reader, so effects need no per-call state.
+  int loading_direction = 0;
+  std::optional<double> speed_rpm;            ///< [rpm]
+  std::optional<double> temperature_c;        ///< [deg C]
+  std::optional<double> applied_moment_y_nm;  ///< LAD moment about y [N·m]
+  std::optional<double> applied_moment_z_nm;  ///< LAD moment about z [N·m]
+};
+
+/// The bending moments at the sensors, measured or predicted.
+struct SensorMoments {
+  double y_nm = 0.0;  ///< M_sy' [N·m]
+  double z_nm = 0.0;  ///< M_sz' [N·m]
+};
+
+}  // namespace gc

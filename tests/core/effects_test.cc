@@ -1,0 +1,207 @@
+// Every effect: neutral at its neutral value, and changing the model the way its physics says.
+#include <gtest/gtest.h>
+
+#include "core/coupling_model.h"
+#include "core/effects/effect_registry.h"
+#include "core/induced_moments.h"
+#include "core/model_error.h"
+#include "core/restoring_torque.h"
+#include "tests/core/nrel_couplings.h"
+
+namespace gc {
+namespace {
+
+using testing::deg;
+using testing::nrel_upwind;
+
+std::shared_ptr<const Effect> paper_friction(double mu) { return make_effect("friction", {{"mu0", mu}}); }
+
+CouplingModel paper_model(double mu = 0.1) {
+  return CouplingModel(nrel_upwind(), {paper_friction(mu), make_effect("pressure_angle_rotation"),
+                                       make_effect("self_weight")});
+}
+
+MeasurementSample sample(double torque, double zeta_deg, double beta_deg = 30.0, int loading = 0) {
+  MeasurementSample s;
+  s.torque_nm = torque;
+  s.misalignment_rad = deg(zeta_deg);
+  s.direction_rad = deg(beta_deg);
+  s.loading_direction = loading;
+  return s;
+}
+
+SensorMoments predict(const CouplingModel& model, const MeasurementSample& s) {
+  return model.predict(s).moments;
+}
+
+double magnitude(const SensorMoments& m) { return std::hypot(m.y_nm, m.z_nm); }
+
+TEST(Effects, PaperConfigurationReproducesEq48Exactly) {
+  const CouplingModel model = paper_model(0.12);
+  const MeasurementSample s = sample(1.2e6, 0.4, 70.0);
+  const InducedMoments direct =
+      induced_moments(model.geometry(), {1.2e6, deg(0.4), deg(70.0), 0.12});
+  const SensorMoments m = predict(model, s);
+  EXPECT_NEAR(m.y_nm, direct.sensor_moment_y_nm, 1e-6);
+  EXPECT_NEAR(m.z_nm, direct.sensor_moment_z_nm, 1e-6);
+}
+
+TEST(Effects, EveryEffectAtItsNeutralValuesChangesNothing) {
+  const CouplingModel base = paper_model();
+  for (const EffectRegistration& r : effect_registry()) {
+    ParameterValues neutral;
+    for (const ParameterSpec& p : r.info->parameters) neutral[p.name] = p.neutral;
+    const auto effect = r.make(neutral);
+    EXPECT_TRUE(effect->neutral()) << r.info->name;
+    const CouplingModel with = base.with_effect(effect);
+    for (const MeasurementSample& s : {sample(1.5e6, 0.4, 30, +1), sample(0.2e6, 0.1, 200, -1)}) {
+      const SensorMoments b = predict(with, s);
+      if (r.info->name == "friction" || r.info->name == "self_weight" ||
+          r.info->name == "pressure_angle_rotation") {
+        // The paper's own effects: neutral means "as if absent" from a model without them.
+        std::vector<std::shared_ptr<const Effect>> others;
+        for (const auto& e : base.effects()) if (e->name() != r.info->name) others.push_back(e);
+        const CouplingModel without(nrel_upwind(), others);
+        const SensorMoments c = predict(without, s);
+        EXPECT_NEAR(b.y_nm, c.y_nm, 1e-6) << r.info->name;
+        EXPECT_NEAR(b.z_nm, c.z_nm, 1e-6) << r.info->name;
+      } else {
+        EXPECT_NEAR(b.y_nm, predict(base, s).y_nm, 1e-6) << r.info->name;
+        EXPECT_NEAR(b.z_nm, predict(base, s).z_nm, 1e-6) << r.info->name;
+      }
+    }
+  }
+}
+
+TEST(Effects, FrictionRaisesTheMomentsAndItsTermsFollowTorqueAndMisalignment) {
+  const auto model = [](ParameterValues v) {
+    return CouplingModel(nrel_upwind(), {make_effect("friction", v), make_effect("pressure_angle_rotation")});
+  };
+  const CouplingModel low = model({{"mu0", 0.05}});
+  const CouplingModel high = model({{"mu0", 0.15}});
+  EXPECT_GT(magnitude(predict(high, sample(1.5e6, 0.4))), 1.3 * magnitude(predict(low, sample(1.5e6, 0.4))));
+  // mu_low_torque: the friction it adds is T_ref / T times its coefficient.
+  const CouplingModel rising = model({{"mu0", 0.05}, {"mu_low_torque", 0.02}});
+  EXPECT_NEAR(rising.predict(sample(0.3e6, 0.4)).state.point.friction_coefficient, 0.05 + 0.02 * 5.0, 1e-12);
+  EXPECT_NEAR(rising.predict(sample(1.5e6, 0.4)).state.point.friction_coefficient, 0.07, 1e-12);
+  // mu_misalignment: proportional to zeta over the jam angle.
+  const CouplingModel angled = model({{"mu0", 0.05}, {"mu_misalignment", 0.1}});
+  const double jam = angled.geometry().jam_angle().angle_rad;
+  const MeasurementSample half = sample(1.5e6, testing::to_deg(0.5 * jam));
+  EXPECT_NEAR(angled.predict(half).state.point.friction_coefficient, 0.05 + 0.05, 1e-12);
+}
+
+TEST(Effects, SelfWeightShiftsOnlyMsyByTheWeightMoment) {
+  const CouplingModel base(nrel_upwind(), {paper_friction(0.1)});
+  const MeasurementSample s = sample(1.5e6, 0.4);
+  for (double scale : {1.0, 2.0}) {
+    const SensorMoments m = predict(base.with_effect(make_effect("self_weight", {{"weight_scale", scale}})), s);
+    EXPECT_NEAR(m.y_nm, predict(base, s).y_nm - scale * 149912.0, 1e-6);
+    EXPECT_NEAR(m.z_nm, predict(base, s).z_nm, 1e-9);
+  }
+}
+
+TEST(Effects, PressureAngleRotationTurnsTheMomentByPhi) {
+  const CouplingModel base(nrel_upwind(), {paper_friction(0.1)});
+  const MeasurementSample s = sample(1.5e6, 0.4, 10.0);
+  const SensorMoments a = predict(base, s);
+  for (double scale : {0.5, 1.0}) {
+    const SensorMoments b =
+        predict(base.with_effect(make_effect("pressure_angle_rotation", {{"shift_scale", scale}})), s);
+    EXPECT_NEAR(magnitude(a), magnitude(b), 1e-6);
+    // Eqs 44-45 turn (M_y', M_z') clockwise by the shift.
+    const double turned = std::remainder(std::atan2(a.z_nm, a.y_nm) - std::atan2(b.z_nm, b.y_nm), 2 * M_PI);
+    EXPECT_NEAR(turned, scale * deg(20.0), 1e-12);
+  }
+}
+
+TEST(Effects, AssemblyMisalignmentActsLikeAMeasuredOne) {
+  const CouplingModel base = paper_model();
+  const CouplingModel with = base.with_effect(
+      make_effect("assembly_misalignment", {{"zeta0_rad", deg(0.2)}, {"beta0_rad", deg(90)}}));
+  // Measured 0.2 deg at 0 deg plus 0.2 deg at 90 deg: 0.2 sqrt(2) deg at 45 deg.
+  const SensorMoments m = predict(with, sample(1.5e6, 0.2, 0.0));
+  const SensorMoments expected = predict(base, sample(1.5e6, 0.2 * std::sqrt(2.0), 45.0));
+  EXPECT_NEAR(m.y_nm, expected.y_nm, 1e-6);
+  EXPECT_NEAR(m.z_nm, expected.z_nm, 1e-6);
+  // At zero measured misalignment the coupling still sees zeta0.
+  EXPECT_NEAR(with.predict(sample(1.5e6, 0.0)).state.point.misalignment_rad, deg(0.2), 1e-15);
+}
+
+TEST(Effects, EccentricityFadesLinearlyUpToTheRestoringTorque) {
+  const CouplingModel base = paper_model();
+  const CouplingModel with = base.with_effect(make_effect("eccentricity", {{"eccentric_misalignment_rad", deg(0.06)}}));
+  const double t_m = restoring_torque(with.geometry()).torque_nm;  // eqs 49-53: 1.36 MN·m
+  // Aligned measurement: the coupling sees zeta_e (1 - T / T_m) in the gravity direction.
+  EXPECT_NEAR(with.predict(sample(0.25 * t_m, 0.0)).state.point.misalignment_rad, deg(0.06) * 0.75, 1e-9);
+  EXPECT_NEAR(with.predict(sample(0.25 * t_m, 0.0)).state.point.direction_rad, M_PI / 2, 1e-12);
+  EXPECT_NEAR(with.predict(sample(0.75 * t_m, 0.0)).state.point.misalignment_rad, deg(0.06) * 0.25, 1e-9);
+  // At and above T_m nothing changes.
+  const MeasurementSample above = sample(1.5e6, 0.3);
+  EXPECT_EQ(predict(with, above).y_nm, predict(base, above).y_nm);
+}
+
+TEST(Effects, ComplianceSpreadsTheLoadOverMoreTeeth) {
+  const MeasurementSample s = sample(1.5e6, 0.5);
+  const CouplingModel stiff = paper_model();
+  const CouplingModel soft = stiff.with_effect(make_effect("compliance", {{"stiffness_factor", 0.5}}));
+  EXPECT_NEAR(soft.geometry().mesh_stiffness_n_per_m(), 0.5 * stiff.geometry().mesh_stiffness_n_per_m(), 1e-3);
+  const ToothContact a = tooth_contact(stiff.geometry(), stiff.predict(s).state.point);
+  const ToothContact b = tooth_contact(soft.geometry(), soft.predict(s).state.point);
+  EXPECT_GT(b.teeth_in_contact, a.teeth_in_contact);
+  EXPECT_LT(b.max_tooth_load_n, a.max_tooth_load_n);
+}
+
+TEST(Effects, SpacingErrorsConcentrateTheLoadEvenWhenAligned) {
+  const CouplingModel base = paper_model();
+  const CouplingModel with = base.with_effect(make_effect("spacing_errors", {{"spacing_error_m", 5e-5}}));
+  // z_o = 50 um against z_e of about 21-60 um: eq 9 unloads the teeth far from z''.
+  const ModelPrediction p = with.predict(sample(1.5e6, 0.0));
+  EXPECT_DOUBLE_EQ(p.state.contact.spacing_error_m, 5e-5);
+  const ToothContact c = tooth_contact(with.geometry(), p.state.point, p.state.contact);
+  EXPECT_LT(c.load_sharing.q, 1.0);
+  EXPECT_LT(c.teeth_in_contact, 100);
+}
+
+TEST(Effects, ChannelGainAndOffsetAreAffine) {
+  const CouplingModel base = paper_model();
+  const CouplingModel with = base.with_effect(make_effect(
+      "channel_gain_offset", {{"gain_y", 0.05}, {"gain_z", -0.1}, {"offset_y_nm", 2e4}, {"offset_z_nm", -3e4}}));
+  const MeasurementSample s = sample(1.0e6, 0.3);
+  EXPECT_NEAR(predict(with, s).y_nm, 1.05 * predict(base, s).y_nm + 2e4, 1e-6);
+  EXPECT_NEAR(predict(with, s).z_nm, 0.9 * predict(base, s).z_nm - 3e4, 1e-6);
+}
+
+TEST(Effects, HysteresisLagsTheMisalignmentInTheLoadingDirection) {
+  const CouplingModel with = paper_model().with_effect(make_effect("hysteresis", {{"lag_rad", deg(0.02)}}));
+  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, +1)).state.point.misalignment_rad, deg(0.38), 1e-12);
+  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, -1)).state.point.misalignment_rad, deg(0.42), 1e-12);
+  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, 0)).state.point.misalignment_rad, deg(0.40), 1e-12);
+  // Falling, the coupling sees what the paper's model sees at zeta + lag.
+  const SensorMoments falling = predict(with, sample(1.5e6, 0.4, 0, -1));
+  const SensorMoments lagged = predict(paper_model(), sample(1.5e6, 0.42, 0, 0));
+  EXPECT_NEAR(falling.y_nm, lagged.y_nm, 1e-6);
+  EXPECT_NEAR(falling.z_nm, lagged.z_nm, 1e-6);
+}
+
+TEST(Effects, BadConfigurationsNameTheField) {
+  const auto field = [](auto call) {
+    try { call(); } catch (const InvalidInput& e) { return e.field(); }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(field([] { make_effect("teleportation"); }), "effects.teleportation");
+  EXPECT_EQ(field([] { make_effect("friction", {{"mu_zero", 0.1}}); }), "effects.friction.mu_zero");
+  EXPECT_EQ(field([] { make_effect("friction", {{"mu0", 0.9}}); }), "effects.friction.mu0");
+  EXPECT_EQ(field([] { make_effect("hysteresis", {{"lag_rad", std::nan("")}}); }), "effects.hysteresis.lag_rad");
+  EXPECT_EQ(field([] { CouplingModel(nrel_upwind(), {make_effect("self_weight"), make_effect("self_weight")}); }),
+            "effects.self_weight");
+}
+
+TEST(Effects, EffectivelyJammedSampleIsAnErrorNotAValue) {
+  const CouplingModel with = paper_model().with_effect(
+      make_effect("assembly_misalignment", {{"zeta0_rad", deg(0.28)}}));
+  EXPECT_THROW(with.predict(sample(1.5e6, 0.6, 0.0)), InvalidInput);
+}
+
+}  // namespace
+}  // namespace gc

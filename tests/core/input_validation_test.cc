@@ -1,0 +1,98 @@
+// Every entry point rejects non-physical input with an InvalidInput naming the field.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <limits>
+
+#include "core/coupling_geometry.h"
+#include "core/induced_moments.h"
+#include "core/model_error.h"
+#include "core/tooth_contact.h"
+#include "tests/core/nrel_couplings.h"
+
+namespace gc {
+namespace {
+
+using testing::deg;
+using testing::nrel_upwind;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string field_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find(e.field()), std::string::npos) << "message names field";
+    return e.field();
+  }
+  return "(accepted)";
+}
+
+std::string coupling_field(const std::function<void(CouplingDefinition&)>& spoil) {
+  CouplingDefinition d = nrel_upwind();
+  spoil(d);
+  return field_of([&] { CouplingGeometry{d}; });
+}
+
+TEST(InputValidation, CouplingDefinitionErrorsNameTheField) {
+  EXPECT_EQ(coupling_field([](auto& d) { d.teeth = 0; }), "coupling.teeth");
+  EXPECT_EQ(coupling_field([](auto& d) { d.teeth = -4; }), "coupling.teeth");
+  EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = 0.0; }), "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = kNaN; }), "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.backlash_m = -1e-4; }), "coupling.backlash_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.tooth_thickness_m = 0.032; }),
+            "coupling.tooth_thickness_m");  // thicker than the circular pitch
+  EXPECT_EQ(coupling_field([](auto& d) { d.module_m = kInf; }), "coupling.module_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.pitch_diameter_m = 1.2; }),
+            "coupling.pitch_diameter_m");  // not N * module
+  EXPECT_EQ(coupling_field([](auto& d) { d.root_diameter_m = 1.02; }), "coupling.root_diameter_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.youngs_modulus_pa = -1.0; }),
+            "coupling.youngs_modulus_pa");
+  EXPECT_EQ(coupling_field([](auto& d) { d.crown_radius_m = 0.05; }), "coupling.crown_radius_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.lead_modification_m = 0.0; }),
+            "coupling.lead_modification_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.form_factor_hub = 3.0; }), "coupling.form_factor_hub");
+  EXPECT_EQ(coupling_field([](auto& d) { d.coupling_weight_n = -5.0; }),
+            "coupling.coupling_weight_n");
+  EXPECT_EQ(coupling_field([](auto& d) { d.allowables.contact_stress_pa = 0.0; }),
+            "coupling.allowables.contact_stress_pa");
+}
+
+TEST(InputValidation, OperatingPointErrorsNameTheField) {
+  const CouplingGeometry g(nrel_upwind());
+  const auto contact = [&g](OperatingPoint p) { return [&g, p] { tooth_contact(g, p); }; };
+  EXPECT_EQ(field_of(contact({kNaN, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
+  EXPECT_EQ(field_of(contact({0.0, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
+  EXPECT_EQ(field_of(contact({-1e6, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
+  EXPECT_EQ(field_of(contact({1e308, deg(0.3), 0.0, 0.1})), "operating_point.torque_nm");  // overflow
+  EXPECT_EQ(field_of(contact({1e6, kNaN, 0.0, 0.0})), "operating_point.misalignment_rad");
+  EXPECT_EQ(field_of(contact({1e6, -1e-3, 0.0, 0.0})), "operating_point.misalignment_rad");
+  EXPECT_EQ(field_of(contact({1e6, g.jam_angle().angle_rad, 0.0, 0.0})),
+            "operating_point.misalignment_rad");  // at the jam angle
+  EXPECT_EQ(field_of(contact({1e6, deg(0.3), kInf, 0.0})), "operating_point.direction_rad");
+  EXPECT_EQ(field_of(contact({1e6, deg(0.3), 0.0, -0.1})), "operating_point.friction_coefficient");
+  EXPECT_EQ(field_of(contact({1e6, deg(0.3), 0.0, kNaN})), "operating_point.friction_coefficient");
+  EXPECT_EQ(field_of([&g] { tooth_contact(g, {1e6, deg(0.3), 0.0, 0.0}, {{}, 7}); }),
+            "options.slices");
+  EXPECT_EQ(field_of([&g] { induced_moments(g, {1e6, deg(0.3), 0.0, 2.0}); }),
+            "operating_point.friction_coefficient");
+}
+
+TEST(InputValidation, ExtremeButValidInputsGiveFiniteResults) {
+  const CouplingGeometry g(nrel_upwind());
+  for (double torque : {1.0, 1e3, 1e9}) {
+    for (double fraction : {0.0, 1e-9, 0.5, 0.999999}) {
+      const OperatingPoint p{torque, fraction * g.jam_angle().angle_rad, deg(-720.0), 1.0};
+      const ToothContact c = tooth_contact(g, p);
+      const InducedMoments m = induced_moments(g, p, c);
+      EXPECT_TRUE(std::isfinite(c.load_sharing.q) && std::isfinite(c.max_tooth_load_n));
+      EXPECT_TRUE(std::isfinite(m.magnitude_nm) && std::isfinite(m.direction_rad));
+      EXPECT_TRUE(std::isfinite(c.max_stress.contact_stress_pa));
+      for (const ToothLoad& t : c.teeth) ASSERT_TRUE(std::isfinite(t.zone_end_m));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gc
