@@ -12,6 +12,7 @@
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
 #include "protocol/calculation.h"
+#include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"
 
 namespace gc::protocol {
@@ -34,7 +35,7 @@ struct CalculationTraits;
   };
 
 GC_PROTOCOL_CALCULATION_TRAITS(kToothContact, ToothContact, gc::ToothContact)
-GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle, gc::JamAngle)
+GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle, protocol::JamAngleResult)
 GC_PROTOCOL_CALCULATION_TRAITS(kInducedMoments, InducedMoments, gc::InducedMoments)
 GC_PROTOCOL_CALCULATION_TRAITS(kRestoringTorque, RestoringTorque, gc::RestoringTorque)
 GC_PROTOCOL_CALCULATION_TRAITS(kFrictionEstimate, FrictionEstimate, gc::FrictionEstimate)

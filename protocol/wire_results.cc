@@ -87,7 +87,10 @@ ToothContact from_wire(const gearcoupling_ToothContactResult& in) {
   return out;
 }
 
-void to_wire(const JamAngle& in, gearcoupling_JamAngleResult& out) {
+void to_wire(const JamAngleResult& result, gearcoupling_JamAngleResult& out) {
+  const JamAngle& in = result.jam;
+  out.crown_radius_m = result.crown_radius_m;
+  out.crown_radius_derived = result.crown_radius_derived;
   out.angle_rad = in.angle_rad;
   switch (in.governing) {
     case JamCriterion::kBothFlanks: out.governing = gearcoupling_JAM_BOTH_FLANKS; break;
@@ -103,8 +106,9 @@ void to_wire(const JamAngle& in, gearcoupling_JamAngleResult& out) {
   out.radial_rad = in.radial_rad;
 }
 
-JamAngle from_wire(const gearcoupling_JamAngleResult& in) {
-  JamAngle out;
+JamAngleResult from_wire(const gearcoupling_JamAngleResult& in) {
+  JamAngleResult result{{}, in.crown_radius_m, in.crown_radius_derived};
+  JamAngle& out = result.jam;
   out.angle_rad = in.angle_rad;
   switch (in.governing) {
     case gearcoupling_JAM_BOTH_FLANKS: out.governing = JamCriterion::kBothFlanks; break;
@@ -114,7 +118,7 @@ JamAngle from_wire(const gearcoupling_JamAngleResult& in) {
   if (in.both_flanks_rad != nullptr) out.both_flanks_rad = *in.both_flanks_rad;
   out.facewidth_rad = in.facewidth_rad;
   out.radial_rad = in.radial_rad;
-  return out;
+  return result;
 }
 
 void to_wire(const InducedMoments& in, gearcoupling_InducedMomentsResult& out) {

@@ -8,14 +8,15 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
+#include "protocol/jam_angle_result.h"
 
 namespace gc::protocol {
 
 void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out);
 ToothContact from_wire(const gearcoupling_ToothContactResult& in);
 
-void to_wire(const JamAngle& in, gearcoupling_JamAngleResult& out);
-JamAngle from_wire(const gearcoupling_JamAngleResult& in);
+void to_wire(const protocol::JamAngleResult& in, gearcoupling_JamAngleResult& out);
+protocol::JamAngleResult from_wire(const gearcoupling_JamAngleResult& in);
 
 void to_wire(const InducedMoments& in, gearcoupling_InducedMomentsResult& out);
 InducedMoments from_wire(const gearcoupling_InducedMomentsResult& in);

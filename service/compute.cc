@@ -7,8 +7,9 @@ ToothContact compute(const CouplingGeometry& coupling,
   return tooth_contact(coupling, request.operating_point, request.options);
 }
 
-JamAngle compute(const CouplingGeometry& coupling, const protocol::JamAngleRequest&) {
-  return coupling.jam_angle();
+protocol::JamAngleResult compute(const CouplingGeometry& coupling,
+                                 const protocol::JamAngleRequest&) {
+  return {coupling.jam_angle(), coupling.crown_radius_m(), coupling.crown_radius_derived()};
 }
 
 InducedMoments compute(const CouplingGeometry& coupling,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/coupling_geometry.h"
+#include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"
 #include "core/friction_estimate.h"
 #include "core/induced_moments.h"
@@ -14,7 +15,7 @@ namespace gc::service {
 
 ToothContact compute(const CouplingGeometry& coupling, const protocol::ToothContactRequest& request);
 /// The jam angle is part of the validated geometry (eqs 23-35 run once per coupling).
-JamAngle compute(const CouplingGeometry& coupling, const protocol::JamAngleRequest& request);
+protocol::JamAngleResult compute(const CouplingGeometry& coupling, const protocol::JamAngleRequest& request);
 InducedMoments compute(const CouplingGeometry& coupling,
                        const protocol::InducedMomentsRequest& request);
 RestoringTorque compute(const CouplingGeometry& coupling,

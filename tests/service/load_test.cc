@@ -86,14 +86,14 @@ TEST(Service, OneClientBurstingTenThousandRequestsAllAnswered) {
   test::ServiceProcess service;
   client::Client client({test::test_domain(), std::chrono::seconds(60)});
   const auto catalogue = codec::load_coupling_catalog(codec::default_catalog_dir());
-  std::vector<std::future<JamAngle>> futures;
+  std::vector<std::future<protocol::JamAngleResult>> futures;
   futures.reserve(kRequests);
   for (int r = 0; r < kRequests; ++r) {
     futures.push_back(client.call_async<Calculation::kJamAngle>(
         {CatalogueName{r % 2 == 0 ? "nrel_upwind" : "nrel_downwind"}}));
   }
   for (int r = 0; r < kRequests; ++r) {
-    const JamAngle jam = futures[r].get();
+    const JamAngle jam = futures[r].get().jam;
     const double expected =
         catalogue.at(r % 2 == 0 ? "nrel_upwind" : "nrel_downwind").jam_angle().angle_rad;
     ASSERT_EQ(test::bits(jam.angle_rad), test::bits(expected)) << "request " << r;

@@ -36,7 +36,10 @@ TEST(Service, EveryCalculationEqualsInProcessBitForBit) {
     for (const protocol::CouplingRef& ref :
          {protocol::CouplingRef{CatalogueName{name}}, protocol::CouplingRef{geometry.definition()}}) {
       SCOPED_TRACE(name + (ref.index() == 0 ? " by name" : " inline"));
-      test::expect_identical(client.call<Calculation::kJamAngle>({ref}), geometry.jam_angle());
+      const protocol::JamAngleResult jam = client.call<Calculation::kJamAngle>({ref});
+      test::expect_identical(jam.jam, geometry.jam_angle());
+      EXPECT_EQ(test::bits(jam.crown_radius_m), test::bits(geometry.crown_radius_m()));
+      EXPECT_EQ(jam.crown_radius_derived, geometry.crown_radius_derived());
       test::expect_identical(client.call<Calculation::kRestoringTorque>({ref}),
                              restoring_torque(geometry));
       for (const OperatingPoint& point : load_cases(geometry)) {
