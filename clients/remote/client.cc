@@ -46,14 +46,21 @@ Client::Client(ClientOptions options)
   reply_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), reply_partition.get(), nullptr),
       "dds_create_subscriber(replies)"));
+  // Replies are taken in Cyclone's delivery thread (a data-available listener) and handed
+  // straight to the waiting caller: no extra thread between the network and the caller.
   const protocol::Qos qos = protocol::request_reply_qos();
-  for (std::size_t i = 0; i < reply_readers_.size(); ++i) {
+  protocol::for_each_calculation([&](auto calculation) {
+    constexpr Calculation kCalculation = decltype(calculation)::value;
+    dds_listener_t* listener = dds_create_listener(this);
+    dds_lset_data_available(listener, [](dds_entity_t, void* client) {
+      static_cast<Client*>(client)->take_replies<kCalculation>();
+    });
+    const std::size_t i = protocol::index_of(kCalculation);
     reply_readers_[i] = Entity(check_dds(
-        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), nullptr),
+        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener),
         "dds_create_reader(reply)"));
-    dds_set_status_mask(reply_readers_[i].get(), DDS_DATA_AVAILABLE_STATUS);
-    check_dds(dds_waitset_attach(waitset_.get(), reply_readers_[i].get(), 0), "dds_waitset_attach");
-  }
+    dds_delete_listener(listener);
+  });
   const protocol::Qos status_partition = protocol::partition_qos(protocol::kStatusPartition);
   status_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), status_partition.get(), nullptr),
@@ -78,6 +85,7 @@ Client::~Client() {
   instances_changed_.notify_all();
   dds_set_guardcondition(guard_.get(), true);
   receiver_.join();
+  for (const Entity& reader : reply_readers_) dds_set_listener(reader.get(), nullptr);
   std::map<std::uint64_t, Pending> pending;
   {
     std::lock_guard lock(mutex_);
@@ -325,8 +333,6 @@ void Client::receive_loop() {
       if (closing_) return;
     }
     take_status();
-    protocol::for_each_calculation(
-        [&](auto calculation) { take_replies<decltype(calculation)::value>(); });
     maintain();
   }
 }
