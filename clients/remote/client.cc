@@ -274,6 +274,15 @@ void Client::take_status() {
       instance->info.host = status.host != nullptr ? status.host : "";
       instance->info.pid = status.pid;
       instance->info.accepting = status.accepting;
+      instance->info.threads = status.threads;
+      instance->info.uptime_s = status.uptime_s;
+      instance->info.calculations.clear();
+      for (uint32_t k = 0; k < status.calculations._length; ++k) {
+        const gearcoupling_CalculationStats& s = status.calculations._buffer[k];
+        instance->info.calculations.push_back(
+            {s.calculation != nullptr ? s.calculation : "", s.served, s.failed,
+             s.p50_service_time_s, s.p99_service_time_s});
+      }
       instance->info.catalogue.clear();
       for (uint32_t k = 0; k < status.catalogue._length; ++k) {
         const char* name = status.catalogue._buffer[k].name;

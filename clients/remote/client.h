@@ -47,13 +47,25 @@ struct ClientOptions {
   std::chrono::milliseconds timeout{5000};
 };
 
-/// A service instance as its status describes it.
+/// One calculation's figures in an instance's status.
+struct CalculationStatus {
+  std::string calculation;          ///< "tooth_contact", ...
+  std::uint64_t served = 0;         ///< OK replies
+  std::uint64_t failed = 0;         ///< error replies
+  double p50_service_time_s = 0.0;  ///< over its last 4096 requests [s]
+  double p99_service_time_s = 0.0;
+};
+
+/// A service instance as its latest status describes it.
 struct InstanceInfo {
   std::uint64_t id = 0;
   std::string host;
   int pid = 0;
   bool accepting = false;
+  unsigned threads = 0;
+  double uptime_s = 0.0;
   std::vector<std::string> catalogue;  ///< coupling names it serves
+  std::vector<CalculationStatus> calculations;
 };
 
 /// What happened to this client's requests so far.
