@@ -126,6 +126,8 @@ void to_wire(const ContactOptions& in, gearcoupling_ContactOptions& out) {
   out.load_sharing.tolerance = in.load_sharing.tolerance;
   out.load_sharing.max_iterations = in.load_sharing.max_iterations;
   out.slices = in.slices;
+  out.spacing_error_m = in.spacing_error_m;
+  out.min_load_fraction = in.min_load_fraction;
 }
 
 ContactOptions from_wire(const gearcoupling_ContactOptions& in) {
@@ -133,6 +135,8 @@ ContactOptions from_wire(const gearcoupling_ContactOptions& in) {
   out.load_sharing.tolerance = in.load_sharing.tolerance;
   out.load_sharing.max_iterations = in.load_sharing.max_iterations;
   out.slices = in.slices;
+  out.spacing_error_m = in.spacing_error_m;
+  out.min_load_fraction = in.min_load_fraction;
   return out;
 }
 

@@ -40,11 +40,7 @@ void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out) {
   out.max_tooth_load_n = in.max_tooth_load_n;
   out.sum_tooth_loads_n = in.sum_tooth_loads_n;
   out.edge_loaded = in.edge_loaded;
-  const auto weights = static_cast<std::uint32_t>(in.slice_weights.size());
-  out.slice_weights._buffer = wire_buffer<double>(weights);
-  out.slice_weights._length = out.slice_weights._maximum = weights;
-  out.slice_weights._release = true;
-  for (std::uint32_t l = 0; l < weights; ++l) out.slice_weights._buffer[l] = in.slice_weights[l];
+  out.slices = in.slices;
   out.max_stress = gearcoupling_ToothStress{
       in.max_stress.contact_stress_pa, in.max_stress.contact_half_width_m,
       in.max_stress.bending_stress_pa, in.max_stress.contact_safety_factor,
@@ -76,10 +72,7 @@ ToothContact from_wire(const gearcoupling_ToothContactResult& in) {
   out.max_tooth_load_n = in.max_tooth_load_n;
   out.sum_tooth_loads_n = in.sum_tooth_loads_n;
   out.edge_loaded = in.edge_loaded;
-  out.slice_weights.resize(in.slice_weights._length);
-  for (std::uint32_t l = 0; l < in.slice_weights._length; ++l) {
-    out.slice_weights[l] = in.slice_weights._buffer[l];
-  }
+  out.slices = in.slices;
   out.max_stress = ToothStress{in.max_stress.contact_stress_pa, in.max_stress.contact_half_width_m,
                                in.max_stress.bending_stress_pa,
                                in.max_stress.contact_safety_factor,

@@ -1,7 +1,6 @@
 #include "clients/cli/in_process_calculator.h"
 
 #include "clients/cli/coupling_reference.h"
-#include "clients/cli/finite_results.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 
@@ -54,18 +53,14 @@ std::string InProcessCalculator::coupling_name(std::string_view coupling) const 
 ToothContact InProcessCalculator::tooth_contact(std::string_view coupling,
                                                 const OperatingPoint& point,
                                                 const ContactOptions& options) const {
-  ToothContact contact = gc::tooth_contact(geometry(coupling), point, options);
-  require_finite_result(point, contact);
-  return contact;
+  return gc::tooth_contact(geometry(coupling), point, options);
 }
 
 LoadCase InProcessCalculator::load_case(std::string_view coupling, const OperatingPoint& point,
                                         const ContactOptions& options) const {
   const CouplingGeometry& g = geometry(coupling);
   LoadCase result{gc::tooth_contact(g, point, options), {}};
-  require_finite_result(point, result.contact);
   result.moments = gc::induced_moments(g, point, result.contact);
-  require_finite_result(point, result.moments);
   return result;
 }
 
@@ -80,9 +75,7 @@ RestoringTorque InProcessCalculator::restoring_torque(std::string_view coupling)
 
 FrictionEstimate InProcessCalculator::estimate_friction(
     std::string_view coupling, const FrictionMeasurement& measurement) const {
-  const FrictionEstimate estimate = gc::estimate_friction(geometry(coupling), measurement);
-  require_finite_result(measurement, estimate);
-  return estimate;
+  return gc::estimate_friction(geometry(coupling), measurement);
 }
 
 }  // namespace gc::cli

@@ -1,7 +1,6 @@
 #include "clients/cli/remote_calculator.h"
 
 #include "clients/cli/coupling_reference.h"
-#include "clients/cli/finite_results.h"
 #include "codec/coupling_file.h"
 
 namespace gc::cli {
@@ -30,10 +29,7 @@ std::string RemoteCalculator::coupling_name(std::string_view coupling) const {
 
 ToothContact RemoteCalculator::tooth_contact(std::string_view coupling, const OperatingPoint& point,
                                              const ContactOptions& options) const {
-  ToothContact contact =
-      client_.call<Calculation::kToothContact>({reference(coupling), point, options});
-  require_finite_result(point, contact);
-  return contact;
+  return client_.call<Calculation::kToothContact>({reference(coupling), point, options});
 }
 
 LoadCase RemoteCalculator::load_case(std::string_view coupling, const OperatingPoint& point,
@@ -42,10 +38,7 @@ LoadCase RemoteCalculator::load_case(std::string_view coupling, const OperatingP
   // Both requests in flight at once; the service computes the moments from the same contact.
   auto contact = client_.call_async<Calculation::kToothContact>({ref, point, options});
   auto moments = client_.call_async<Calculation::kInducedMoments>({ref, point, options});
-  LoadCase result{contact.get(), moments.get()};
-  require_finite_result(point, result.contact);
-  require_finite_result(point, result.moments);
-  return result;
+  return {contact.get(), moments.get()};
 }
 
 JamAngleReport RemoteCalculator::jam_angle(std::string_view coupling) const {
@@ -60,10 +53,7 @@ RestoringTorque RemoteCalculator::restoring_torque(std::string_view coupling) co
 
 FrictionEstimate RemoteCalculator::estimate_friction(
     std::string_view coupling, const FrictionMeasurement& measurement) const {
-  FrictionEstimate estimate =
-      client_.call<Calculation::kFrictionEstimate>({reference(coupling), measurement});
-  require_finite_result(measurement, estimate);
-  return estimate;
+  return client_.call<Calculation::kFrictionEstimate>({reference(coupling), measurement});
 }
 
 }  // namespace gc::cli

@@ -181,7 +181,7 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, CliBadInput,
     ::testing::Values(
         BadInputCase{{"contact", "--torque", "-5", "--misalignment-deg", "0.4"},
-                     {"--torque -5", "operating_point.torque_nm", "out of range: allowed"}},
+                     {"--torque -5", "operating_point.torque_nm", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "2"},
                      {"--misalignment-deg 2", "jam angle", "0.750906 deg"}},
         BadInputCase{{"moments", "--torque", "1e6", "--misalignment-deg", "0.4", "--mu", "1.5"},
@@ -194,15 +194,14 @@ INSTANTIATE_TEST_SUITE_P(
                      {"--slices 3", "even number in [2, 1000]"}},
         BadInputCase{{"moments", "--torque", "1e308", "--misalignment-deg", "0.4", "--mu", "0.1"},
                      {"--torque 1e308", "operating_point.torque_nm", "out of range: allowed"}},
-        // Eq 4 divides the moments by the torque: 1e308 / 1e-300 overflows. The CLI refuses
-        // to print the infinite mu.
+        // Eq 4 divides the moments by the torque: 1e308 / 1e-300 overflows; the core refuses.
         BadInputCase{{"friction", "--torque", "1e-300", "--misalignment-deg", "0.4", "--msy",
                       "1e308", "--msz", "1e308"},
-                     {"--torque 1e-300", "stay finite"}},
+                     {"--torque 1e-300", "(eq 4) is finite"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "x"},
                      {"--slices 'x' is not a whole number"}},
         BadInputCase{{"contact", "--torque", "nan", "--misalignment-deg", "0.4"},
-                     {"--torque nan", "out of range: allowed"}},
+                     {"--torque nan", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
                      {"unknown flag --colour"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--coupling",
