@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
                  config.reply_match_timeout_s, config.reply_block_s, config.departed_hold_s,
                  config.shutdown_grace_s,
                  std::getenv("CYCLONEDDS_URI") ? std::getenv("CYCLONEDDS_URI") : "(unset)");
+    if (std::getenv("CYCLONEDDS_URI") == nullptr) {
+      spdlog::warn("CYCLONEDDS_URI is not set: Cyclone's defaults apply (every interface, "
+                   "multicast); deploy/cyclonedds-loopback.xml keeps DDS on loopback");
+    }
     gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
     gc::service::Service service(config, std::move(catalogue));
 

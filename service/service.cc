@@ -158,7 +158,12 @@ void Service::answer(const gearcoupling_Correlation& correlation,
                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
                  correlation.sequence_number);
     reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
-  } else if (const dds_return_t rc = dds_write(writer, &reply); rc < 0) {
+  } else if (const dds_return_t rc = dds_write(writer, &reply);
+             rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
+    spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
+                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                 correlation.sequence_number);
+  } else if (rc < 0) {
     spdlog::error("{} client={} seq={}: dds_write of the reply failed: {}",
                   protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
                   correlation.sequence_number, dds_strretcode(rc));
