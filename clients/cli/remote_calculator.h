@@ -1,8 +1,9 @@
 // The Calculator that asks gearcoupling-service over DDS (gearcoupling --remote). Catalogue
 // names go to the service by name (its catalogue); a coupling file is read here and sent inline.
 // Results are the core's types, converted back from the replies, so every subcommand prints
-// exactly what it prints in process. Any number of threads may call at once: each call is one
-// request in flight (batch -j N keeps N in flight).
+// exactly what it prints in process. Any number of threads may call at once, each call waiting
+// for its own replies: batch -j N keeps N rows in flight (2N requests: a row's tooth contact and
+// moments go out together).
 #pragma once
 
 #include <map>
