@@ -6,9 +6,11 @@
 namespace gc {
 namespace {
 
+// Ten significant digits: what a user typed reads back as typed ("-0.1", not
+// "-0.10000000000000001"), and values differing in the tenth digit still differ.
 std::string format_value(double value) {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(10);
   out << value;
   return out.str();
 }
