@@ -1,14 +1,11 @@
 #include "codec/coupling_file.h"
 
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 
-#include <google/protobuf/io/tokenizer.h>
-#include <google/protobuf/text_format.h>
 
 #include "codec/angle_units.h"
+#include "codec/text_format.h"
 #include "core/model_error.h"
 #include "idl/coupling.pb.h"
 
@@ -24,42 +21,6 @@ const std::set<std::string, std::less<>>& optional_fields() {
       "description", "crown_radius_m", "sleeve_root_diameter_m"};
   return fields;
 }
-
-// Turns the text-format parser's first error into an InvalidInput naming the field when the
-// parser names one ("... has no field named \"x\"."), and the source, line and column always.
-class ThrowingErrorCollector : public pb::io::ErrorCollector {
- public:
-  explicit ThrowingErrorCollector(std::string_view source) : source_(source) {}
-
-  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
-    if (!first_error_.empty()) return;
-    // The parser counts lines and columns from zero; editors count from one.
-    first_error_ = std::string(source_) + ":" + std::to_string(line + 1) + ":" +
-                   std::to_string(column + 1) + ": " + message;
-    field_ = "coupling" + named_field(message);
-  }
-
-  void throw_if_failed() const {
-    if (!first_error_.empty()) throw InvalidInput(field_, first_error_);
-  }
-
- private:
-  static std::string named_field(const std::string& message) {
-    static constexpr std::string_view kMarker = "field named \"";
-    const auto begin = message.find(kMarker);
-    if (begin == std::string::npos) return "";
-    const auto name_begin = begin + kMarker.size();
-    const auto end = message.find('"', name_begin);
-    if (end == std::string::npos) return "";
-    std::string field(".");
-    field.append(message, name_begin, end - name_begin);
-    return field;
-  }
-
-  std::string_view source_;
-  std::string first_error_;
-  std::string field_;
-};
 
 // Every field of `message` (and of its set sub-messages) that is neither set nor optional use.
 void require_fields(const pb::Message& message, const std::string& path,
@@ -117,14 +78,7 @@ CouplingDefinition from_message(const gearcoupling::v1::CouplingDefinition& m) {
 
 CouplingDefinition parse_coupling_text(std::string_view text, std::string_view source_name) {
   gearcoupling::v1::CouplingDefinition message;
-  ThrowingErrorCollector errors(source_name);
-  pb::TextFormat::Parser parser;
-  parser.RecordErrorsTo(&errors);
-  const bool parsed = parser.ParseFromString(std::string(text), &message);
-  errors.throw_if_failed();
-  if (!parsed) {
-    throw InvalidInput("coupling", std::string(source_name) + ": not a coupling text proto");
-  }
+  parse_text_format(text, source_name, "coupling", message);
   require_fields(message, "coupling", source_name);
   if (message.name().empty()) {
     throw InvalidInput("coupling.name", "must not be empty in " + std::string(source_name));
@@ -133,11 +87,7 @@ CouplingDefinition parse_coupling_text(std::string_view text, std::string_view s
 }
 
 CouplingDefinition load_coupling_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("coupling", "cannot read coupling file " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_coupling_text(text.str(), path.filename().string());
+  return parse_coupling_text(read_text_file(path, "coupling"), path.filename().string());
 }
 
 }  // namespace gc::codec

@@ -9,6 +9,7 @@ packages=(
   libspdlog-dev libfmt-dev
   cyclonedds-dev cyclonedds-tools
   googletest libgtest-dev libgmock-dev libbenchmark-dev
+  libjs-chart.js  # Chart.js, inlined into validate's HTML report
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "clients/cli/command_line.h"
+#include "clients/cli/csv_fields.h"
 #include "clients/cli/input_names.h"
 #include "clients/cli/number_text.h"
 #include "codec/angle_units.h"
@@ -35,30 +36,6 @@ constexpr std::array<ResultColumn, 12> kResultColumns = {{
     {"bending_safety_factor",
      [](const LoadCase& r) { return r.contact.max_stress.bending_safety_factor; }},
 }};
-
-void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
-  fields.clear();
-  for (;;) {
-    const auto comma = line.find(',');
-    fields.push_back(trim(line.substr(0, comma)));
-    if (comma == std::string_view::npos) return;
-    line.remove_prefix(comma + 1);
-  }
-}
-
-// RFC 4180: quote a field holding a comma, quote or line break; double its quotes.
-void append_csv_field(std::string& out, std::string_view field) {
-  if (field.find_first_of(",\"\n\r") == std::string_view::npos) {
-    out += field;
-    return;
-  }
-  out += '"';
-  for (char c : field) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
-}
 
 void append_row_start(std::string& out, long line, std::string_view coupling) {
   append_number(out, line);

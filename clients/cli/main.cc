@@ -18,9 +18,10 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-std::array<const Subcommand*, 6> subcommands() {
+std::array<const Subcommand*, 8> subcommands() {
   return {&contact_subcommand(),          &jam_angle_subcommand(), &moments_subcommand(),
-          &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand()};
+          &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand(),
+          &synth_subcommand(),            &validate_subcommand()};
 }
 
 std::string overview() {

@@ -27,6 +27,8 @@ const Subcommand& moments_subcommand();
 const Subcommand& restoring_torque_subcommand();
 const Subcommand& friction_subcommand();
 const Subcommand& batch_subcommand();
+const Subcommand& synth_subcommand();
+const Subcommand& validate_subcommand();
 
 /// --coupling, --catalog and --json.
 std::vector<FlagSpec> common_flags();

@@ -1,0 +1,27 @@
+#include "clients/cli/model_flags.h"
+
+#include <cstdlib>
+
+namespace gc::cli {
+
+FlagSpec model_flag() {
+  return {"model", "FILE|NAME",
+          "model configuration: a .textproto file, or a name in data/models ($GEARCOUPLING_MODELS)",
+          std::nullopt};
+}
+
+std::filesystem::path default_models_dir() {
+  const char* dir = std::getenv("GEARCOUPLING_MODELS");
+  return dir != nullptr && *dir != '\0' ? std::filesystem::path(dir)
+                                        : std::filesystem::path(GC_DEFAULT_MODELS_DIR);
+}
+
+codec::ModelFile load_model_flag(const Flags& flags) {
+  const std::string& model = flags.text("model");
+  const bool is_file = model.find('/') != std::string::npos || model.ends_with(".textproto");
+  const std::filesystem::path path =
+      is_file ? std::filesystem::path(model) : default_models_dir() / (model + ".textproto");
+  return codec::load_model_description(path, flags.text("catalog"));
+}
+
+}  // namespace gc::cli

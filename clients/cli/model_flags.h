@@ -1,0 +1,20 @@
+// --model: a model configuration file (idl/model_config.proto), or the name of one bundled in
+// data/models/ ("paper" is data/models/paper.textproto).
+#pragma once
+
+#include "clients/cli/command_line.h"
+#include "codec/model_file.h"
+
+namespace gc::cli {
+
+/// The flag spec of --model (required).
+FlagSpec model_flag();
+
+/// Loads the model named by --model, couplings from --catalog. Throws gc::InvalidInput naming
+/// the field and file.
+codec::ModelFile load_model_flag(const Flags& flags);
+
+/// $GEARCOUPLING_MODELS when set and not empty, else the bundled data/models.
+std::filesystem::path default_models_dir();
+
+}  // namespace gc::cli

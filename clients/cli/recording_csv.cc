@@ -1,0 +1,262 @@
+#include "clients/cli/recording_csv.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "clients/cli/csv_fields.h"
+#include "clients/cli/number_text.h"
+#include "core/model_error.h"
+
+namespace gc::cli {
+namespace {
+
+constexpr std::size_t kRequiredCount = 6;  // time .. msz, the first quantities of the enum
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+constexpr std::array<Quantity, kQuantityCount> kQuantities{
+    Quantity::time,  Quantity::torque,      Quantity::misalignment, Quantity::direction,
+    Quantity::msy,   Quantity::msz,         Quantity::speed,        Quantity::temperature,
+    Quantity::applied_my, Quantity::applied_mz, Quantity::hub_motion};
+
+const std::vector<UnitSpelling> kMomentUnits{{"nm", 1.0}, {"knm", 1e3}, {"mnm", 1e6}};
+const std::vector<UnitSpelling> kAngleUnits{{"rad", 1.0}, {"deg", kDegree}, {"mrad", 1e-3}};
+
+// "applied_my_knm" -> quantity applied_my, unit "knm": the longest quantity name that is a
+// prefix followed by '_' wins, so "applied_my" is not read as a unit of "applied".
+std::optional<Quantity> quantity_of(std::string_view column, std::string_view& unit) {
+  std::optional<Quantity> found;
+  std::size_t found_length = 0;
+  for (Quantity quantity : kQuantities) {
+    const std::string_view name = quantity_name(quantity);
+    if (column.size() > name.size() + 1 && column.starts_with(name) &&
+        column[name.size()] == '_' && name.size() > found_length) {
+      found = quantity;
+      found_length = name.size();
+    }
+  }
+  if (found) unit = column.substr(found_length + 1);
+  return found;
+}
+
+std::string spellings_text(Quantity quantity) {
+  std::string text;
+  for (const UnitSpelling& spelling : unit_spellings(quantity)) {
+    text += fmt::format("{}{}_{}", text.empty() ? "" : ", ", quantity_name(quantity), spelling.unit);
+  }
+  return text;
+}
+
+std::string all_columns_text() {
+  std::string text;
+  for (Quantity quantity : kQuantities) text += (text.empty() ? "" : "; ") + spellings_text(quantity);
+  return text;
+}
+
+[[noreturn]] void header_error(std::string_view source, int column, std::string_view name,
+                               const std::string& message) {
+  throw InvalidInput("recording." + std::string(name.empty() ? "header" : name),
+                     fmt::format("{}:1:{}: {}", source, column, message));
+}
+
+RecordingColumn parse_column(std::string_view name, std::string_view source, int column) {
+  std::string_view unit;
+  const std::optional<Quantity> quantity = quantity_of(name, unit);
+  if (!quantity) {
+    header_error(source, column, name,
+                 fmt::format("unknown column '{}' (accepted: {})", name, all_columns_text()));
+  }
+  for (const UnitSpelling& spelling : unit_spellings(*quantity)) {
+    if (spelling.unit == unit) return {*quantity, std::string(name), spelling};
+  }
+  header_error(source, column, name,
+               fmt::format("unknown unit '{}' in column '{}' (accepted: {})", unit, name,
+                           spellings_text(*quantity)));
+}
+
+void set_value(Quantity quantity, double value, RecordedSample& s) {
+  switch (quantity) {
+    case Quantity::time: s.input.time_s = value; break;
+    case Quantity::torque: s.input.torque_nm = value; break;
+    case Quantity::misalignment: s.input.misalignment_rad = value; break;
+    case Quantity::direction: s.input.direction_rad = value; break;
+    case Quantity::msy: s.measured.y_nm = value; break;
+    case Quantity::msz: s.measured.z_nm = value; break;
+    case Quantity::speed: s.input.speed_rpm = value; break;
+    case Quantity::temperature: s.input.temperature_c = value; break;
+    case Quantity::applied_my: s.input.applied_moment_y_nm = value; break;
+    case Quantity::applied_mz: s.input.applied_moment_z_nm = value; break;
+    case Quantity::hub_motion: s.hub_motion_m = value; break;
+  }
+}
+
+std::string_view cell_complaint(std::string_view cell) {
+  if (cell.empty()) return "empty cell";
+  return "not a number";
+}
+
+}  // namespace
+
+std::string_view quantity_name(Quantity quantity) {
+  static constexpr std::array<std::string_view, kQuantityCount> kNames{
+      "time", "torque", "misalignment", "direction", "msy", "msz",
+      "speed", "temperature", "applied_my", "applied_mz", "hub_motion"};
+  return kNames[static_cast<std::size_t>(quantity)];
+}
+
+const std::vector<UnitSpelling>& unit_spellings(Quantity quantity) {
+  static const std::vector<UnitSpelling> kTime{{"s", 1.0}, {"ms", 1e-3}};
+  static const std::vector<UnitSpelling> kSpeed{{"rpm", 1.0}, {"rad_s", 60.0 / (2.0 * std::numbers::pi)}};
+  // Temperature stays in deg C, as MeasurementSample holds it.
+  static const std::vector<UnitSpelling> kTemperature{{"c", 1.0}, {"k", 1.0, -273.15}};
+  static const std::vector<UnitSpelling> kLength{{"m", 1.0}, {"mm", 1e-3}, {"um", 1e-6}};
+  switch (quantity) {
+    case Quantity::time: return kTime;
+    case Quantity::misalignment:
+    case Quantity::direction: return kAngleUnits;
+    case Quantity::speed: return kSpeed;
+    case Quantity::temperature: return kTemperature;
+    case Quantity::hub_motion: return kLength;
+    default: return kMomentUnits;
+  }
+}
+
+std::vector<RecordingColumn> parse_recording_header(std::string_view header,
+                                                    std::string_view source_name) {
+  std::vector<std::string_view> names;
+  split_fields(header, names);
+  std::vector<RecordingColumn> columns;
+  std::array<int, kQuantityCount> seen{};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const int column = static_cast<int>(i) + 1;
+    RecordingColumn parsed = parse_column(names[i], source_name, column);
+    int& first = seen[static_cast<std::size_t>(parsed.quantity)];
+    if (first != 0) {
+      header_error(source_name, column, names[i],
+                   fmt::format("column '{}' repeats {} (column {})", names[i],
+                               quantity_name(parsed.quantity), first));
+    }
+    first = column;
+    columns.push_back(std::move(parsed));
+  }
+  for (std::size_t q = 0; q < kRequiredCount; ++q) {
+    if (seen[q] == 0) {
+      header_error(source_name, 0, quantity_name(kQuantities[q]),
+                   fmt::format("required column {} missing (one of: {})",
+                               quantity_name(kQuantities[q]), spellings_text(kQuantities[q])));
+    }
+  }
+  return columns;
+}
+
+RecordingReader::RecordingReader(const std::filesystem::path& path,
+                                 LoadingDirectionOptions loading)
+    : source_name_(path.filename().string()), in_(path, std::ios::binary), loading_(loading) {
+  if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
+  if (!std::getline(in_, line_)) {
+    throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
+  }
+  columns_ = parse_recording_header(line_, source_name_);
+}
+
+std::optional<RowProblem> RecordingReader::parse_row(std::string_view line, RecordedSample& s) {
+  split_fields(line, fields_);
+  if (fields_.size() != columns_.size()) {
+    return RowProblem{line_number_, 0, "",
+                      fmt::format("{} fields, the header has {}", fields_.size(), columns_.size())};
+  }
+  s = RecordedSample{};
+  for (std::size_t i = 0; i < fields_.size(); ++i) {
+    const RecordingColumn& column = columns_[i];
+    const std::optional<double> value = parse_double(fields_[i]);
+    const int column_number = static_cast<int>(i) + 1;
+    if (!value) {
+      return RowProblem{line_number_, column_number, column.name,
+                        fmt::format("{} '{}'", cell_complaint(fields_[i]), fields_[i])};
+    }
+    if (!std::isfinite(*value)) {
+      return RowProblem{line_number_, column_number, column.name,
+                        fmt::format("'{}' is not a finite number", fields_[i])};
+    }
+    set_value(column.quantity, *value * column.unit.scale + column.unit.offset, s);
+  }
+  if (last_time_s_ && s.input.time_s < *last_time_s_) {
+    const auto time_column = std::find_if(columns_.begin(), columns_.end(), [](const auto& c) {
+      return c.quantity == Quantity::time;
+    });
+    return RowProblem{line_number_, static_cast<int>(time_column - columns_.begin()) + 1,
+                      time_column->name,
+                      fmt::format("time goes backwards: {} s after {} s", s.input.time_s,
+                                  *last_time_s_)};
+  }
+  return std::nullopt;
+}
+
+void RecordingReader::exclude(RowProblem problem) {
+  ++excluded_rows_;
+  if (problems_.size() < kKeptProblems) problems_.push_back(std::move(problem));
+}
+
+bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size_t max_samples) {
+  samples.clear();
+  while (samples.size() < max_samples && std::getline(in_, line_)) {
+    ++line_number_;
+    const std::string_view line = trim(line_);
+    if (line.empty()) continue;  // a blank line (e.g. the last) is no row
+    ++rows_read_;
+    RecordedSample sample;
+    if (auto problem = parse_row(line, sample)) {
+      exclude(std::move(*problem));
+      continue;
+    }
+    last_time_s_ = sample.input.time_s;
+    sample.input.loading_direction =
+        loading_.next(sample.input.time_s, sample.input.misalignment_rad);
+    samples.push_back(sample);
+  }
+  return !samples.empty() || !in_.eof();
+}
+
+Recording read_recording(const std::filesystem::path& path, LoadingDirectionOptions loading) {
+  RecordingReader reader(path, loading);
+  Recording recording;
+  std::vector<RecordedSample> chunk;
+  while (reader.next_chunk(chunk, 65536)) {
+    recording.samples.insert(recording.samples.end(), chunk.begin(), chunk.end());
+  }
+  recording.problems = reader.problems();
+  recording.rows_read = reader.rows_read();
+  recording.excluded_rows = reader.excluded_rows();
+  return recording;
+}
+
+std::string recording_header(const RecordedSample& first) {
+  std::string header = "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm";
+  if (first.input.speed_rpm) header += ",speed_rpm";
+  if (first.input.temperature_c) header += ",temperature_c";
+  if (first.input.applied_moment_y_nm) header += ",applied_my_nm";
+  if (first.input.applied_moment_z_nm) header += ",applied_mz_nm";
+  if (first.hub_motion_m) header += ",hub_motion_m";
+  return header + "\n";
+}
+
+void append_recording_row(std::string& out, const RecordedSample& s) {
+  for (double value : {s.input.time_s, s.input.torque_nm, s.input.misalignment_rad,
+                       s.input.direction_rad, s.measured.y_nm, s.measured.z_nm}) {
+    append_number(out, value);
+    out += ',';
+  }
+  for (const std::optional<double>& value :
+       {s.input.speed_rpm, s.input.temperature_c, s.input.applied_moment_y_nm,
+        s.input.applied_moment_z_nm, s.hub_motion_m}) {
+    if (!value) continue;
+    append_number(out, *value);
+    out += ',';
+  }
+  out.back() = '\n';
+}
+
+}  // namespace gc::cli

@@ -1,0 +1,82 @@
+#include "clients/cli/validation_summary.h"
+
+#include <fmt/format.h>
+
+#include "clients/cli/table.h"
+
+namespace gc::cli {
+namespace {
+
+namespace v1 = gearcoupling::v1;
+
+constexpr std::size_t kProblemsShown = 10;
+
+void add_metrics_row(Table& table, const std::string& model, std::string_view channel,
+                     const v1::ErrorMetricsRecord& m) {
+  table.add_row({model, std::string(channel), std::to_string(m.count()),
+                 fmt::format("{:.2f}", m.rmse_nm() / 1e3), fmt::format("{:.3f}", m.rmse_pct()),
+                 fmt::format("{:+.2f}", m.bias_nm() / 1e3), fmt::format("{:+.3f}", m.bias_pct()),
+                 m.has_r_squared() ? fmt::format("{:.4f}", m.r_squared()) : "n/a",
+                 fmt::format("{:.2f}", m.max_abs_error_nm() / 1e3),
+                 fmt::format("{:.3f}", m.max_abs_error_pct())});
+}
+
+void print_metrics(const v1::ValidationResult& result, std::FILE* out) {
+  Table table({"model", "channel", "samples", "RMSE [kN·m]", "RMSE [% T_ref]", "bias [kN·m]",
+               "bias [% T_ref]", "R^2", "max |err| [kN·m]", "max [% T_ref]"});
+  for (const v1::ModelValidation& model : result.models()) {
+    add_metrics_row(table, model.model(), "M_sy'", model.overall().msy());
+    add_metrics_row(table, model.model(), "M_sz'", model.overall().msz());
+  }
+  table.print(out);
+}
+
+void print_regions(const v1::ModelValidation& model, std::FILE* out) {
+  fmt::print(out, "\nWhere {} fails (worst region of each input, worst first; contrast = region "
+             "RMSE / RMSE elsewhere):\n", model.model());
+  for (const v1::RegionRecord& region : model.worst_regions()) {
+    fmt::print(out, "  [{:4.1f}x] {}\n", region.contrast(), region.description());
+  }
+}
+
+void print_rejections(const v1::ModelValidation& model, std::FILE* out) {
+  if (model.rejected_samples() == 0) return;
+  fmt::print(out, "\n{} of the samples refused by {} (not in the metrics):\n",
+             model.rejected_samples(), model.model());
+  for (const v1::RejectionRecord& r : model.rejections()) {
+    fmt::print(out, "  {} x {} (first at t = {} s: {})\n", r.count(), r.field(),
+               r.first_time_s(), r.first_message());
+  }
+}
+
+void print_row_problems(const v1::ValidationResult& result, std::FILE* out) {
+  if (result.excluded_rows() == 0) return;
+  fmt::print(out, "\n{} of {} rows of {} excluded as malformed:\n", result.excluded_rows(),
+             result.recording_rows(), result.recording());
+  for (int i = 0; i < result.row_problems_size() && i < static_cast<int>(kProblemsShown); ++i) {
+    const v1::RowProblemRecord& p = result.row_problems(i);
+    fmt::print(out, "  line {}{}: {}\n", p.line(),
+               p.column() > 0 ? fmt::format(", column {} ({})", p.column(), p.column_name()) : "",
+               p.message());
+  }
+  if (result.excluded_rows() > kProblemsShown) {
+    fmt::print(out, "  ... and {} more (--json lists the first {})\n",
+               result.excluded_rows() - kProblemsShown, result.row_problems_size());
+  }
+}
+
+}  // namespace
+
+void print_validation_summary(const v1::ValidationResult& result, std::FILE* out) {
+  fmt::print(out, "Recording {}: {} rows; reference torque T_ref {:.3f} MN·m; errors are model - "
+             "measurement\n\n", result.recording(), result.recording_rows(),
+             result.reference_torque_nm() / 1e6);
+  print_metrics(result, out);
+  for (const v1::ModelValidation& model : result.models()) {
+    print_regions(model, out);
+    print_rejections(model, out);
+  }
+  print_row_problems(result, out);
+}
+
+}  // namespace gc::cli

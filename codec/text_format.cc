@@ -1,0 +1,77 @@
+#include "codec/text_format.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/text_format.h>
+
+#include "core/model_error.h"
+
+namespace gc::codec {
+namespace {
+
+namespace pb = google::protobuf;
+
+// Turns the text-format parser's first error into an InvalidInput naming the field when the
+// parser names one ("... has no field named \"x\"."), and the source, line and column always.
+class ThrowingErrorCollector : public pb::io::ErrorCollector {
+ public:
+  ThrowingErrorCollector(std::string_view source, const std::string& root)
+      : source_(source), root_(root) {}
+
+  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
+    if (!first_error_.empty()) return;
+    // The parser counts lines and columns from zero; editors count from one.
+    first_error_ = std::string(source_) + ":" + std::to_string(line + 1) + ":" +
+                   std::to_string(column + 1) + ": " + message;
+    field_ = root_ + named_field(message);
+  }
+
+  void throw_if_failed() const {
+    if (!first_error_.empty()) throw InvalidInput(field_, first_error_);
+  }
+
+ private:
+  static std::string named_field(const std::string& message) {
+    static constexpr std::string_view kMarker = "field named \"";
+    const auto begin = message.find(kMarker);
+    if (begin == std::string::npos) return "";
+    const auto name_begin = begin + kMarker.size();
+    const auto end = message.find('"', name_begin);
+    if (end == std::string::npos) return "";
+    std::string field(".");
+    field.append(message, name_begin, end - name_begin);
+    return field;
+  }
+
+  std::string_view source_;
+  std::string root_;
+  std::string first_error_;
+  std::string field_;
+};
+
+}  // namespace
+
+void parse_text_format(std::string_view text, std::string_view source_name,
+                       const std::string& root, pb::Message& message) {
+  ThrowingErrorCollector errors(source_name, root);
+  pb::TextFormat::Parser parser;
+  parser.RecordErrorsTo(&errors);
+  const bool parsed = parser.ParseFromString(std::string(text), &message);
+  errors.throw_if_failed();
+  if (!parsed) {
+    throw InvalidInput(root, std::string(source_name) + ": not a " +
+                                 message.GetDescriptor()->name() + " text proto");
+  }
+}
+
+std::string read_text_file(const std::filesystem::path& path, const std::string& root) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput(root, "cannot read " + root + " file " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace gc::codec

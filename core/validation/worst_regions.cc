@@ -1,0 +1,122 @@
+#include "core/validation/worst_regions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+namespace gc {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
+struct SeenRange {
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+  int populated = 0;
+};
+
+SeenRange seen_range(const ErrorBinning& binning, std::size_t min_count) {
+  SeenRange range;
+  for (const ErrorBin& bin : binning.bins()) {
+    if (bin.errors.count() < min_count) continue;
+    range.min = std::min(range.min, bin.seen_min);
+    range.max = std::max(range.max, bin.seen_max);
+    ++range.populated;
+  }
+  return range;
+}
+
+// RMSE of everything outside `bin`, from the totals: sum of squares minus the bin's.
+double rmse_outside(const ErrorMetrics& all, const ErrorMetrics& bin) {
+  const double outside_count = static_cast<double>(all.count - bin.count);
+  if (outside_count <= 0.0) return 0.0;
+  const double sse = all.rmse_nm * all.rmse_nm * static_cast<double>(all.count) -
+                     bin.rmse_nm * bin.rmse_nm * static_cast<double>(bin.count);
+  return std::sqrt(std::max(0.0, sse) / outside_count);
+}
+
+double contrast(const ErrorMetrics& all, const ErrorMetrics& bin) {
+  const double outside = rmse_outside(all, bin);
+  // A floor of a millionth of the overall RMSE keeps a perfect fit outside the bin finite.
+  return bin.rmse_nm / std::max(outside, 1e-6 * all.rmse_nm + 1e-300);
+}
+
+std::string level_word(double position, const char* low, const char* mid, const char* high) {
+  return position < 1.0 / 3.0 ? low : position > 2.0 / 3.0 ? high : mid;
+}
+
+std::string printf_string(const char* format, double a, double b) {
+  char text[96];
+  std::snprintf(text, sizeof text, format, a, b);
+  return text;
+}
+
+}  // namespace
+
+std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, Channel channel,
+                                       double min_share) {
+  const ErrorMetrics overall = validation.overall()[channel].metrics();
+  const auto min_count = std::max<std::size_t>(
+      10, static_cast<std::size_t>(min_share * static_cast<double>(overall.count)));
+  std::vector<RegionError> regions;
+  for (const ErrorBinning& binning : validation.binnings()) {
+    const SeenRange range = seen_range(binning, min_count);
+    if (range.populated < 2) continue;
+    std::optional<RegionError> worst;
+    for (std::size_t i = 0; i < binning.bins().size(); ++i) {
+      const ErrorBin& bin = binning.bins()[i];
+      if (bin.errors.count() < min_count) continue;
+      const ErrorMetrics metrics = bin.errors[channel].metrics();
+      if (worst && metrics.rmse_nm <= worst->metrics.rmse_nm) continue;
+      const double middle = 0.5 * (bin.seen_min + bin.seen_max);
+      const double span = range.max - range.min;
+      worst = RegionError{binning.dimension(), channel, i, bin, metrics, overall,
+                          contrast(overall, metrics),
+                          span > 0.0 ? (middle - range.min) / span : 0.5};
+    }
+    if (worst) regions.push_back(*worst);
+  }
+  std::stable_sort(regions.begin(), regions.end(), [](const RegionError& a, const RegionError& b) {
+    return a.contrast > b.contrast;
+  });
+  return regions;
+}
+
+std::string describe_region(const RegionError& r) {
+  const ErrorBin& bin = r.region;
+  switch (r.dimension) {
+    case BinDimension::torque:
+      return level_word(r.position, "low", "medium", "high") + " torque" +
+             printf_string(" (%.2f-%.2f MN·m)", bin.seen_min / 1e6, bin.seen_max / 1e6);
+    case BinDimension::misalignment:
+      return level_word(r.position, "small", "medium", "large") + " misalignment" +
+             printf_string(" (%.3f-%.3f deg)", bin.seen_min * kDegreesPerRadian,
+                           bin.seen_max * kDegreesPerRadian);
+    case BinDimension::direction:
+      return "misalignment direction" +
+             printf_string(" %.0f to %.0f deg", bin.lower * kDegreesPerRadian,
+                           bin.upper * kDegreesPerRadian);
+    case BinDimension::loading:
+      return bin.seen_min > 0.5   ? "rising misalignment"
+             : bin.seen_max < -0.5 ? "falling misalignment"
+                                   : "steady misalignment";
+    case BinDimension::time:
+      return printf_string("time %.4g-%.4g s", bin.seen_min, bin.seen_max);
+  }
+  return "";
+}
+
+std::string describe(const RegionError& r, double reference_torque_nm) {
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers,
+                ": bias %+.1f kN·m, RMSE %.1f kN·m (%.2f %% of T_ref) in %zu samples, against "
+                "%.1f kN·m overall",
+                r.metrics.bias_nm / 1e3, r.metrics.rmse_nm / 1e3,
+                100.0 * r.metrics.rmse_nm / reference_torque_nm, r.metrics.count,
+                r.overall.rmse_nm / 1e3);
+  return std::string(to_string(r.channel)) + " errs most at " + describe_region(r) + numbers;
+}
+
+}  // namespace gc

@@ -1,0 +1,37 @@
+// The regions where a model errs most, and their description in words, e.g.
+//   "M_sz' errs most at low torque (0.15-0.30 MN·m): bias +42 kN·m, RMSE 50 kN·m (3.3 % of
+//    T_ref) in 1200 samples, against 12 kN·m overall".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/validation/error_bins.h"
+
+namespace gc {
+
+struct RegionError {
+  BinDimension dimension;
+  Channel channel;
+  std::size_t bin = 0;     ///< index in the dimension's binning
+  ErrorBin region;         ///< its edges and the inputs seen in it
+  ErrorMetrics metrics;    ///< the channel's error in the region
+  ErrorMetrics overall;    ///< the channel's error over the whole recording
+  /// How much larger the region's RMSE is than that of the rest of the recording; regions are
+  /// ranked by it, so a uniform error names no region in particular (contrast near 1).
+  double contrast = 1.0;
+  double position = 0.0;   ///< where the region lies in the range seen: 0 lowest, 1 highest
+};
+
+/// For `channel`, the worst bin of every dimension with more than one populated bin, worst
+/// first. A bin counts when it holds at least `min_share` of the samples (and 10 or more),
+/// so a handful of samples cannot name a region.
+std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, Channel channel,
+                                       double min_share = 0.02);
+
+/// One sentence naming the region in words, with its bias and RMSE in kN·m and % of T_ref.
+std::string describe(const RegionError& region, double reference_torque_nm);
+/// The region alone, e.g. "low torque (0.15-0.30 MN·m)", "rising misalignment".
+std::string describe_region(const RegionError& region);
+
+}  // namespace gc
