@@ -18,7 +18,7 @@ std::vector<std::size_t> select(std::span<const std::size_t> rows, const std::ve
 /// Fits on the fold's training rows (warm start) and returns the residual on its held-out rows,
 /// or a reason it could not.
 std::optional<Eigen::MatrixX2d> held_out_residual(const CouplingModel& base, const EffectRegistration& registration,
-                                                  const EffectFit& full, std::span<const Observation> observations,
+                                                  const EffectFit& full, std::span<const RecordedSample> observations,
                                                   const std::vector<std::size_t>& training,
                                                   const std::vector<std::size_t>& held_out,
                                                   const ParallelFor& parallel, int iterations, int& evaluations) {
@@ -35,7 +35,7 @@ std::optional<Eigen::MatrixX2d> held_out_residual(const CouplingModel& base, con
 }  // namespace
 
 CandidateScore score_candidate(const CouplingModel& base, const EffectRegistration& registration,
-                               std::span<const Observation> observations, std::span<const std::size_t> rows,
+                               std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                const Eigen::MatrixX2d& base_residual, const Folds& folds,
                                const ParallelFor& parallel, const CrossValidationSettings& settings) {
   CandidateScore score;

@@ -37,7 +37,7 @@ struct CrossValidationSettings {
 /// `rows` in time order; `base_residual` the base model's residual on them (no parameters fitted,
 /// so it is its own held-out residual).
 CandidateScore score_candidate(const CouplingModel& base, const EffectRegistration& registration,
-                               std::span<const Observation> observations, std::span<const std::size_t> rows,
+                               std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                const Eigen::MatrixX2d& base_residual, const Folds& folds,
                                const ParallelFor& parallel, const CrossValidationSettings& settings);
 

@@ -12,10 +12,10 @@
 namespace gc {
 namespace {
 
-std::vector<std::size_t> time_ordered(std::span<const Observation> observations) {
+std::vector<std::size_t> time_ordered(std::span<const RecordedSample> observations) {
   std::vector<std::size_t> rows = all_rows(observations.size());
   std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) {
-    return observations[a].sample.time_s < observations[b].sample.time_s;
+    return observations[a].input.time_s < observations[b].input.time_s;
   });
   return rows;
 }
@@ -46,7 +46,7 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
   return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
 }
 
-std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const Observation> observations,
+std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
                                             const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
                                             const Folds& folds, const ParallelFor& parallel,
                                             const DiagnosisSettings& settings) {
@@ -73,7 +73,7 @@ bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const D
 
 std::vector<AlikeEffect> alike_effects(const CouplingModel& model, const std::vector<CandidateScore>& ranking,
                                        const Eigen::MatrixX2d& base, const Folds& folds, double base_ms,
-                                       double noise_ms, std::span<const Observation> observations,
+                                       double noise_ms, std::span<const RecordedSample> observations,
                                        const std::vector<std::size_t>& rows, double noise_sigma,
                                        const DiagnosisSettings& settings) {
   std::vector<AlikeEffect> alike;
@@ -99,7 +99,7 @@ Eigen::Vector2d channel_reduction(const Eigen::MatrixX2d& base, const Eigen::Mat
 }
 
 /// One round: residual, noise, signature, ranking, outcome.
-DiagnosisRound search_round(const CouplingModel& model, std::span<const Observation> observations,
+DiagnosisRound search_round(const CouplingModel& model, std::span<const RecordedSample> observations,
                             const std::vector<std::size_t>& rows, const std::vector<std::size_t>& search,
                             const Folds& folds, const ParallelFor& parallel, const DiagnosisSettings& settings) {
   DiagnosisRound round;
@@ -141,7 +141,7 @@ const EffectRegistration& registration_of(const std::string& name) {
 
 }  // namespace
 
-Diagnosis diagnose(const CouplingModel& model, std::span<const Observation> observations,
+Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
   Diagnosis out;
   out.rows = observations.size();

@@ -16,7 +16,7 @@
 
 #include "core/coupling_model.h"
 #include "core/diagnosis/candidate_score.h"
-#include "core/diagnosis/observation.h"
+#include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
 #include "core/diagnosis/residual_signature.h"
 #include "core/diagnosis/separating_experiment.h"
@@ -85,7 +85,7 @@ struct Diagnosis {
 };
 
 /// Throws InvalidInput when the recording has fewer than 4 * folds * blocks_per_fold usable rows.
-Diagnosis diagnose(const CouplingModel& model, std::span<const Observation> observations,
+Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
                    const ParallelFor& parallel = serial_for(), const DiagnosisSettings& settings = {});
 
 }  // namespace gc

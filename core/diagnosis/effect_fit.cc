@@ -19,7 +19,7 @@ struct EffectProblem {
   const CouplingModel& base;
   const EffectRegistration& registration;
   ParameterBox box;
-  std::span<const Observation> observations;
+  std::span<const RecordedSample> observations;
   std::span<const std::size_t> rows;
   const ParallelFor& parallel;
   std::vector<bool> free;
@@ -141,7 +141,7 @@ CouplingModel model_with(const CouplingModel& base, const EffectRegistration& re
 }
 
 std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
-                                    std::span<const Observation> observations,
+                                    std::span<const RecordedSample> observations,
                                     std::span<const std::size_t> rows, const ParallelFor& parallel,
                                     const FitSettings& settings) {
   EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,
@@ -181,7 +181,7 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
 }
 
 std::optional<EffectFit> refit_effect(const CouplingModel& base, const EffectRegistration& registration,
-                                      const EffectFit& start, std::span<const Observation> observations,
+                                      const EffectFit& start, std::span<const RecordedSample> observations,
                                       std::span<const std::size_t> rows, const ParallelFor& parallel,
                                       int iterations, bool with_uncertainty) {
   EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,

@@ -14,7 +14,7 @@
 
 #include "core/coupling_model.h"
 #include "core/diagnosis/bounded_least_squares.h"
-#include "core/diagnosis/observation.h"
+#include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
 #include "core/effects/effect_registry.h"
 
@@ -54,14 +54,14 @@ CouplingModel model_with(const CouplingModel& base, const EffectRegistration& re
 /// Fits the effect to `rows` from several starts and holds unidentifiable parameters. Returns
 /// nullopt when no start can be evaluated (the effect jams every candidate on these rows).
 std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
-                                    std::span<const Observation> observations,
+                                    std::span<const RecordedSample> observations,
                                     std::span<const std::size_t> rows, const ParallelFor& parallel,
                                     const FitSettings& settings);
 
 /// Refits from `start` (held parameters stay held) with at most `iterations` steps: the cheap
 /// fit of a cross-validation fold, or the final fit on all rows after a search on a subsample.
 std::optional<EffectFit> refit_effect(const CouplingModel& base, const EffectRegistration& registration,
-                                      const EffectFit& start, std::span<const Observation> observations,
+                                      const EffectFit& start, std::span<const RecordedSample> observations,
                                       std::span<const std::size_t> rows, const ParallelFor& parallel,
                                       int iterations, bool with_uncertainty);
 

@@ -8,7 +8,7 @@
 
 namespace gc {
 
-ModelResiduals model_residuals(const CouplingModel& model, std::span<const Observation> observations,
+ModelResiduals model_residuals(const CouplingModel& model, std::span<const RecordedSample> observations,
                                std::span<const std::size_t> rows, const ParallelFor& parallel) {
   ModelResiduals out;
   out.residual = Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(rows.size()), 2);
@@ -16,9 +16,9 @@ ModelResiduals model_residuals(const CouplingModel& model, std::span<const Obser
   std::vector<std::pair<std::size_t, std::string>> failures;
   parallel(rows.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const Observation& o = observations[rows[k]];
+      const RecordedSample& o = observations[rows[k]];
       try {
-        const SensorMoments m = model.predict(o.sample).moments;
+        const SensorMoments m = model.predict(o.input).moments;
         out.residual(static_cast<Eigen::Index>(k), 0) = o.measured.y_nm - m.y_nm;
         out.residual(static_cast<Eigen::Index>(k), 1) = o.measured.z_nm - m.z_nm;
       } catch (const ModelError& e) {

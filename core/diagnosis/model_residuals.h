@@ -9,7 +9,7 @@
 #include <Eigen/Dense>
 
 #include "core/coupling_model.h"
-#include "core/diagnosis/observation.h"
+#include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
 
 namespace gc {
@@ -25,7 +25,7 @@ struct ModelResiduals {
 /// Predicts every listed row (any order, possibly concurrently through `parallel`). A row whose
 /// prediction throws ModelError (e.g. the effective misalignment at the jam angle) is reported,
 /// never dropped silently.
-ModelResiduals model_residuals(const CouplingModel& model, std::span<const Observation> observations,
+ModelResiduals model_residuals(const CouplingModel& model, std::span<const RecordedSample> observations,
                                std::span<const std::size_t> rows, const ParallelFor& parallel);
 
 /// 0, 1, ..., count - 1: every row of a recording.

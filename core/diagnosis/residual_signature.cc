@@ -121,7 +121,7 @@ bool ResidualSignature::systematic() const {
   return std::any_of(inputs.begin(), inputs.end(), [](const InputSignature& s) { return s.systematic; });
 }
 
-ResidualSignature residual_signature(std::span<const Observation> observations,
+ResidualSignature residual_signature(std::span<const RecordedSample> observations,
                                      std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual) {
   ResidualSignature out;
@@ -130,7 +130,7 @@ ResidualSignature residual_signature(std::span<const Observation> observations,
     Eigen::VectorXd x(static_cast<Eigen::Index>(rows.size()));
     bool complete = true;
     for (std::size_t k = 0; k < rows.size() && complete; ++k) {
-      const std::optional<double> v = axis.read(observations[rows[k]].sample);
+      const std::optional<double> v = axis.read(observations[rows[k]].input);
       complete = v.has_value();
       if (complete) x(static_cast<Eigen::Index>(k)) = *v;
     }

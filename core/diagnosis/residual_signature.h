@@ -10,7 +10,7 @@
 
 #include <Eigen/Dense>
 
-#include "core/diagnosis/observation.h"
+#include "core/recorded_sample.h"
 
 namespace gc {
 
@@ -40,7 +40,7 @@ struct ResidualSignature {
 
 /// `residual` row k belongs to observations[rows[k]]. Bins: 8 of equal count (continuous inputs), 8 of 45 deg
 /// (direction), one per loading direction.
-ResidualSignature residual_signature(std::span<const Observation> observations,
+ResidualSignature residual_signature(std::span<const RecordedSample> observations,
                                      std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual);
 

@@ -13,10 +13,10 @@
 namespace gc {
 namespace {
 
-double median_of(std::span<const Observation> observations, std::span<const std::size_t> rows,
+double median_of(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                  double (*read)(const MeasurementSample&)) {
   std::vector<double> v;
-  for (std::size_t r : rows) v.push_back(read(observations[r].sample));
+  for (std::size_t r : rows) v.push_back(read(observations[r].input));
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
   return v[v.size() / 2];
 }
@@ -55,15 +55,15 @@ std::vector<Sweep> sweeps(const CouplingModel& model, double max_torque) {
 }  // namespace
 
 SeparatingExperiment separating_experiment(const CouplingModel& a, const CouplingModel& b,
-                                           std::span<const Observation> observations,
+                                           std::span<const RecordedSample> observations,
                                            std::span<const std::size_t> rows, double noise_sigma_nm) {
   SeparatingExperiment best;
   if (rows.empty()) return best;
-  MeasurementSample reference = observations[rows[0]].sample;
+  MeasurementSample reference = observations[rows[0]].input;
   reference.torque_nm = median_of(observations, rows, [](const MeasurementSample& s) { return s.torque_nm; });
   reference.misalignment_rad = median_of(observations, rows, [](const MeasurementSample& s) { return s.misalignment_rad; });
   double max_torque = 0.0;
-  for (std::size_t r : rows) max_torque = std::max(max_torque, observations[r].sample.torque_nm);
+  for (std::size_t r : rows) max_torque = std::max(max_torque, observations[r].input.torque_nm);
   const std::optional<Eigen::Vector2d> at_reference = difference(a, b, reference);
   const Eigen::Vector2d offset = at_reference ? *at_reference : Eigen::Vector2d::Zero();
   std::string unit;

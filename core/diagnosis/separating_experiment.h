@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/coupling_model.h"
-#include "core/diagnosis/observation.h"
+#include "core/recorded_sample.h"
 
 namespace gc {
 
@@ -23,7 +23,7 @@ struct SeparatingExperiment {
 /// median torque and misalignment: torque 0.1 to 1.5 times the recorded maximum, misalignment 0
 /// to 90 % of the jam angle, every direction, both loading directions.
 SeparatingExperiment separating_experiment(const CouplingModel& a, const CouplingModel& b,
-                                           std::span<const Observation> observations,
+                                           std::span<const RecordedSample> observations,
                                            std::span<const std::size_t> rows, double noise_sigma_nm);
 
 }  // namespace gc

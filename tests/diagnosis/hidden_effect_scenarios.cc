@@ -20,7 +20,7 @@ ParameterValues draw_parameters(const ParameterRanges& ranges, std::mt19937_64& 
   return values;
 }
 
-Diagnosis diagnose_on_threads(const CouplingModel& model, const std::vector<Observation>& observations) {
+Diagnosis diagnose_on_threads(const CouplingModel& model, const std::vector<RecordedSample>& observations) {
   return diagnose(model, observations, thread_parallel_for(2));
 }
 

@@ -25,7 +25,7 @@ using ParameterRanges = std::map<std::string, std::pair<double, double>>;
 ParameterValues draw_parameters(const ParameterRanges& ranges, std::mt19937_64& random);
 
 /// Diagnosis on both cores of the test machine.
-Diagnosis diagnose_on_threads(const CouplingModel& model, const std::vector<Observation>& observations);
+Diagnosis diagnose_on_threads(const CouplingModel& model, const std::vector<RecordedSample>& observations);
 
 /// The held-out RMSE reduction of the round's first-ranked candidate, 0 without a ranking.
 double best_reduction(const DiagnosisRound& round);

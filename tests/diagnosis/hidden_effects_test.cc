@@ -8,10 +8,12 @@
 #include <functional>
 #include <set>
 
+#include "core/coupling_geometry.h"
 #include "core/diagnosis/diagnose.h"
+#include "core/synthesis/load_sequence.h"
+#include "core/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
-#include "tests/diagnosis/load_sequences.h"
 
 namespace gc {
 namespace {
@@ -22,16 +24,38 @@ using testing::deg;
 // paper's test cell order.
 constexpr double kNoiseNm = 2000.0;
 
-// Misalignment sweeps 0 -> 0.4 deg -> 0 (rising and falling) at three torques and four
-// directions (Figures 10-11): 1920 samples.
-std::vector<MeasurementSample> misalignment_sweeps() {
-  return testing::misalignment_sweeps({0.5e6, 1.0e6, 1.5e6}, {deg(10), deg(100), deg(200), deg(290)}, deg(0.4), 80);
+// One of the paper's load sequences (core/synthesis/load_sequence.h) for the upwind coupling,
+// 960 samples 0.1 s apart, run at two directions so that the recording sees four (beta and
+// beta + pi each time): 1920 samples.
+std::vector<MeasurementSample> paper_sequence(LoadSequenceKind kind) {
+  LoadSequenceOptions options;
+  options.kind = kind;
+  options.samples = 960;
+  options.sample_period_s = 0.1;
+  options.jam_angle_rad = CouplingGeometry(testing::nrel_upwind()).jam_angle().angle_rad;
+  options.direction_rad = deg(10);
+  std::vector<MeasurementSample> samples = load_sequence(options);
+  options.direction_rad = deg(100);
+  for (MeasurementSample s : load_sequence(options)) {
+    s.time_s += options.samples * options.sample_period_s;
+    samples.push_back(s);
+  }
+  return samples;
 }
 
-// Torque sweeps 0.1 -> 2 MN·m -> 0.1 at two misalignments and three directions (Figures 12-13):
-// most samples below the 1.36 MN·m restoring torque of eqs 49-53, where eccentricity acts.
-std::vector<MeasurementSample> torque_sweeps() {
-  return testing::torque_sweeps({deg(0.1), deg(0.3)}, {deg(10), deg(130), deg(250)}, 0.1e6, 2.0e6, 160);
+// Applied-moment sweeps 0 -> +0.6 xi -> -0.6 xi -> 0 at 0.3, 0.75 and 1.5 MN·m (Figures 10-11).
+std::vector<MeasurementSample> misalignment_sweeps() { return paper_sequence(LoadSequenceKind::moment_sweep); }
+
+// Torque sweeps 0.15 -> 1.43 MN·m and back at +-0.3 and +-0.6 xi (Figures 12-13): mostly below
+// the 1.36 MN·m restoring torque of eqs 49-53, where eccentricity acts.
+std::vector<MeasurementSample> torque_sweeps() { return paper_sequence(LoadSequenceKind::torque_sweep); }
+
+// The recording `truth` gives along `inputs`, with kNoiseNm of noise; every sample accepted.
+std::vector<RecordedSample> record(const CouplingModel& truth, const std::vector<MeasurementSample>& inputs,
+                                   std::uint64_t seed) {
+  SynthesizedRecording recording = synthesize(truth, inputs, {kNoiseNm, seed});
+  EXPECT_TRUE(recording.rejected.empty()) << recording.rejected.front().reason;
+  return std::move(recording.samples);
 }
 
 struct Scenario {
@@ -55,7 +79,7 @@ TEST_P(HiddenEffect, IsRankedFirstAndCutsTheHeldOutErrorByHalfOrToTheNoise) {
   const CouplingModel truth(testing::nrel_upwind(), truth_effects);
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects(scenario.effect));
   ASSERT_FALSE(model.has_effect(scenario.effect));
-  const auto observations = testing::synthesize(truth, scenario.sequence(), kNoiseNm, random());
+  const auto observations = record(truth, scenario.sequence(), random());
 
   const Diagnosis d = testing::diagnose_on_threads(model, observations);
   ASSERT_FALSE(d.rounds.empty());
@@ -118,7 +142,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Diagnosis, ClaimsNothingWhenTheModelIsRightAndOnlyNoiseIsLeft) {
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
   for (std::uint64_t seed : {1u, 2u}) {
-    const auto observations = testing::synthesize(model, misalignment_sweeps(), kNoiseNm, seed);
+    const auto observations = record(model, misalignment_sweeps(), seed);
     const Diagnosis d = testing::diagnose_on_threads(model, observations);
     SCOPED_TRACE(d.summary);
   RecordProperty("verdict", d.summary);
@@ -132,13 +156,13 @@ TEST(Diagnosis, ClaimsNothingWhenTheModelIsRightAndOnlyNoiseIsLeft) {
 
 // A moment the library has no effect for: a speed-dependent moment on M_sz' (e.g. an unbalance
 // or windage term), zero at the calibration speed of 12 rpm, with the speed varying on its own
-// period of 37 s, unrelated to the load sequence.
+// period of 3.7 s, unrelated to the load sequence.
 TEST(Diagnosis, ClaimsNoEffectForAMomentOutsideTheLibraryAndItsSignaturePointsAtSpeed) {
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
   std::vector<MeasurementSample> samples = misalignment_sweeps();
-  for (MeasurementSample& s : samples) s.speed_rpm = 12.0 + 3.0 * std::sin(2.0 * M_PI * s.time_s / 37.0);
-  std::vector<Observation> observations = testing::synthesize(model, samples, kNoiseNm, 5);
-  for (Observation& o : observations) o.measured.z_nm += 3000.0 * (*o.sample.speed_rpm - 12.0);
+  for (MeasurementSample& s : samples) s.speed_rpm = 12.0 + 3.0 * std::sin(2.0 * M_PI * s.time_s / 3.7);
+  std::vector<RecordedSample> observations = record(model, samples, 5);
+  for (RecordedSample& o : observations) o.measured.z_nm += 3000.0 * (*o.input.speed_rpm - 12.0);
 
   const Diagnosis d = testing::diagnose_on_threads(model, observations);
   SCOPED_TRACE(d.summary);
@@ -161,7 +185,7 @@ TEST(Diagnosis, FindsTwoHiddenEffectsOneAfterTheOther) {
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
   const CouplingModel truth = model.with_effect(make_effect("hysteresis", {{"lag_rad", 0.0008}}))
                                   .with_effect(make_effect("channel_gain_offset", {{"gain_z", 0.06}}));
-  const auto observations = testing::synthesize(truth, misalignment_sweeps(), kNoiseNm, 11);
+  const auto observations = record(truth, misalignment_sweeps(), 11);
   const Diagnosis d = testing::diagnose_on_threads(model, observations);
   SCOPED_TRACE(d.summary);
   RecordProperty("verdict", d.summary);
