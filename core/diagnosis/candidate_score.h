@@ -30,7 +30,7 @@ struct CandidateScore {
 struct CrossValidationSettings {
   int folds = 5;
   int blocks_per_fold = 20;  ///< 100 blocks of 15 search rows: enough for the paired test
-  int fold_iterations = 4;  ///< Levenberg-Marquardt steps per fold, warm-started from the full fit
+  int fold_iterations = 3;  ///< Levenberg-Marquardt steps per fold, warm-started from the full fit
   FitSettings fit;
 };
 

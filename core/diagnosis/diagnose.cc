@@ -99,23 +99,24 @@ Eigen::Vector2d channel_reduction(const Eigen::MatrixX2d& base, const Eigen::Mat
 }
 
 /// One round: residual, noise, signature, ranking, outcome.
-DiagnosisRound search_round(const CouplingModel& model, std::span<const RecordedSample> observations,
-                            const std::vector<std::size_t>& rows, const std::vector<std::size_t>& search,
-                            const Folds& folds, const ParallelFor& parallel, const DiagnosisSettings& settings) {
+/// `residual`: the model's on `rows`.
+DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
+                            std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                            const std::vector<std::size_t>& search, const Folds& folds,
+                            const ParallelFor& parallel, const DiagnosisSettings& settings) {
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
-  const ModelResiduals all = model_residuals(model, observations, rows, parallel);
-  round.noise_sigma_nm = successive_difference_noise(all.residual);
+  round.noise_sigma_nm = successive_difference_noise(residual);
   const double noise_ms = round.noise_sigma_nm.squaredNorm() / 2.0;
-  const double all_ms = pooled_mean_square(all.residual);
+  const double all_ms = pooled_mean_square(residual);
   round.noise_rmse_nm = std::sqrt(noise_ms);
   round.rmse_nm = std::sqrt(all_ms);
-  round.signature = residual_signature(observations, rows, all.residual);
+  round.signature = residual_signature(observations, rows, residual);
   // Excess over the noise beyond 3.7 standard errors of a mean square of 2n Gaussian values
   // (sqrt(2 / 2n)) and of the median-based noise estimate (about sqrt(5.4 / n)).
   const double n = static_cast<double>(rows.size());
   round.systematic = all_ms > noise_ms * (1.0 + 3.7 * std::sqrt(1.0 / n + 5.4 / n)) || round.signature.systematic();
-  const Eigen::MatrixX2d base = select_rows(all.residual, rows, search);
+  const Eigen::MatrixX2d base = select_rows(residual, rows, search);
   const double base_ms = pooled_mean_square(base);
   round.search_base_rmse_nm = std::sqrt(base_ms);
   if (!round.systematic) {
@@ -145,11 +146,14 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
   Diagnosis out;
   out.rows = observations.size();
-  std::vector<std::size_t> rows = time_ordered(observations);
-  const ModelResiduals first = model_residuals(model, observations, rows, parallel);
+  const std::vector<std::size_t> ordered = time_ordered(observations);
+  const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
   out.excluded_rows = first.failed_rows;
   out.exclusion_reason = first.first_failure;
+  std::vector<std::size_t> rows = ordered;
   std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
+  // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
+  Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
     throw InvalidInput("recording.rows", static_cast<double>(rows.size()),
@@ -157,16 +161,23 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   }
   const std::vector<std::size_t> search = evenly_spaced(rows, settings.search_rows);
   out.search_rows = search.size();
+  const std::vector<std::size_t> refit = evenly_spaced(rows, settings.refit_rows);
+  out.refit_rows = refit.size();
   const Folds folds = blocked_folds(search.size(), settings.cross_validation.folds,
                                     settings.cross_validation.blocks_per_fold);
   CouplingModel current = model;
   for (int r = 0; r < settings.max_rounds; ++r) {
-    DiagnosisRound round = search_round(current, observations, rows, search, folds, parallel, settings);
+    DiagnosisRound round = search_round(current, residual, observations, rows, search, folds, parallel, settings);
     if (round.outcome == RoundOutcome::effect_found || round.outcome == RoundOutcome::indistinguishable) {
       const CandidateScore& best = round.ranking.front();
       const EffectRegistration& registration = registration_of(best.info->name);
-      round.claimed = refit_effect(current, registration, *best.fit, observations, rows, parallel,
+      round.claimed = refit_effect(current, registration, *best.fit, observations, refit, parallel,
                                    settings.final_iterations, true);
+    }
+    std::optional<ModelResiduals> next;
+    if (round.claimed) {
+      next = model_residuals(current.with_effect(round.claimed->effect), observations, rows, parallel);
+      if (!next->failed_rows.empty()) round.claimed.reset();
     }
     // A claimed effect whose refit cannot predict every row is reported with its search fit,
     // and the search stops there rather than lose rows.
@@ -178,6 +189,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     round.verdict = round_verdict(static_cast<int>(out.rounds.size()) + 1, round);
     out.summary += (out.summary.empty() ? "" : "\n") + round.verdict;
     if (continues) {
+      residual = next->residual;
       out.added.push_back(round.claimed->effect);
       current = current.with_effect(round.claimed->effect);
     }

@@ -51,9 +51,13 @@ struct EffectProblem {
   LeastSquaresResult solve(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
     return bounded_least_squares(over_free(), compress(x), options);
   }
-  /// Levenberg-Marquardt, then the compass-search polish, then the Jacobian where it ended.
+  /// Levenberg-Marquardt, then the polish.
   LeastSquaresResult solve_and_polish(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
-    LeastSquaresResult result = pattern_search(over_free(), solve(x, options), 0.02, 5e-4, 40);
+    return polish(solve(x, options), options);
+  }
+  /// The compass-search polish, then the Jacobian where it ended.
+  LeastSquaresResult polish(LeastSquaresResult start, const LeastSquaresOptions& options) const {
+    LeastSquaresResult result = pattern_search(over_free(), std::move(start), 0.02, 5e-4, 40);
     result.jacobian = difference_jacobian(over_free(), result.x, result.residual, options.difference_step,
                                           result.evaluations);
     return result;
@@ -104,6 +108,7 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
   const ParameterValues values = problem.box.to_values(fit.unit_values);
   fit.effect = problem.registration.make(values);
   fit.sum_of_squares = result.cost;
+  fit.residual = Eigen::Map<const Eigen::MatrixX2d>(result.residual.data(), result.residual.size() / 2, 2);
   fit.rows = problem.rows.size();
   fit.evaluations = evaluations;
   const Eigen::Index m = result.residual.size(), p = result.x.size();
@@ -155,10 +160,13 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
   std::optional<LeastSquaresResult> best;
   for (const Eigen::VectorXd& start : starts) {
     problem.full = start;
-    LeastSquaresResult r = problem.solve_and_polish(start, settings.least_squares);
+    LeastSquaresResult r = problem.solve(start, settings.least_squares);
     evaluations += r.evaluations;
-    if (!best || r.cost < best->cost) { best = r; problem.full = problem.expand(r.x); }
+    if (!best || r.cost < best->cost) best = r;
   }
+  const int before_polish = best->evaluations;
+  best = problem.polish(*best, settings.least_squares);  // the best start only
+  evaluations += best->evaluations - before_polish;
   problem.full = problem.expand(best->x);
   // Hold what the data cannot determine, one parameter at a time, refitting the rest.
   for (int round = 0; round < problem.box.size(); ++round) {
