@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Times `gearcoupling batch` over a generated CSV of load cases (default 1e6 rows) on the
-# bundled upwind coupling: three runs, wall time and peak memory of each, then the median.
+# bundled upwind coupling: three runs, wall time, CPU time and peak memory of each, then the
+# median wall time. CPU time shows what the runs cost when other work shares the cores.
 #
 #   bench/batch_throughput.sh [GEARCOUPLING] [ROWS] [JOBS]
 #   (defaults: build/clients/cli/gearcoupling, 1000000, every hardware thread)
@@ -25,10 +26,11 @@ echo "input: $rows rows, $(du -h "$work/cases.csv" | cut -f1); jobs: $jobs; $(np
 
 times=()
 for run in 1 2 3; do
-  /usr/bin/time -f "%e %M" -o "$work/time" \
+  /usr/bin/time -f "%e %M %U %S" -o "$work/time" \
     "$gearcoupling" batch --in "$work/cases.csv" --out "$work/results.csv" -j "$jobs"
-  read -r seconds max_rss_kb < "$work/time"
-  echo "run $run: ${seconds} s wall, peak RSS ${max_rss_kb} KiB, $(($(wc -l < "$work/results.csv") - 1)) result rows"
+  read -r seconds max_rss_kb user_s system_s < "$work/time"
+  echo "run $run: ${seconds} s wall, ${user_s} s user + ${system_s} s system CPU," \
+    "peak RSS ${max_rss_kb} KiB, $(($(wc -l < "$work/results.csv") - 1)) result rows"
   times+=("$seconds")
 done
 median="$(printf '%s\n' "${times[@]}" | sort -g | sed -n 2p)"

@@ -51,9 +51,9 @@ CouplingGeometry load_coupling_geometry(const std::filesystem::path& file) {
     return CouplingGeometry(std::move(definition));
   } catch (const InvalidInput& error) {
     // The core names the field; the user also needs the file it came from.
-    throw InvalidInput(error.field(), message_after_field(error) + " (in " +
-                                          file.filename().string() + file_units_note(error.field()) +
-                                          ")");
+    const std::string where =
+        " (in " + file.filename().string() + file_units_note(error.field()) + ")";
+    throw InvalidInput(error.field(), message_after_field(error) + where);
   }
 }
 

@@ -39,7 +39,7 @@ void add_tooth(const ToothContact& contact, const Eigen::MatrixXd& slice_loads, 
   m->set_contact_length_m(tooth.contact_length_m);
   m->set_zone_begin_m(tooth.zone_begin_m);
   m->set_zone_end_m(tooth.zone_end_m);
-  const int slices = static_cast<int>(contact.slice_weights.size()) - 1;
+  const int slices = contact.slices;
   for (int column = 0; column <= slices; ++column) {
     m->add_slice_loads_n(slice_loads(j, column));
     m->add_slice_positions_m(contact.slice_position_m(j, column - slices / 2));
@@ -76,7 +76,7 @@ v1::ToothContactResult to_message(std::string_view coupling, const OperatingPoin
   m.set_max_tooth_load_n(contact.max_tooth_load_n);
   m.set_sum_tooth_loads_n(contact.sum_tooth_loads_n);
   m.set_edge_loaded(contact.edge_loaded);
-  for (double weight : contact.slice_weights) m.add_slice_weights(weight);
+  for (double weight : contact.slice_weights()) m.add_slice_weights(weight);
   *m.mutable_max_stress() = to_message(contact.max_stress);
   const Eigen::MatrixXd slice_loads = contact.slice_loads();
   for (int j = 0; j < static_cast<int>(contact.teeth.size()); ++j) {

@@ -59,6 +59,20 @@ v1::RegionRecord region_message(const RegionError& region, double reference_torq
   return record;
 }
 
+v1::ErrorSignatureRecord signature_message(const ErrorSignature& signature) {
+  v1::ErrorSignatureRecord record;
+  record.set_channel(std::string(to_string(signature.channel)));
+  record.set_noise_estimate_nm(signature.noise_estimate_nm);
+  record.set_systematic_rms_nm(signature.systematic_rms_nm);
+  record.set_at_noise_level(signature.at_noise_level);
+  for (std::size_t d = 0; d < kBinDimensions.size(); ++d) {
+    auto* share = record.add_shares();
+    share->set_dimension(std::string(to_string(kBinDimensions[d])));
+    share->set_explained_share(signature.explained_share[d]);
+  }
+  return record;
+}
+
 }  // namespace
 
 v1::ErrorMetricsRecord to_message(const ErrorMetrics& metrics, double reference_torque_nm) {
@@ -98,18 +112,18 @@ v1::ModelValidation to_message(std::string_view model_name,
     out->set_first_message(rejection.first_message);
   }
   *record.mutable_overall() = to_message(validation.overall(), reference);
-  std::vector<RegionError> regions;
   for (Channel channel : kChannels) {
-    for (const RegionError& region : worst_regions(validation, channel)) regions.push_back(region);
+    for (const RegionError& region : worst_regions(validation, channel)) {
+      *record.add_worst_regions() = region_message(region, reference);
+    }
   }
-  std::stable_sort(regions.begin(), regions.end(), [](const auto& a, const auto& b) {
-    return a.contrast > b.contrast;
-  });
-  for (const RegionError& region : regions) *record.add_worst_regions() = region_message(region, reference);
   for (const ErrorBinning& binning : validation.binnings()) {
     *record.add_binnings() = binning_message(binning, reference);
   }
   *record.mutable_error_map() = map_message(validation.map(), reference);
+  for (Channel channel : kChannels) {
+    *record.add_signatures() = signature_message(error_signature(validation, channel));
+  }
   return record;
 }
 

@@ -18,7 +18,7 @@ std::string field(const char* name) { return std::string("coupling.") + name; }
 void require_consistent(const char* name, double value, double expected, const char* rule) {
   if (std::abs(value - expected) > kConsistency * std::abs(expected)) {
     throw InvalidInput(field(name), value,
-                       std::string("within 0.5 % of ") + rule + " = " + std::to_string(expected));
+                       std::string("within 0.5 % of ") + rule + " = " + format_number(expected));
   }
 }
 
@@ -36,12 +36,12 @@ void validate_definition(const CouplingDefinition& d) {
   require_positive(field("outer_diameter_m"), d.outer_diameter_m);
   if (d.outer_diameter_m <= d.pitch_diameter_m) {
     throw InvalidInput(field("outer_diameter_m"), d.outer_diameter_m,
-                       "> pitch diameter " + std::to_string(d.pitch_diameter_m) + " m");
+                       "> pitch diameter " + format_number(d.pitch_diameter_m) + " m");
   }
   require_positive(field("root_diameter_m"), d.root_diameter_m);
   if (d.root_diameter_m >= d.pitch_diameter_m) {
     throw InvalidInput(field("root_diameter_m"), d.root_diameter_m,
-                       "< pitch diameter " + std::to_string(d.pitch_diameter_m) + " m");
+                       "< pitch diameter " + format_number(d.pitch_diameter_m) + " m");
   }
   require_non_negative(field("center_distance_m"), d.center_distance_m);
   require_positive(field("backlash_m"), d.backlash_m);
@@ -50,7 +50,7 @@ void validate_definition(const CouplingDefinition& d) {
   if (d.tooth_thickness_m + d.backlash_m >= circular_pitch) {
     throw InvalidInput(field("tooth_thickness_m"), d.tooth_thickness_m,
                        "(0, circular pitch - backlash) = (0, " +
-                           std::to_string(circular_pitch - d.backlash_m) +
+                           format_number(circular_pitch - d.backlash_m) +
                            ") m: the sleeve tooth t_c2 = pi/P - t_c1 - b must be positive");
   }
   require_non_negative(field("tool_tip_radius_m"), d.tool_tip_radius_m);
@@ -74,7 +74,7 @@ void validate_definition(const CouplingDefinition& d) {
   require_in_range(field("tilt_rad"), d.tilt_rad, -1.5708, 1.5708);
   if (d.sleeve_root_diameter_m && *d.sleeve_root_diameter_m <= d.outer_diameter_m) {
     throw InvalidInput(field("sleeve_root_diameter_m"), *d.sleeve_root_diameter_m,
-                       "> hub outer diameter " + std::to_string(d.outer_diameter_m) + " m");
+                       "> hub outer diameter " + format_number(d.outer_diameter_m) + " m");
   }
   require_positive(field("allowables.contact_stress_pa"), d.allowables.contact_stress_pa);
   require_positive(field("allowables.bending_stress_pa"), d.allowables.bending_stress_pa);
@@ -96,7 +96,7 @@ CouplingGeometry::CouplingGeometry(CouplingDefinition definition)
                                            d.facewidth_m, d.lead_modification_m);
   if (crown_radius_m_ <= 0.5 * d.facewidth_m) {
     throw InvalidInput(field("crown_radius_m"), crown_radius_m_,
-                       "> F/2 = " + std::to_string(0.5 * d.facewidth_m) + " m");
+                       "> F/2 = " + format_number(0.5 * d.facewidth_m) + " m");
   }
   root_crown_radius_m_ =
       crown_radius_m_ * std::cos(d.design_misalignment_rad) * std::sin(d.pressure_angle_rad);  // 12

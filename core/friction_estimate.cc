@@ -31,6 +31,10 @@ FrictionEstimate estimate_friction(const CouplingGeometry& coupling,
   // Eq 4 as read (eq 2 with eq 37's sign of mu).
   estimate.friction_coefficient =
       estimate.moment_z_dd_nm / measurement.torque_nm - std::tan(measurement.misalignment_rad);
+  if (!std::isfinite(estimate.friction_coefficient)) {
+    throw InvalidInput("measurement.torque_nm", measurement.torque_nm,
+                       "a torque for which M_tz'' / T (eq 4) is finite");
+  }
   return estimate;
 }
 

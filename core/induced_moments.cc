@@ -7,10 +7,14 @@
 
 namespace gc {
 
-double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double friction) {
+double axial_load_factor(double misalignment_rad, double friction) {
   const double c = std::cos(misalignment_rad);
   const double s = std::sin(misalignment_rad);
-  return tooth_load_n * (friction * c + s) / (c - friction * s);  // eq 37
+  return (friction * c + s) / (c - friction * s);  // eq 37
+}
+
+double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double friction) {
+  return tooth_load_n * axial_load_factor(misalignment_rad, friction);
 }
 
 double self_weight_moment_nm(const CouplingGeometry& coupling) {
@@ -26,7 +30,7 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
   const double q_n = contact.load_sharing.q * n;
   const double alpha = contact.offset_alpha_rad;
   const double radius = coupling.pitch_radius_m();
-  const double zeta = point.misalignment_rad;
+  const double axial_factor = axial_load_factor(point.misalignment_rad, point.friction_coefficient);
   const double max_offset = contact.max_contact_offset_m;  // R_F sin(zeta), eq 15
 
   // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
@@ -38,7 +42,7 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
     const double projection = std::cos(tooth.angle_rad);                        // cos(2 pi j/N + a)
     const double offset = max_offset * std::cos(2.0 * M_PI * j / q_n + alpha);  // f_d, eq 40
     const double arm = std::sqrt(radius * radius - offset * offset);            // R_d, eq 39
-    const double axial = axial_tooth_load_n(tooth.load_n, zeta, point.friction_coefficient);
+    const double axial = tooth.load_n * axial_factor;                           // W_d, eq 37
     sum_z += projection * axial * arm;          // M_dz'' = W_d R_d, eq 38
     sum_y += projection * tooth.load_n * offset;  // M_dy'' = P_d f_d, eq 41
   }

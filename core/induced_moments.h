@@ -22,6 +22,9 @@ struct InducedMoments {
   int teeth_summed = 0;           ///< 4 (int(qN/4) + 1): the symmetric sums of eqs 42-43
 };
 
+/// Eq 37's ratio W_d / P_d = (mu cos zeta + sin zeta) / (cos zeta - mu sin zeta) [-].
+double axial_load_factor(double misalignment_rad, double friction);
+
 /// Axial tooth load W_d = P_d (mu cos zeta + sin zeta) / (cos zeta - mu sin zeta) [N], eq 37.
 double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double friction);
 

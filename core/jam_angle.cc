@@ -18,7 +18,7 @@ void validate(const JamGeometry& g) {
   require_in_range("coupling.pressure_angle_rad", g.pressure_angle_rad, 1e-3, M_PI / 4);
   if (!std::isfinite(g.crown_radius_m) || g.crown_radius_m <= 0.5 * g.facewidth_m) {
     throw InvalidInput("coupling.crown_radius_m", g.crown_radius_m,
-                       "a finite value > F/2 = " + std::to_string(0.5 * g.facewidth_m) + " m");
+                       "a finite value > F/2 = " + format_number(0.5 * g.facewidth_m) + " m");
   }
 }
 

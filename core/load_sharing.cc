@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "core/model_error.h"
@@ -53,10 +54,11 @@ LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_
     q = next;
     r = residual(q);
   }
-  throw NotConverged("load sharing (eqs 20-22) did not reach tolerance " +
-                     std::to_string(options.tolerance) + " in " +
-                     std::to_string(options.max_iterations) + " iterations; last q = " +
-                     std::to_string(q) + ", residual = " + std::to_string(r));
+  std::ostringstream message;
+  message.precision(6);
+  message << "load sharing (eqs 20-22) did not reach tolerance " << options.tolerance << " in "
+          << options.max_iterations << " iterations; last q = " << q << ", residual = " << r;
+  throw NotConverged(message.str());
 }
 
 }  // namespace gc

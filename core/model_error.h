@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace gc {
 
@@ -33,13 +34,16 @@ class NotConverged : public ModelError {
   using ModelError::ModelError;
 };
 
+/// A number for an error message: 6 significant digits, no trailing zeros ("0.00064").
+std::string format_number(double value);
+
 /// Throws InvalidInput unless `value` is finite and lo <= value <= hi (bounds inclusive).
-void require_in_range(const std::string& field, double value, double lo, double hi);
+void require_in_range(std::string_view field, double value, double lo, double hi);
 /// Throws InvalidInput unless `value` is finite and strictly positive.
-void require_positive(const std::string& field, double value);
+void require_positive(std::string_view field, double value);
 /// Throws InvalidInput unless `value` is finite and not negative.
-void require_non_negative(const std::string& field, double value);
+void require_non_negative(std::string_view field, double value);
 /// Throws InvalidInput unless `value` is finite.
-void require_finite(const std::string& field, double value);
+void require_finite(std::string_view field, double value);
 
 }  // namespace gc

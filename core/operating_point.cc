@@ -8,8 +8,15 @@
 
 namespace gc {
 
+namespace {
+constexpr double kMaxTorqueNm = 1e12;
+}  // namespace
+
 void validate_operating_point(const CouplingGeometry& coupling, const OperatingPoint& point) {
-  require_positive("operating_point.torque_nm", point.torque_nm);
+  // The upper bound keeps every product of eqs 7-47 finite; no coupling transmits 1e12 N·m.
+  if (!(point.torque_nm > 0.0 && point.torque_nm <= kMaxTorqueNm)) {
+    throw InvalidInput("operating_point.torque_nm", point.torque_nm, "(0, 1e12] N·m");
+  }
   require_finite("operating_point.direction_rad", point.direction_rad);
   require_in_range("operating_point.friction_coefficient", point.friction_coefficient, 0.0, 1.0);
   const JamAngle& jam = coupling.jam_angle();

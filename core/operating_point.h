@@ -7,14 +7,14 @@ class CouplingGeometry;
 
 /// One load case. Validated against a coupling by validate_operating_point().
 struct OperatingPoint {
-  double torque_nm = 0.0;             ///< T, transmitted torque [N·m], > 0
+  double torque_nm = 0.0;             ///< T, transmitted torque [N·m], in (0, 1e12]
   double misalignment_rad = 0.0;      ///< zeta, angular misalignment [rad], 0 <= zeta < jam angle
   double direction_rad = 0.0;         ///< beta, direction of the misalignment axis [rad]
   double friction_coefficient = 0.0;  ///< mu, tooth sliding friction [-], 0 <= mu <= 1
 };
 
 /// Throws InvalidInput naming the field ("operating_point.torque_nm", ...) unless `point` is a
-/// load case the model covers for `coupling`: finite values, T > 0, 0 <= zeta < jam angle,
+/// load case the model covers for `coupling`: finite values, 0 < T <= 1e12 N·m, 0 <= zeta < jam angle,
 /// 0 <= mu <= 1 and mu tan(zeta) < 1 (eq 37's denominator stays positive).
 void validate_operating_point(const CouplingGeometry& coupling, const OperatingPoint& point);
 

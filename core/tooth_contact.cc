@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "core/coupling_geometry.h"
 #include "core/model_error.h"
@@ -14,6 +15,7 @@ void validate_options(const ContactOptions& options) {
     throw InvalidInput("options.slices", options.slices, "an even number in [2, 1000]");
   }
   require_in_range("options.spacing_error_m", options.spacing_error_m, 0.0, 1e-3);
+  require_in_range("options.min_load_fraction", options.min_load_fraction, 0.0, 1.0);
 }
 
 // Eq 11 with eq 12's R_c: maximum tooth separation, at a turning angle of 90 deg [m].
@@ -36,6 +38,20 @@ double contact_length_m(double crown_radius_m, double deformation_m) {
   const double depth = std::min(deformation_m, crown_radius_m);
   return 2.0 * std::sqrt(crown_radius_m * crown_radius_m -
                          (crown_radius_m - depth) * (crown_radius_m - depth));
+}
+
+// Eq 22 is a fitted curve; far below its range (z_e / z_o -> 0) eq 9 with that q no longer
+// carries the transmitted load. Say so rather than return loads that do not add up to P_t.
+void require_load_carried(const ToothContact& c, const OperatingPoint& point, double minimum) {
+  const double carried = c.sum_tooth_loads_n / c.total_normal_load_n;
+  if (carried >= minimum) return;
+  std::ostringstream allowed;
+  allowed.precision(3);
+  allowed << "a torque at which eq 9's tooth loads carry at least " << 100 * minimum
+          << " % of P_t at this misalignment; they carry " << 100 * carried
+          << " % (z_e/z_o = " << c.load_sharing.ze_over_zo
+          << ", light torque near the jam angle is outside eq 22's range)";
+  throw InvalidInput("operating_point.torque_nm", point.torque_nm, allowed.str());
 }
 
 }  // namespace
@@ -92,24 +108,28 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
     c.sum_tooth_loads_n += tooth.load_n;
   }
 
-  const int slices = options.slices;
-  c.slice_weights.resize(slices + 1);
-  for (int l = -slices / 2; l <= slices / 2; ++l) {
-    c.slice_weights[l + slices / 2] = std::cos(M_PI * l / slices);                  // eq 14
-  }
+  require_load_carried(c, point, options.min_load_fraction);
+  c.slices = options.slices;
   const ToothLoad& governing = c.teeth[c.max_load_tooth];
   c.max_stress = tooth_stress(coupling, governing.load_n, governing.contact_length_m);
   return c;
 }
 
+Eigen::VectorXd ToothContact::slice_weights() const {
+  Eigen::VectorXd weights(slices + 1);
+  for (int l = -slices / 2; l <= slices / 2; ++l) {
+    weights[l + slices / 2] = std::cos(M_PI * l / slices);  // eq 14
+  }
+  return weights;
+}
+
 Eigen::MatrixXd ToothContact::slice_loads() const {
   Eigen::VectorXd loads(static_cast<Eigen::Index>(teeth.size()));
   for (std::size_t j = 0; j < teeth.size(); ++j) loads[static_cast<Eigen::Index>(j)] = teeth[j].load_n;
-  return loads * slice_weights.transpose();
+  return loads * slice_weights().transpose();
 }
 
 double ToothContact::slice_position_m(int tooth, int slice) const {
-  const int slices = static_cast<int>(slice_weights.size()) - 1;
   const ToothLoad& t = teeth.at(static_cast<std::size_t>(tooth));
   return t.contact_offset_m + static_cast<double>(slice) / slices * t.contact_length_m;
 }

@@ -25,6 +25,10 @@ struct ContactOptions {
   /// paper's model (equally spaced teeth, Section 4); the spacing_errors effect sets it
   /// (Section 6.4, docs/effects.md).
   double spacing_error_m = 0.0;
+  /// Least share of P_t the eq 9 tooth loads must carry [-]. Below z_e/z_o of about 0.03
+  /// (light torque near the jam angle) eq 9 with eq 22's q loses load, down to none at all;
+  /// such a point is an InvalidInput on the torque, not a result (docs/model.md).
+  double min_load_fraction = 0.9;
 };
 
 /// One tooth of the hub.
@@ -55,8 +59,11 @@ struct ToothContact {
   double max_tooth_load_n = 0.0;        ///< largest P_d [N]
   double sum_tooth_loads_n = 0.0;       ///< sum of P_d, against P_t [N]
   bool edge_loaded = false;             ///< some eq 19 zone reached a facewidth edge
-  Eigen::VectorXd slice_weights;        ///< cos(pi l / N_s), l = -N_s/2 .. N_s/2, eq 14
+  int slices = 0;                       ///< N_s, eq 14
   ToothStress max_stress;               ///< stress of the most loaded tooth (it governs)
+
+  /// cos(pi l / N_s), l = -N_s/2 .. N_s/2, eq 14 (computed on demand: only outputs need it).
+  Eigen::VectorXd slice_weights() const;
 
   /// Eq 14: load on every slice, P_ds = P_d cos(pi l / N_s): row j, column l + N_s/2 [N].
   Eigen::MatrixXd slice_loads() const;
@@ -65,7 +72,8 @@ struct ToothContact {
 };
 
 /// Eqs 5-22 for `point` (friction is not used here). Validates the operating point (throws
-/// InvalidInput naming the field) and throws NotConverged when eqs 20-22 do not converge.
+/// InvalidInput naming the field), rejects points where the tooth loads carry less than
+/// options.min_load_fraction of P_t, and throws NotConverged when eqs 20-22 do not converge.
 ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
                            const ContactOptions& options = {});
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -29,8 +30,8 @@ std::vector<FlagSpec> batch_flags() {
   std::vector<FlagSpec> flags = {
       {"in", "FILE|-", "input CSV of load cases ('-': standard input)", std::nullopt},
       {"out", "FILE|-", "output CSV of results ('-': standard output)", "-"},
-      {"jobs", "N", "worker threads", std::to_string(std::max(1u, std::thread::hardware_concurrency())),
-       false, 'j'},
+      {"jobs", "N", "worker threads",
+       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
   };
   for (FlagSpec& flag : contact_option_flags()) flags.push_back(std::move(flag));
   return flags;
@@ -127,8 +128,13 @@ struct FileCloser {
 };
 using OutputFile = std::unique_ptr<std::FILE, FileCloser>;
 
-OutputFile open_output(const std::string& path, std::FILE* standard_output) {
+OutputFile open_output(const std::string& path, const std::string& input_path,
+                       std::FILE* standard_output) {
   if (path == "-") return OutputFile(standard_output);
+  std::error_code error;  // a file that does not exist yet is not the input
+  if (input_path != "-" && std::filesystem::equivalent(path, input_path, error)) {
+    throw UsageError(fmt::format("--out {}: is the input file; it would be overwritten", path));
+  }
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (file == nullptr) {
     throw UsageError(fmt::format("--out {}: cannot open: {}", path, std::strerror(errno)));
@@ -145,13 +151,13 @@ void write_parts(const std::vector<ChunkPart>& parts, std::FILE* out) {
 
 int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* standard_output) {
   if (flags.enabled("json")) throw UsageError("--json: batch writes CSV (see --help)");
-  const int threads = flags.integer("jobs", 1, 1024);
+  const int threads = flags.integer("jobs", 1, 256);
   const std::unique_ptr<std::istream> in = open_input(flags.text("in"));
   std::string header;
   if (!std::getline(*in, header)) throw UsageError("--in " + flags.text("in") + ": no header line");
   BatchJob job{calculator, parse_batch_header(header), flags.text("coupling"),
                contact_options_from(flags)};
-  const OutputFile out = open_output(flags.text("out"), standard_output);
+  const OutputFile out = open_output(flags.text("out"), flags.text("in"), standard_output);
   std::fputs(batch_output_header().c_str(), out.get());
 
   std::vector<std::string> lines(kLinesPerThread * static_cast<std::size_t>(threads));

@@ -54,6 +54,9 @@ std::string_view column_name(int index, const BatchColumns& columns) {
 }  // namespace
 
 BatchColumns parse_batch_header(std::string_view header) {
+  // Spreadsheets often start a UTF-8 CSV with a byte-order mark.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (header.starts_with(kByteOrderMark)) header.remove_prefix(kByteOrderMark.size());
   std::vector<std::string_view> names;
   split_fields(header, names);
   BatchColumns columns;

@@ -1,6 +1,6 @@
 // The CSV formats of `gearcoupling batch`.
 //
-// Input: a header line naming the columns, in any order:
+// Input: a header line (a UTF-8 byte-order mark is skipped) naming the columns, in any order:
 //   torque_nm, misalignment_deg, direction_deg, mu   required
 //   coupling                                         optional: a catalogue name or .textproto
 //                                                    file per row (default: --coupling)

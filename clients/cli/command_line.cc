@@ -84,10 +84,13 @@ double Flags::number(std::string_view name) const {
 int Flags::integer(std::string_view name, int lo, int hi) const {
   const std::string& value = text(name);
   const auto parsed = parse_int(value);
-  if (!parsed || *parsed < lo || *parsed > hi) {
+  if (!parsed) {
     throw UsageError(
-        fmt::format("--{} {} is out of range: allowed a whole number in [{}, {}]", name, value,
-                    lo, hi));
+        fmt::format("--{} '{}' is not a whole number ({})", name, value, spec(name).help));
+  }
+  if (*parsed < lo || *parsed > hi) {
+    throw UsageError(fmt::format("--{} {} is out of range: allowed a whole number in [{}, {}]",
+                                 name, value, lo, hi));
   }
   return *parsed;
 }

@@ -10,8 +10,8 @@ bool is_file_reference(std::string_view coupling) {
   return coupling.find('/') != std::string_view::npos || coupling.ends_with(".textproto");
 }
 
-std::string known_names(const std::map<std::string, std::shared_ptr<const CouplingGeometry>,
-                                       std::less<>>& catalog) {
+template <typename Catalog>
+std::string known_names(const Catalog& catalog) {
   std::string names;
   for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
   return names;
@@ -27,16 +27,16 @@ const CouplingGeometry& InProcessCalculator::geometry(std::string_view coupling)
   if (is_file_reference(coupling)) {
     auto found = files_.find(coupling);
     if (found == files_.end()) {
-      auto geometry = std::make_shared<const CouplingGeometry>(
-          codec::load_coupling_geometry(std::filesystem::path(coupling)));
-      found = files_.emplace(std::string(coupling), std::move(geometry)).first;
+      found = files_.emplace(std::string(coupling),
+                             codec::load_coupling_geometry(std::filesystem::path(coupling)))
+                  .first;
     }
-    return *found->second;
+    return found->second;
   }
   if (!catalog_) {
-    std::map<std::string, std::shared_ptr<const CouplingGeometry>, std::less<>> loaded;
+    Couplings loaded;
     for (auto& [name, geometry] : codec::load_coupling_catalog(catalog_dir_)) {
-      loaded.emplace(name, std::make_shared<const CouplingGeometry>(std::move(geometry)));
+      loaded.emplace(name, std::move(geometry));
     }
     catalog_ = std::move(loaded);
   }
@@ -46,7 +46,7 @@ const CouplingGeometry& InProcessCalculator::geometry(std::string_view coupling)
                                        catalog_dir_.string() + " (known: " +
                                        known_names(*catalog_) + ")");
   }
-  return *found->second;
+  return found->second;
 }
 
 std::string InProcessCalculator::coupling_name(std::string_view coupling) const {

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <mutex>
 #include <optional>
 
@@ -32,11 +31,13 @@ class InProcessCalculator final : public Calculator {
   /// The validated coupling for a reference; throws gc::InvalidInput naming "coupling".
   const CouplingGeometry& geometry(std::string_view coupling) const;
 
+  // Couplings by name or file; std::map never moves its nodes, so references stay valid.
+  using Couplings = std::map<std::string, const CouplingGeometry, std::less<>>;
+
   std::filesystem::path catalog_dir_;
   mutable std::mutex mutex_;  // guards the two maps below
-  mutable std::optional<std::map<std::string, std::shared_ptr<const CouplingGeometry>, std::less<>>>
-      catalog_;
-  mutable std::map<std::string, std::shared_ptr<const CouplingGeometry>, std::less<>> files_;
+  mutable std::optional<Couplings> catalog_;
+  mutable Couplings files_;
 };
 
 }  // namespace gc::cli

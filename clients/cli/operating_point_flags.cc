@@ -24,9 +24,11 @@ std::vector<FlagSpec> operating_point_flags(bool friction_used) {
       {"direction-deg", "deg", "direction beta of the misalignment axis [deg]", "0"},
   };
   if (friction_used) {
-    flags.push_back({"mu", "number", "tooth sliding friction coefficient mu [-], 0..1", std::nullopt});
+    flags.push_back(
+        {"mu", "number", "tooth sliding friction coefficient mu [-], 0..1", std::nullopt});
   } else {
-    flags.push_back({"mu", "number", "friction coefficient mu [-]; not used by this calculation", "0"});
+    flags.push_back(
+        {"mu", "number", "friction coefficient mu [-]; not used by this calculation", "0"});
   }
   return flags;
 }
@@ -53,10 +55,11 @@ OperatingPoint operating_point_from(const Flags& flags) {
 ContactOptions contact_options_from(const Flags& flags) {
   ContactOptions options;
   options.load_sharing.tolerance = flags.number("tolerance");
-  // Whole-number parsing only; the core checks the ranges and names the field.
-  constexpr int kAnyInt = std::numeric_limits<int>::max();
-  options.load_sharing.max_iterations = flags.integer("max-iterations", -kAnyInt, kAnyInt);
-  options.slices = flags.integer("slices", -kAnyInt, kAnyInt);
+  // Only whether they are ints is checked here; the core checks the ranges and names the field.
+  constexpr int kMin = std::numeric_limits<int>::min();
+  constexpr int kMax = std::numeric_limits<int>::max();
+  options.load_sharing.max_iterations = flags.integer("max-iterations", kMin, kMax);
+  options.slices = flags.integer("slices", kMin, kMax);
   return options;
 }
 

@@ -90,6 +90,15 @@ function whereItFails() {
     main.append(el("p", {}, el("b", {}, m.model),
       " - worst region of each input, worst first (contrast: region RMSE / RMSE elsewhere):"));
     const list = el("ul");
+    for (const sig of m.signatures || []) {
+      const shares = (sig.shares || []).filter((x) => num(x.explained_share) >= 0.1)
+        .sort((a, b) => num(b.explained_share) - num(a.explained_share))
+        .map((x) => `${x.dimension} ${fmt(100 * num(x.explained_share), 0)} %`).join(", ");
+      list.append(el("li", {}, el("b", {}, sig.channel + ": "), sig.at_noise_level
+        ? `at the noise level (noise estimate ${fmt(num(sig.noise_estimate_nm) / 1e3, 2)} kN·m): no systematic error to locate.`
+        : `noise ${fmt(num(sig.noise_estimate_nm) / 1e3, 2)} kN·m (+) systematic ${fmt(num(sig.systematic_rms_nm) / 1e3, 2)} kN·m; ` +
+          `explained by the bins of: ${shares || "no single input"}.`));
+    }
     for (const r of m.worst_regions || []) {
       list.append(el("li", {}, `[${fmt(num(r.contrast), 1)}x] ${r.description}`));
     }

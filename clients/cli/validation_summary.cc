@@ -1,5 +1,9 @@
 #include "clients/cli/validation_summary.h"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "clients/cli/table.h"
@@ -10,6 +14,8 @@ namespace {
 namespace v1 = gearcoupling::v1;
 
 constexpr std::size_t kProblemsShown = 10;
+// Regions whose RMSE is at least this much larger than elsewhere are worth naming.
+constexpr double kNotableContrast = 1.2;
 
 void add_metrics_row(Table& table, const std::string& model, std::string_view channel,
                      const v1::ErrorMetricsRecord& m) {
@@ -31,12 +37,43 @@ void print_metrics(const v1::ValidationResult& result, std::FILE* out) {
   table.print(out);
 }
 
-void print_regions(const v1::ModelValidation& model, std::FILE* out) {
-  fmt::print(out, "\nWhere {} fails (worst region of each input, worst first; contrast = region "
-             "RMSE / RMSE elsewhere):\n", model.model());
-  for (const v1::RegionRecord& region : model.worst_regions()) {
-    fmt::print(out, "  [{:4.1f}x] {}\n", region.contrast(), region.description());
+// "by direction 99 %, by time 12 %": the inputs whose bins explain at least 10 % of the error.
+std::string shares_text(const v1::ErrorSignatureRecord& signature) {
+  std::vector<std::pair<double, std::string>> shares;
+  for (const auto& share : signature.shares()) {
+    if (share.explained_share() >= 0.1) shares.emplace_back(share.explained_share(), share.dimension());
   }
+  std::sort(shares.rbegin(), shares.rend());
+  std::string text;
+  for (const auto& [share, dimension] : shares) {
+    text += fmt::format("{}{} {:.0f} %", text.empty() ? "" : ", ", dimension, 100.0 * share);
+  }
+  return text.empty() ? "no single input (under 10 % each)" : text;
+}
+
+void print_signature(const v1::ModelValidation& model, const v1::ErrorSignatureRecord& signature,
+                     std::FILE* out) {
+  const auto& metrics = signature.channel() == "M_sy'" ? model.overall().msy() : model.overall().msz();
+  if (signature.at_noise_level()) {
+    fmt::print(out, "  {}: at the noise level: RMSE {:.2f} kN·m against a noise estimate of "
+               "{:.2f} kN·m; no systematic error to locate.\n", signature.channel(),
+               metrics.rmse_nm() / 1e3, signature.noise_estimate_nm() / 1e3);
+    return;
+  }
+  fmt::print(out, "  {}: RMSE {:.2f} kN·m = noise {:.2f} kN·m (+) systematic {:.2f} kN·m; the "
+             "bin biases of these inputs explain it: {}.\n", signature.channel(),
+             metrics.rmse_nm() / 1e3, signature.noise_estimate_nm() / 1e3,
+             signature.systematic_rms_nm() / 1e3, shares_text(signature));
+  for (const v1::RegionRecord& region : model.worst_regions()) {
+    if (region.channel() != signature.channel() || region.contrast() < kNotableContrast) continue;
+    fmt::print(out, "    [{:4.1f}x] {}\n", region.contrast(), region.description());
+  }
+}
+
+void print_regions(const v1::ModelValidation& model, std::FILE* out) {
+  fmt::print(out, "\nWhere {} fails ([contrast] = RMSE in the region / RMSE elsewhere; regions "
+             "from {:.2f}x):\n", model.model(), kNotableContrast);
+  for (const auto& signature : model.signatures()) print_signature(model, signature, out);
 }
 
 void print_rejections(const v1::ModelValidation& model, std::FILE* out) {

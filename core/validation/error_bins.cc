@@ -176,6 +176,21 @@ void ValidationAccumulator::add(const RecordedSample& sample, const SensorMoment
   overall_.add(sample.measured, predicted);
   for (ErrorBinning& binning : binnings_) binning.add(sample.input, sample.measured, predicted);
   map_.add(sample.input, sample.measured, predicted);
+  const SensorMoments error{predicted.y_nm - sample.measured.y_nm,
+                            predicted.z_nm - sample.measured.z_nm};
+  if (last_error_) {
+    const double dy = error.y_nm - last_error_->y_nm, dz = error.z_nm - last_error_->z_nm;
+    difference_sum_sq_[0] += dy * dy;
+    difference_sum_sq_[1] += dz * dz;
+    ++differences_;
+  }
+  last_error_ = error;
+}
+
+double ValidationAccumulator::noise_estimate_nm(Channel channel) const {
+  if (differences_ == 0) return 0.0;
+  const double sum = difference_sum_sq_[channel == Channel::y ? 0 : 1];
+  return std::sqrt(sum / (2.0 * static_cast<double>(differences_)));
 }
 
 void ValidationAccumulator::reject(const RecordedSample& sample, const std::string& field,

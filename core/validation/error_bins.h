@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -109,6 +110,10 @@ class ValidationAccumulator {
   const ErrorMap& map() const { return map_; }
   const std::map<std::string, RejectionCount>& rejections() const { return rejections_; }
   std::size_t rejected_count() const;
+  /// The noise of `channel` estimated from successive errors, sqrt(mean((e_i - e_{i-1})^2) / 2):
+  /// noise does not correlate from one sample to the next, a model error that varies slowly
+  /// with the load does and cancels in the difference. Zero before two samples.
+  double noise_estimate_nm(Channel channel) const;
 
  private:
   BinningOptions options_;
@@ -116,6 +121,9 @@ class ValidationAccumulator {
   std::vector<ErrorBinning> binnings_;
   ErrorMap map_;
   std::map<std::string, RejectionCount> rejections_;
+  std::optional<SensorMoments> last_error_;   // of the previous compared sample
+  std::array<double, 2> difference_sum_sq_{};
+  std::size_t differences_ = 0;
 };
 
 }  // namespace gc

@@ -78,10 +78,40 @@ std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, 
     }
     if (worst) regions.push_back(*worst);
   }
+  // Time last: in a designed load sequence every input is a function of time, so a time bin
+  // repeats what a load input says more plainly; it leads only for drift (no other region).
   std::stable_sort(regions.begin(), regions.end(), [](const RegionError& a, const RegionError& b) {
-    return a.contrast > b.contrast;
+    const bool a_time = a.dimension == BinDimension::time, b_time = b.dimension == BinDimension::time;
+    return a_time != b_time ? b_time : a.contrast > b.contrast;
   });
   return regions;
+}
+
+double explained_share(const ErrorBinning& binning, const ErrorMetrics& overall,
+                       Channel channel) {
+  const double total = overall.rmse_nm * overall.rmse_nm * static_cast<double>(overall.count);
+  if (total <= 0.0) return 0.0;
+  double explained = 0.0;
+  for (const ErrorBin& bin : binning.bins()) {
+    const ErrorMetrics m = bin.errors[channel].metrics();
+    const double deviation = m.bias_nm - overall.bias_nm;
+    explained += static_cast<double>(m.count) * deviation * deviation;
+  }
+  return std::clamp(explained / total, 0.0, 1.0);
+}
+
+ErrorSignature error_signature(const ValidationAccumulator& validation, Channel channel) {
+  const ErrorMetrics overall = validation.overall()[channel].metrics();
+  ErrorSignature signature{channel};
+  signature.noise_estimate_nm = validation.noise_estimate_nm(channel);
+  const double noise_sq = signature.noise_estimate_nm * signature.noise_estimate_nm;
+  signature.systematic_rms_nm = std::sqrt(std::max(0.0, overall.rmse_nm * overall.rmse_nm - noise_sq));
+  // Below a third of the noise the systematic part adds under 6 % to the RMSE.
+  signature.at_noise_level = signature.systematic_rms_nm < signature.noise_estimate_nm / 3.0;
+  for (std::size_t d = 0; d < kBinDimensions.size(); ++d) {
+    signature.explained_share[d] = explained_share(validation.binnings()[d], overall, channel);
+  }
+  return signature;
 }
 
 std::string describe_region(const RegionError& r) {

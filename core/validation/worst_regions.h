@@ -3,6 +3,7 @@
 //    T_ref) in 1200 samples, against 12 kN·m overall".
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,26 @@ struct RegionError {
 };
 
 /// For `channel`, the worst bin of every dimension with more than one populated bin, worst
-/// first. A bin counts when it holds at least `min_share` of the samples (and 10 or more),
+/// first (time last: see worst_regions.cc). A bin counts when it holds at least `min_share` of the samples (and 10 or more),
 /// so a handful of samples cannot name a region.
 std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, Channel channel,
                                        double min_share = 0.02);
+
+/// How much of `channel`'s mean-square error the bin biases of `dimension` explain beyond the
+/// overall bias: sum_b n_b (bias_b - bias)^2 / sum e^2, in [0, 1]. Near 1: the error is a
+/// systematic function of that input; near 0: not (noise, a uniform bias, or an error whose
+/// sign another input sets).
+double explained_share(const ErrorBinning& binning, const ErrorMetrics& overall, Channel channel);
+
+/// The error of one channel split into noise and a systematic part.
+struct ErrorSignature {
+  Channel channel;
+  double noise_estimate_nm = 0.0;    ///< ValidationAccumulator::noise_estimate_nm
+  double systematic_rms_nm = 0.0;    ///< sqrt(max(0, RMSE^2 - noise^2))
+  bool at_noise_level = false;       ///< the systematic part is below a third of the noise
+  std::array<double, kBinDimensions.size()> explained_share{};  ///< per kBinDimensions
+};
+ErrorSignature error_signature(const ValidationAccumulator& validation, Channel channel);
 
 /// One sentence naming the region in words, with its bias and RMSE in kN·m and % of T_ref.
 std::string describe(const RegionError& region, double reference_torque_nm);

@@ -82,21 +82,26 @@ TEST(CliBatch, BadRowIsReportedWithItsLineAndTheOthersMatchTheCore) {
              "1e6,2,0,0.1\n"          // line 3: beyond the jam angle
              "1e6,0.2,90,0.12\n"      // line 4
              "1e6,0.2,x,0.12\n"       // line 5: not a number
-             "8e5,0,0,0\n");          // line 6: aligned
+             "8e5,0,0,0\n"            // line 6: aligned
+             "1e308,0.4,0,0.1\n");    // line 7: above the core's torque bound
   const ProcessResult run = run_gearcoupling({"batch", "--in", in});
   EXPECT_EQ(run.exit_code, 1);  // some rows failed
   const std::vector<std::string> rows = lines_of(run.out);
-  ASSERT_EQ(rows.size(), 6u) << run.out;
+  ASSERT_EQ(rows.size(), 7u) << run.out;
   EXPECT_EQ(rows[0].rfind("line,coupling,q,teeth_in_contact,max_tooth_load_n,moment_y_nm", 0), 0u);
   expect_row_equals_core(rows[1], 2, "nrel_upwind", {1.5e6, 0.4 * kDegree, 30 * kDegree, 0.1});
   EXPECT_EQ(rows[2].rfind("3,nrel_upwind,,,,,,,,,,,,,\"misalignment_deg 2: ", 0), 0u) << rows[2];
   expect_row_equals_core(rows[3], 4, "nrel_upwind", {1e6, 0.2 * kDegree, 90 * kDegree, 0.12});
   EXPECT_EQ(rows[4], "5,nrel_upwind,,,,,,,,,,,,,direction_deg 'x' is not a number");
   expect_row_equals_core(rows[5], 6, "nrel_upwind", {8e5, 0.0, 0.0, 0.0});
+  EXPECT_EQ(rows[6].rfind("7,nrel_upwind,,,,,,,,,,,,,", 0), 0u) << rows[6];
+  EXPECT_NE(rows[6].find("torque_nm 1e308: operating_point.torque_nm"), std::string::npos);
+  EXPECT_EQ(run.out.find("nan"), std::string::npos);
+  EXPECT_EQ(run.out.find("inf"), std::string::npos);
   EXPECT_NE(run.err.find("line 3: misalignment_deg 2: operating_point.misalignment_rad"),
             std::string::npos) << run.err;
   EXPECT_NE(run.err.find("line 5: direction_deg 'x' is not a number"), std::string::npos);
-  EXPECT_NE(run.err.find("2 of 5 rows failed"), std::string::npos);
+  EXPECT_NE(run.err.find("3 of 6 rows failed"), std::string::npos);
 }
 
 TEST(CliBatch, AllGoodRowsExitZero) {
@@ -131,6 +136,28 @@ TEST(CliBatch, WritesToTheOutFile) {
   EXPECT_EQ(lines_of(read_file(out)).size(), 6u);
 }
 
+TEST(CliBatch, AcceptsByteOrderMarkAndWindowsLineEnds) {
+  const std::string in = temp_path("gc_batch_crlf");
+  write_file(in, "\xEF\xBB\xBFtorque_nm,misalignment_deg,direction_deg,mu\r\n1e6,0.2,90,0.12\r\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> rows = lines_of(run.out);
+  ASSERT_EQ(rows.size(), 2u);
+  expect_row_equals_core(rows[1], 2, "nrel_upwind", {1e6, 0.2 * kDegree, 90 * kDegree, 0.12});
+}
+
+TEST(CliBatch, HeaderOnlyGivesHeaderOnlyAndNoHeaderIsAnError) {
+  const std::string in = temp_path("gc_batch_header_only");
+  write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(lines_of(run.out).size(), 1u);
+  write_file(in, "");
+  const ProcessResult empty = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("no header line"), std::string::npos) << empty.err;
+}
+
 TEST(CliBatch, BadHeaderExitsTwoNamingTheColumn) {
   const std::string in = temp_path("gc_batch_header");
   write_file(in, "torque_nm,misalignment_deg,direction_deg,friction\n1e6,0.1,0,0.1\n");
@@ -141,6 +168,16 @@ TEST(CliBatch, BadHeaderExitsTwoNamingTheColumn) {
   const ProcessResult missing = run_gearcoupling({"batch", "--in", in});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("required column 'mu' missing"), std::string::npos) << missing.err;
+}
+
+TEST(CliBatch, RefusesToOverwriteItsInput) {
+  const std::string in = temp_path("gc_batch_same");
+  const std::string cases = "torque_nm,misalignment_deg,direction_deg,mu\n1e6,0.1,0,0.1\n";
+  write_file(in, cases);
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in, "--out", in});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("is the input file"), std::string::npos) << run.err;
+  EXPECT_EQ(read_file(in), cases);
 }
 
 TEST(CliBatch, OneAndTwoThreadsWriteIdenticalOutputInInputOrder) {

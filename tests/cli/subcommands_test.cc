@@ -1,6 +1,7 @@
 // Every subcommand run as the user runs it: tables and --json against the in-process core,
 // bad input against exit code 2 and a one-line message naming the flag, value and range.
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -152,7 +153,8 @@ TEST(CliFriction, TableAndJsonMatchTheCore) {
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NEAR(table_value(table.out, "friction coefficient mu (eq 4)"),
               core.friction_coefficient, 1e-6);
-  const auto json = parse_json<v1::FrictionEstimateResult>(run_gearcoupling(with(args, {"--json"})).out);
+  const auto json =
+      parse_json<v1::FrictionEstimateResult>(run_gearcoupling(with(args, {"--json"})).out);
   EXPECT_EQ(json.friction_coefficient(), core.friction_coefficient);
   EXPECT_EQ(json.measurement().sensor_moment_y_nm(), -50000.0);
 }
@@ -179,7 +181,7 @@ INSTANTIATE_TEST_SUITE_P(
     Flags, CliBadInput,
     ::testing::Values(
         BadInputCase{{"contact", "--torque", "-5", "--misalignment-deg", "0.4"},
-                     {"--torque -5", "operating_point.torque_nm", "allowed a finite value > 0"}},
+                     {"--torque -5", "operating_point.torque_nm", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "2"},
                      {"--misalignment-deg 2", "jam angle", "0.750906 deg"}},
         BadInputCase{{"moments", "--torque", "1e6", "--misalignment-deg", "0.4", "--mu", "1.5"},
@@ -190,8 +192,16 @@ INSTANTIATE_TEST_SUITE_P(
                      {"--torque 'abc' is not a number"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "3"},
                      {"--slices 3", "even number in [2, 1000]"}},
+        BadInputCase{{"moments", "--torque", "1e308", "--misalignment-deg", "0.4", "--mu", "0.1"},
+                     {"--torque 1e308", "operating_point.torque_nm", "out of range: allowed"}},
+        // Eq 4 divides the moments by the torque: 1e308 / 1e-300 overflows; the core refuses.
+        BadInputCase{{"friction", "--torque", "1e-300", "--misalignment-deg", "0.4", "--msy",
+                      "1e308", "--msz", "1e308"},
+                     {"--torque 1e-300", "(eq 4) is finite"}},
+        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "x"},
+                     {"--slices 'x' is not a whole number"}},
         BadInputCase{{"contact", "--torque", "nan", "--misalignment-deg", "0.4"},
-                     {"--torque nan", "allowed a finite value > 0"}},
+                     {"--torque nan", "allowed (0, 1e12] N·m"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
                      {"unknown flag --colour"}},
         BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--coupling",
@@ -210,7 +220,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(CliCouplingFile, MissingFieldInAUserFileNamesFieldAndFile) {
   const std::string dir = temp_path("gc_user_coupling");
   std::filesystem::create_directories(dir);
-  std::istringstream bundled(read_file(std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_upwind.textproto"));
+  std::istringstream bundled(
+      read_file(std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_upwind.textproto"));
   std::string text, line;
   while (std::getline(bundled, line)) {
     if (line.rfind("facewidth_m", 0) != 0) text += line + "\n";
@@ -227,7 +238,8 @@ TEST(CliCouplingFile, MissingFieldInAUserFileNamesFieldAndFile) {
 TEST(CliCouplingFile, AGivenFileIsUsedInsteadOfTheCatalogue) {
   const ProcessResult run = run_gearcoupling(
       {"jam-angle", "--json", "--coupling",
-       std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_downwind.textproto", "--catalog", "/nonexistent"});
+       std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_downwind.textproto", "--catalog",
+       "/nonexistent"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(parse_json<v1::JamAngleResult>(run.out).coupling(), "nrel_downwind");
 }

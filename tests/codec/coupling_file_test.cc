@@ -115,6 +115,39 @@ TEST(CouplingFile, WrongValueTypeIsAnError) {
   EXPECT_NE(std::string(error.what()).find("type.textproto:"), std::string::npos);
 }
 
+// The schema's comments say which fields are "optional use"; every other field must be
+// required by the loader. Removing each top-level field of the bundled file in turn checks
+// that the loader and idl/coupling.proto agree.
+TEST(CouplingFile, RequiresExactlyTheFieldsTheSchemaDoesNotMarkOptionalUse) {
+  std::ifstream schema(GC_COUPLING_PROTO);
+  ASSERT_TRUE(schema) << GC_COUPLING_PROTO;
+  const std::string upwind = bundled_text("nrel_upwind");
+  std::string line;
+  bool in_definition = false;
+  int checked = 0;
+  while (std::getline(schema, line)) {
+    if (line.rfind("message CouplingDefinition", 0) == 0) in_definition = true;
+    if (!in_definition || line.find("  optional ") != 0) continue;
+    std::istringstream words(line);
+    std::string optional_word, type, name;
+    words >> optional_word >> type >> name;
+    const bool optional_use = line.find("optional use") != std::string::npos;
+    const std::string text = without_line_of(upwind, name + ":") + "\n";
+    if (text.size() == upwind.size() + 1) continue;  // the bundled file does not set it
+    if (text.find(name + " {") != std::string::npos) continue;  // a message: checked below
+    bool threw = false;
+    try {
+      parse_coupling_text(text, "f");
+    } catch (const InvalidInput& error) {
+      threw = true;
+      EXPECT_EQ(error.field(), "coupling." + name);
+    }
+    EXPECT_EQ(threw, !optional_use) << name;
+    ++checked;
+  }
+  EXPECT_GE(checked, 25);  // teeth ... tilt_deg and name, description
+}
+
 TEST(CouplingFile, UnreadableFileIsAnError) {
   EXPECT_THROW(load_coupling_file("/nonexistent/none.textproto"), InvalidInput);
 }

@@ -13,10 +13,7 @@ namespace {
 using testing::deg;
 using testing::nrel_upwind;
 
-const CouplingGeometry& upwind() {
-  static const CouplingGeometry coupling(nrel_upwind());
-  return coupling;
-}
+const CouplingGeometry& upwind() { return testing::upwind_geometry(); }
 
 FrictionMeasurement measure(const OperatingPoint& point) {
   const InducedMoments m = induced_moments(upwind(), point);

@@ -15,10 +15,7 @@ namespace {
 using testing::deg;
 using testing::nrel_upwind;
 
-const CouplingGeometry& upwind() {
-  static const CouplingGeometry coupling(nrel_upwind());
-  return coupling;
-}
+const CouplingGeometry& upwind() { return testing::upwind_geometry(); }
 
 // Coefficient of determination of the least-squares line through (x, y).
 double r_squared(const std::vector<double>& x, const std::vector<double>& y) {

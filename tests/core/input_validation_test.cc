@@ -65,6 +65,7 @@ TEST(InputValidation, OperatingPointErrorsNameTheField) {
   EXPECT_EQ(field_of(contact({kNaN, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
   EXPECT_EQ(field_of(contact({0.0, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
   EXPECT_EQ(field_of(contact({-1e6, 0.0, 0.0, 0.0})), "operating_point.torque_nm");
+  EXPECT_EQ(field_of(contact({1e308, deg(0.3), 0.0, 0.1})), "operating_point.torque_nm");  // overflow
   EXPECT_EQ(field_of(contact({1e6, kNaN, 0.0, 0.0})), "operating_point.misalignment_rad");
   EXPECT_EQ(field_of(contact({1e6, -1e-3, 0.0, 0.0})), "operating_point.misalignment_rad");
   EXPECT_EQ(field_of(contact({1e6, g.jam_angle().angle_rad, 0.0, 0.0})),
@@ -80,7 +81,7 @@ TEST(InputValidation, OperatingPointErrorsNameTheField) {
 
 TEST(InputValidation, ExtremeButValidInputsGiveFiniteResults) {
   const CouplingGeometry g(nrel_upwind());
-  for (double torque : {1.0, 1e3, 1e9}) {
+  for (double torque : {1e5, 1.5e6, 1e9}) {
     for (double fraction : {0.0, 1e-9, 0.5, 0.999999}) {
       const OperatingPoint p{torque, fraction * g.jam_angle().angle_rad, deg(-720.0), 1.0};
       const ToothContact c = tooth_contact(g, p);
@@ -91,6 +92,28 @@ TEST(InputValidation, ExtremeButValidInputsGiveFiniteResults) {
       for (const ToothLoad& t : c.teeth) ASSERT_TRUE(std::isfinite(t.zone_end_m));
     }
   }
+}
+
+TEST(InputValidation, LightTorqueNearTheJamAngleIsRejectedNotSilentlyLost) {
+  // At 1 kN·m and 0.4 deg, eq 9 with eq 22's q carries 47 % of P_t (z_e/z_o about 0.001):
+  // an error naming the torque, never loads that do not add up to the transmitted torque.
+  const CouplingGeometry g(nrel_upwind());
+  try {
+    tooth_contact(g, {1e3, deg(0.4), 0.0, 0.0});
+    FAIL() << "light torque near the jam angle must be rejected";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "operating_point.torque_nm");
+    EXPECT_NE(std::string(e.what()).find("eq 9"), std::string::npos);
+  }
+  // The same point aligned, or at the paper's lowest test torque, is fine.
+  EXPECT_EQ(tooth_contact(g, {1e3, 0.0, 0.0, 0.0}).teeth_in_contact, 100);
+  const ToothContact low = tooth_contact(g, {1e5, deg(0.74), 0.0, 0.0});
+  EXPECT_GT(low.sum_tooth_loads_n / low.total_normal_load_n, 0.98);
+  // The floor is an option: at 0 the loads come back, and are reported as they are.
+  ContactOptions permissive;
+  permissive.min_load_fraction = 0.0;
+  const ToothContact lost = tooth_contact(g, {1e3, deg(0.4), 0.0, 0.0}, permissive);
+  EXPECT_NEAR(lost.sum_tooth_loads_n / lost.total_normal_load_n, 0.465, 0.005);
 }
 
 }  // namespace

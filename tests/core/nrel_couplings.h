@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/coupling_definition.h"
+#include "core/coupling_geometry.h"
 
 namespace gc::testing {
 
@@ -52,6 +53,12 @@ inline CouplingDefinition nrel_downwind() {
   d.tool_tip_radius_m = 0.00318;
   d.lead_modification_m = 0.0012;
   return d;
+}
+
+/// The upwind coupling's geometry, built once and shared (it is immutable).
+inline const CouplingGeometry& upwind_geometry() {
+  static const CouplingGeometry geometry(nrel_upwind());
+  return geometry;
 }
 
 }  // namespace gc::testing

@@ -1,0 +1,164 @@
+// Recordings (docs/recordings.md): every documented error with its line and column, units
+// converted to SI, loading direction derived, and a bounded chunk size.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "clients/cli/recording_csv.h"
+#include "core/model_error.h"
+#include "run_process.h"
+
+namespace gc::cli {
+namespace {
+
+using testing::temp_path;
+using testing::write_file;
+
+const std::string kHeader = "time_s,torque_nm,misalignment_deg,direction_deg,msy_nm,msz_nm\n";
+
+Recording read_text(const std::string& text) {
+  const std::string path = temp_path("recording") + ".csv";
+  write_file(path, text);
+  return read_recording(path);
+}
+
+InvalidInput header_error(const std::string& header) {
+  try {
+    read_text(header + "\n0,1e6,0.1,0,1,2\n");
+  } catch (const InvalidInput& error) {
+    return error;
+  }
+  ADD_FAILURE() << "header accepted: " << header;
+  return InvalidInput("none", "none");
+}
+
+TEST(RecordingReader, MissingRequiredColumnIsNamed) {
+  const InvalidInput error = header_error("time_s,torque_nm,misalignment_deg,direction_deg,msy_nm");
+  EXPECT_EQ(error.field(), "recording.msz");
+  EXPECT_NE(std::string(error.what()).find("msz_knm"), std::string::npos) << error.what();
+}
+
+TEST(RecordingReader, UnknownColumnIsNamedWithItsColumnNumber) {
+  const InvalidInput error =
+      header_error("time_s,torque_nm,misalignment_deg,direction_deg,msy_nm,msz_nm,humidity_pct");
+  EXPECT_EQ(error.field(), "recording.humidity_pct");
+  EXPECT_NE(std::string(error.what()).find(":1:7:"), std::string::npos) << error.what();
+}
+
+TEST(RecordingReader, UnknownUnitIsNamedWithTheAcceptedSpellings) {
+  const InvalidInput error = header_error("time_s,torque_lbft,misalignment_deg,direction_deg,msy_nm,msz_nm");
+  EXPECT_EQ(error.field(), "recording.torque_lbft");
+  EXPECT_NE(std::string(error.what()).find(":1:2:"), std::string::npos);
+  EXPECT_NE(std::string(error.what()).find("torque_knm"), std::string::npos) << error.what();
+}
+
+TEST(RecordingReader, RepeatedQuantityIsAnError) {
+  EXPECT_EQ(header_error("time_s,torque_nm,torque_knm,misalignment_deg,direction_deg,msy_nm,msz_nm").field(),
+            "recording.torque_knm");
+}
+
+// Each malformed row is excluded and reported with its line (header = 1) and column.
+struct BadRow {
+  std::string row;
+  int column;
+  std::string words;
+};
+
+class BadRows : public ::testing::TestWithParam<BadRow> {};
+
+TEST_P(BadRows, AreExcludedAndReportedWithLineAndColumn) {
+  const BadRow& bad = GetParam();
+  const Recording recording =
+      read_text(kHeader + "0,1e6,0.1,0,1,2\n" + bad.row + "\n0.2,1e6,0.1,0,1,2\n");
+  EXPECT_EQ(recording.rows_read, 3u);
+  EXPECT_EQ(recording.samples.size(), 2u);
+  ASSERT_EQ(recording.excluded_rows, 1u);
+  ASSERT_EQ(recording.problems.size(), 1u);
+  EXPECT_EQ(recording.problems[0].line, 3);
+  EXPECT_EQ(recording.problems[0].column, bad.column);
+  EXPECT_NE(recording.problems[0].message.find(bad.words), std::string::npos)
+      << recording.problems[0].message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryKind, BadRows,
+    ::testing::Values(BadRow{"0.1,1e6,,0,1,2", 3, "empty cell"},
+                      BadRow{"0.1,1e6,0.1,0,nan,2", 5, "not a finite number"},
+                      BadRow{"0.1,1e6,0.1,0,1,inf", 6, "not a finite number"},
+                      BadRow{"0.1,1e6,0.1,north,1,2", 4, "not a number 'north'"},
+                      BadRow{"0.1,1e6,0.1,0,1", 0, "5 fields, the header has 6"},
+                      BadRow{"-0.5,1e6,0.1,0,1,2", 1, "time goes backwards"}));
+
+TEST(RecordingReader, ConvertsDocumentedUnitsToSi) {
+  const Recording recording = read_text(
+      "time_ms,torque_mnm,misalignment_mrad,direction_deg,msy_knm,msz_mnm,speed_rad_s,"
+      "temperature_k,applied_my_knm,applied_mz_nm,hub_motion_mm\n"
+      "1500,1.2,2,90,-3,0.5,10,300,4,5,0.6\n");
+  ASSERT_EQ(recording.samples.size(), 1u);
+  const RecordedSample& s = recording.samples[0];
+  EXPECT_DOUBLE_EQ(s.input.time_s, 1.5);
+  EXPECT_DOUBLE_EQ(s.input.torque_nm, 1.2e6);
+  EXPECT_DOUBLE_EQ(s.input.misalignment_rad, 2e-3);
+  EXPECT_DOUBLE_EQ(s.input.direction_rad, std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(s.measured.y_nm, -3e3);
+  EXPECT_DOUBLE_EQ(s.measured.z_nm, 0.5e6);
+  EXPECT_NEAR(*s.input.speed_rpm, 10 * 60 / (2 * std::numbers::pi), 1e-12);
+  EXPECT_NEAR(*s.input.temperature_c, 26.85, 1e-9);
+  EXPECT_DOUBLE_EQ(*s.input.applied_moment_y_nm, 4e3);
+  EXPECT_DOUBLE_EQ(*s.input.applied_moment_z_nm, 5.0);
+  EXPECT_DOUBLE_EQ(*s.hub_motion_m, 0.6e-3);
+}
+
+TEST(RecordingReader, DerivesLoadingDirectionFromTheAmplitude) {
+  // Up 0.1 deg per sample, then down, then still for over still_after_s (0.5 s).
+  const Recording recording = read_text(kHeader +
+      "0,1e6,0.0,0,1,2\n0.1,1e6,0.1,0,1,2\n0.2,1e6,0.2,0,1,2\n"
+      "0.3,1e6,0.1,0,1,2\n0.4,1e6,0.0,0,1,2\n"
+      "0.5,1e6,0.0,0,1,2\n1.5,1e6,0.0,0,1,2\n");
+  std::vector<int> directions;
+  for (const auto& s : recording.samples) directions.push_back(s.input.loading_direction);
+  EXPECT_EQ(directions, (std::vector<int>{0, 1, 1, -1, -1, -1, 0}));
+}
+
+TEST(RecordingReader, KeepsAtMostTheRequestedChunk) {
+  std::string text = kHeader;
+  for (int i = 0; i < 2500; ++i) text += std::to_string(i) + ",1e6,0.1,0,1,2\n";
+  const std::string path = temp_path("chunks") + ".csv";
+  write_file(path, text);
+  RecordingReader reader(path);
+  std::vector<RecordedSample> chunk;
+  std::vector<std::size_t> sizes;
+  while (reader.next_chunk(chunk, 1000)) sizes.push_back(chunk.size());
+  EXPECT_EQ(sizes, (std::vector<std::size_t>{1000, 1000, 500}));
+  EXPECT_EQ(reader.rows_read(), 2500u);
+}
+
+TEST(RecordingReader, CountsEveryExcludedRowBeyondTheKeptProblems) {
+  std::string text = kHeader;
+  for (int i = 0; i < 1200; ++i) text += "x,1e6,0.1,0,1,2\n";
+  const Recording recording = read_text(text);
+  EXPECT_EQ(recording.excluded_rows, 1200u);
+  EXPECT_EQ(recording.problems.size(), RecordingReader::kKeptProblems);
+  EXPECT_TRUE(recording.samples.empty());
+}
+
+TEST(RecordingReader, WrittenRowsReadBackExactly) {
+  RecordedSample sample;
+  sample.input = {0.25, 1.234567e6, 0.00321, -2.5, 0};
+  sample.measured = {-123456.789, 98765.4321};
+  sample.input.temperature_c = 41.5;
+  std::string text = recording_header(sample);
+  append_recording_row(text, sample);
+  const Recording recording = read_text(text);
+  ASSERT_EQ(recording.samples.size(), 1u);
+  const RecordedSample& back = recording.samples[0];
+  EXPECT_EQ(back.input.torque_nm, sample.input.torque_nm);
+  EXPECT_EQ(back.input.misalignment_rad, sample.input.misalignment_rad);
+  EXPECT_EQ(back.measured.y_nm, sample.measured.y_nm);
+  EXPECT_EQ(*back.input.temperature_c, 41.5);
+  EXPECT_FALSE(back.input.speed_rpm);
+}
+
+}  // namespace
+}  // namespace gc::cli

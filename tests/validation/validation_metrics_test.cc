@@ -1,0 +1,155 @@
+// Error metrics and where the model fails: exact sums, noise-level errors on a recording from
+// the same model, and the region a hidden effect predicts.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/restoring_torque.h"
+#include "core/synthesis/load_sequence.h"
+#include "core/synthesis/synthesize.h"
+#include "core/validation/error_bins.h"
+#include "core/validation/worst_regions.h"
+#include "test_models.h"
+
+namespace gc {
+namespace {
+
+TEST(ErrorAccumulator, MatchesTheDefinitionsOnAHandExample) {
+  // measured 1, 2, 3, 4; predicted 2, 2, 2, 6: errors +1, 0, -1, +2.
+  ErrorAccumulator a;
+  const double measured[] = {1, 2, 3, 4}, predicted[] = {2, 2, 2, 6};
+  for (int i = 0; i < 4; ++i) a.add(measured[i], predicted[i]);
+  const ErrorMetrics m = a.metrics();
+  EXPECT_EQ(m.count, 4u);
+  EXPECT_DOUBLE_EQ(m.bias_nm, 0.5);
+  EXPECT_DOUBLE_EQ(m.rmse_nm, std::sqrt(6.0 / 4.0));
+  EXPECT_DOUBLE_EQ(m.max_abs_error_nm, 2.0);
+  // SST about the measured mean 2.5: 2.25 + 0.25 + 0.25 + 2.25 = 5; R^2 = 1 - 6/5.
+  ASSERT_TRUE(m.r_squared);
+  EXPECT_NEAR(*m.r_squared, 1.0 - 6.0 / 5.0, 1e-12);
+}
+
+TEST(ErrorAccumulator, MergedHalvesEqualOneRun) {
+  std::mt19937_64 random(1);
+  std::normal_distribution<double> normal(1e6, 3e4);
+  ErrorAccumulator whole, first, second;
+  for (int i = 0; i < 10000; ++i) {
+    const double measured = normal(random), predicted = measured + normal(random) - 1e6;
+    whole.add(measured, predicted);
+    (i < 3000 ? first : second).add(measured, predicted);
+  }
+  first.merge(second);
+  const ErrorMetrics a = whole.metrics(), b = first.metrics();
+  EXPECT_NEAR(a.rmse_nm, b.rmse_nm, 1e-9 * a.rmse_nm);
+  EXPECT_NEAR(a.bias_nm, b.bias_nm, 1e-6);
+  EXPECT_NEAR(*a.r_squared, *b.r_squared, 1e-12);
+  EXPECT_EQ(a.max_abs_error_nm, b.max_abs_error_nm);
+}
+
+TEST(ErrorAccumulator, RSquaredIsAbsentForAConstantMeasurement) {
+  ErrorAccumulator a;
+  for (int i = 0; i < 10; ++i) a.add(5e5, 5e5 + i);
+  EXPECT_FALSE(a.metrics().r_squared);
+  EXPECT_TRUE(std::isfinite(a.metrics().rmse_nm));
+}
+
+TEST(ErrorBinning, TimeBinsWidenAndKeepEverySample) {
+  BinningOptions options;
+  options.jam_angle_rad = 0.01;
+  ErrorBinning time(BinDimension::time, options);
+  MeasurementSample sample;
+  for (int i = 0; i < 100000; ++i) {
+    sample.time_s = 10.0 + 0.01 * i;
+    time.add(sample, {}, {1.0, 1.0});
+  }
+  std::size_t total = 0;
+  for (const ErrorBin& bin : time.bins()) total += bin.errors.count();
+  EXPECT_EQ(total, 100000u);
+  EXPECT_LE(time.bins().size(), 32u);
+  EXPECT_GE(time.bins().size(), 16u);
+  EXPECT_DOUBLE_EQ(time.bins().front().lower, 10.0);
+}
+
+// A recording of `truth` along `kind`, compared with `model` in memory.
+ValidationAccumulator validate(const CouplingModel& truth, const CouplingModel& model,
+                               LoadSequenceKind kind, double noise_nm, int samples = 3400) {
+  LoadSequenceOptions sequence;
+  sequence.kind = kind;
+  sequence.samples = samples;
+  sequence.jam_angle_rad = model.geometry().jam_angle().angle_rad;
+  const auto recording = synthesize(truth, load_sequence(sequence), {noise_nm, 11});
+  BinningOptions binning;
+  binning.jam_angle_rad = sequence.jam_angle_rad;
+  ValidationAccumulator validation(binning);
+  for (const RecordedSample& s : recording.samples) validation.add(s, model.predict(s.input).moments);
+  return validation;
+}
+
+TEST(Validation, SameModelGivesErrorsAtTheNoiseLevel) {
+  const codec::ModelFile paper = testing::bundled_model("paper");
+  const double sigma = 3000.0;
+  for (auto kind : {LoadSequenceKind::moment_sweep, LoadSequenceKind::torque_sweep,
+                    LoadSequenceKind::torque_ramp}) {
+    const ValidationAccumulator v = validate(paper.model, paper.model, kind, sigma);
+    for (Channel channel : kChannels) {
+      const ErrorMetrics m = v.overall()[channel].metrics();
+      EXPECT_NEAR(m.rmse_nm, sigma, 0.1 * sigma) << to_string(kind) << " " << to_string(channel);
+      EXPECT_LT(std::abs(m.bias_nm), 0.1 * sigma);
+      EXPECT_NEAR(v.noise_estimate_nm(channel), sigma, 0.1 * sigma);
+      EXPECT_TRUE(error_signature(v, channel).at_noise_level);
+    }
+  }
+}
+
+TEST(Validation, HiddenEccentricityIsNamedAtTorquesBelowTheRestoringTorque) {
+  // Eccentricity adds misalignment only below s T_m (Section 6.4); above it the paper's model
+  // is right. The worst torque region must lie below T_m, the bins above T_m at noise level.
+  const codec::ModelFile paper = testing::bundled_model("paper");
+  const codec::ModelFile truth = testing::model_with(
+      "paper", "effects { name: \"eccentricity\" parameters { key: \"eccentric_misalignment_rad\" "
+               "value: 0.0015 } }\n");
+  const double sigma = 2000.0;
+  const ValidationAccumulator v =
+      validate(truth.model, paper.model, LoadSequenceKind::torque_ramp, sigma);
+  const double t_m = restoring_torque(paper.model.geometry()).torque_nm;
+  const std::vector<RegionError> regions = worst_regions(v, Channel::y);
+  ASSERT_FALSE(regions.empty());
+  EXPECT_EQ(regions.front().dimension, BinDimension::torque) << describe(regions.front(), 1.5e6);
+  EXPECT_LT(regions.front().region.seen_max, t_m);
+  EXPECT_GT(regions.front().contrast, 1.5);
+  EXPECT_NE(describe(regions.front(), 1.5e6).find("M_sy' errs most at low torque"), std::string::npos)
+      << describe(regions.front(), 1.5e6);
+  for (const ErrorBin& bin : v.binning(BinDimension::torque).bins()) {
+    if (bin.errors.count() < 50 || bin.seen_min < t_m) continue;
+    EXPECT_LT(bin.errors.y.metrics().rmse_nm, 1.2 * sigma) << bin.seen_min;
+  }
+  EXPECT_FALSE(error_signature(v, Channel::y).at_noise_level);
+}
+
+TEST(Validation, FrictionRisingWithMisalignmentIsNamedAtLargeMisalignment) {
+  // mu = mu0 + mu_misalignment zeta / xi: the missing moment grows with the misalignment, so on
+  // a moment sweep the misalignment bins must name the large misalignments.
+  const codec::ModelFile paper = testing::bundled_model("paper");
+  const std::string friction =
+      "name: \"truth\" coupling: \"nrel_upwind\" effects { name: \"friction\" parameters { key: "
+      "\"mu0\" value: 0.1 } parameters { key: \"mu_misalignment\" value: 0.1 } } effects { name: "
+      "\"pressure_angle_rotation\" } effects { name: \"self_weight\" }";
+  const codec::ModelFile rising =
+      codec::parse_model_text(friction, "truth", GC_BUNDLED_CATALOG_DIR, ".");
+  const ValidationAccumulator v =
+      validate(rising.model, paper.model, LoadSequenceKind::moment_sweep, 2000.0, 6000);
+  for (Channel channel : kChannels) {
+    const auto regions = worst_regions(v, channel);
+    const auto misalignment = std::find_if(regions.begin(), regions.end(), [](const auto& r) {
+      return r.dimension == BinDimension::misalignment;
+    });
+    ASSERT_NE(misalignment, regions.end());
+    EXPECT_GT(misalignment->position, 2.0 / 3.0) << describe(*misalignment, 1.5e6);
+    EXPECT_GT(misalignment->contrast, 1.5);
+  }
+}
+
+}  // namespace
+}  // namespace gc
