@@ -5,6 +5,7 @@
 // (the library once, then the signature).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/coupling_geometry.h"
@@ -38,6 +39,9 @@ void run(benchmark::State& state, const std::vector<RecordedSample>& data, std::
     const Diagnosis d = diagnose(model, data, parallel);
     if (d.rounds.size() != expected_rounds) state.SkipWithError(d.summary.c_str());
     benchmark::DoNotOptimize(d.rounds.size());
+    double evaluations = 0.0;
+    for (const CandidateScore& c : d.rounds.front().ranking) evaluations += c.evaluations;
+    state.counters["evaluations_per_candidate"] = evaluations / std::max<std::size_t>(1, d.rounds.front().ranking.size());
   }
   state.counters["samples"] = static_cast<double>(data.size());
 }
