@@ -16,7 +16,7 @@ namespace v1 = gearcoupling::v1;
 // An error from the core or the coupling codec, re-raised under the model file's field path.
 [[noreturn]] void rethrow_in(const InvalidInput& error, const std::string& field,
                              std::string_view source_name) {
-  throw InvalidInput(field, std::string(source_name) + ": " + field + ": " + error.what());
+  throw InvalidInput(field, std::string(source_name) + ": " + error.what());
 }
 
 CouplingDefinition coupling_of(const v1::ModelConfig& config, std::string_view source_name,

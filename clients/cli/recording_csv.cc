@@ -56,10 +56,12 @@ std::string all_columns_text() {
   return text;
 }
 
+// Column 0: the header as a whole (a missing column has no place).
 [[noreturn]] void header_error(std::string_view source, int column, std::string_view name,
                                const std::string& message) {
   throw InvalidInput("recording." + std::string(name.empty() ? "header" : name),
-                     fmt::format("{}:1:{}: {}", source, column, message));
+                     column > 0 ? fmt::format("{}:1:{}: {}", source, column, message)
+                                : fmt::format("{}:1: {}", source, message));
 }
 
 RecordingColumn parse_column(std::string_view name, std::string_view source, int column) {

@@ -88,7 +88,8 @@ function whereItFails() {
   main.append(el("h2", {}, "Where the model fails"));
   for (const m of MODELS) {
     main.append(el("p", {}, el("b", {}, m.model),
-      " - worst region of each input, worst first (contrast: region RMSE / RMSE elsewhere):"));
+      " - noise and systematic error per channel, then the worst region of each input, worst " +
+      "first, from a contrast (region RMSE / RMSE elsewhere) of 1.2:"));
     const list = el("ul");
     for (const sig of m.signatures || []) {
       const shares = (sig.shares || []).filter((x) => num(x.explained_share) >= 0.1)
@@ -99,7 +100,9 @@ function whereItFails() {
         : `noise ${fmt(num(sig.noise_estimate_nm) / 1e3, 2)} kN·m (+) systematic ${fmt(num(sig.systematic_rms_nm) / 1e3, 2)} kN·m; ` +
           `explained by the bins of: ${shares || "no single input"}.`));
     }
-    for (const r of m.worst_regions || []) {
+    // As the terminal: regions of channels above the noise, from a contrast of 1.2.
+    const noisy = new Set((m.signatures || []).filter((x) => x.at_noise_level).map((x) => x.channel));
+    for (const r of (m.worst_regions || []).filter((r) => !noisy.has(r.channel) && num(r.contrast) >= 1.2)) {
       list.append(el("li", {}, `[${fmt(num(r.contrast), 1)}x] ${r.description}`));
     }
     main.append(list);
@@ -173,7 +176,7 @@ const AXIS = { torque: "torque bin [MN·m]", misalignment: "misalignment bin [% 
   direction: "direction bin [deg]", loading: "loading direction", time: "time bin [s]" };
 
 function binnedErrors() {
-  const grid = section("Error by input", "RMSE (bars) of every populated bin; the bias is in the tooltip and the JSON.");
+  const grid = section("Error by input", "RMSE (bars) of every populated bin; each bin's bias is in --json (binnings).");
   const dimensions = (MODELS[0] || { binnings: [] }).binnings.map((b) => b.dimension);
   for (const dimension of dimensions) {
     const bins0 = MODELS[0].binnings.find((b) => b.dimension === dimension).bins;

@@ -54,6 +54,10 @@ std::string shares_text(const v1::ErrorSignatureRecord& signature) {
 void print_signature(const v1::ModelValidation& model, const v1::ErrorSignatureRecord& signature,
                      std::FILE* out) {
   const auto& metrics = signature.channel() == "M_sy'" ? model.overall().msy() : model.overall().msz();
+  if (metrics.count() == 0) {
+    fmt::print(out, "  {}: no sample compared.\n", signature.channel());
+    return;
+  }
   if (signature.at_noise_level()) {
     fmt::print(out, "  {}: at the noise level: RMSE {:.2f} kN·m against a noise estimate of "
                "{:.2f} kN·m; no systematic error to locate.\n", signature.channel(),
