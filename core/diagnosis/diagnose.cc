@@ -146,6 +146,11 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
   Diagnosis out;
   out.rows = observations.size();
+  // A NaN would poison every fit silently: refuse it here, naming the row.
+  for (std::size_t i = 0; i < observations.size(); ++i) {
+    require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
+    require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
+  }
   const std::vector<std::size_t> ordered = time_ordered(observations);
   const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
   out.excluded_rows = first.failed_rows;

@@ -90,7 +90,8 @@ struct Diagnosis {
   std::string summary;                    ///< the verdicts, one line per round
 };
 
-/// Throws InvalidInput when the recording has fewer than 4 * folds * blocks_per_fold usable rows.
+/// Throws InvalidInput naming "recording.rows[i].msy_nm" (or msz_nm) for a non-finite measured
+/// moment, and "recording.rows" when fewer than 4 * folds * blocks_per_fold rows are usable.
 Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
                    const ParallelFor& parallel = serial_for(), const DiagnosisSettings& settings = {});
 

@@ -10,6 +10,7 @@
 
 #include "core/coupling_geometry.h"
 #include "core/diagnosis/diagnose.h"
+#include "core/model_error.h"
 #include "core/synthesis/load_sequence.h"
 #include "core/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
@@ -199,6 +200,22 @@ TEST(Diagnosis, FindsTwoHiddenEffectsOneAfterTheOther) {
   EXPECT_EQ(found, (std::set<std::string>{"hysteresis", "channel_gain_offset"}));
   EXPECT_EQ(d.rounds[2].outcome, RoundOutcome::noise);
   EXPECT_LT(d.rounds[2].rmse_nm, 1.1 * kNoiseNm);
+}
+
+TEST(Diagnosis, RefusesANonFiniteMeasurementAndATooShortRecordingByName) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<RecordedSample> observations = record(model, misalignment_sweeps(), 3);
+  const auto field = [&](const std::vector<RecordedSample>& data) {
+    try {
+      diagnose(model, data);
+    } catch (const InvalidInput& e) {
+      return e.field();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(field({observations.begin(), observations.begin() + 100}), "recording.rows");
+  observations[7].measured.z_nm = std::nan("");
+  EXPECT_EQ(field(observations), "recording.rows[7].msz_nm");
 }
 
 }  // namespace
