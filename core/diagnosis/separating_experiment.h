@@ -1,6 +1,7 @@
 // The experiment that would tell two effects apart when a recording cannot: sweep one recorded
 // input at a time, beyond what the recording covered, and find where the two fitted models'
-// predictions part by more than the noise.
+// predictions part by more than the noise; failing that, tilt the shaft (eq 48's gamma), which
+// tells a weight from a channel offset.
 #pragma once
 
 #include <span>
@@ -12,7 +13,7 @@
 namespace gc {
 
 struct SeparatingExperiment {
-  std::string input;        ///< "torque", "misalignment", "direction", "loading_direction"; empty: none
+  std::string input;        ///< "torque", "misalignment", "direction", "loading_direction", "tilt"; empty: none
   double value = 0.0;       ///< where the predictions part most [input unit]
   double difference_nm = 0.0;  ///< |prediction a - prediction b| there, relative to the reference
   std::string advice;       ///< one sentence for the user

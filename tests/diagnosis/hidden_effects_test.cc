@@ -99,6 +99,7 @@ TEST_P(HiddenEffect, IsRankedFirstAndCutsTheHeldOutErrorByHalfOrToTheNoise) {
     for (const AlikeEffect& a : first.alike) {
       named.insert(a.name);
       EXPECT_FALSE(a.experiment.advice.empty());
+      if (scenario.effect == "self_weight") EXPECT_EQ(a.experiment.input, "tilt") << a.experiment.advice;
     }
     EXPECT_TRUE(named.count(scenario.effect));
     for (const std::string& other : scenario.alike) EXPECT_TRUE(named.count(other)) << other;
@@ -123,7 +124,8 @@ INSTANTIATE_TEST_SUITE_P(
         Scenario{"friction", {{"mu0", {0.05, 0.15}}, {"mu_low_torque", {0.01, 0.04}}, {"mu_misalignment", {0.0, 0.1}}},
                  misalignment_sweeps, {}},
         // At the fixed tilt of one coupling the self-weight moment is a constant on M_sy' (eq 48),
-        // exactly what a channel offset is: the two are the same on any recording of this bench.
+        // exactly what a channel offset is: the two are the same on any recording of this bench,
+        // and only a different tilt (cos gamma) separates them.
         Scenario{"self_weight", {{"weight_scale", {0.5, 2.0}}}, misalignment_sweeps, {"channel_gain_offset"}},
         Scenario{"pressure_angle_rotation", {{"shift_scale", {0.5, 1.5}}}, misalignment_sweeps, {}},
         Scenario{"assembly_misalignment", {{"zeta0_rad", {0.001, 0.003}}, {"beta0_rad", {-3.0, 3.0}}},
