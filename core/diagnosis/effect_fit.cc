@@ -108,7 +108,6 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
   const ParameterValues values = problem.box.to_values(fit.unit_values);
   fit.effect = problem.registration.make(values);
   fit.sum_of_squares = result.cost;
-  fit.residual = Eigen::Map<const Eigen::MatrixX2d>(result.residual.data(), result.residual.size() / 2, 2);
   fit.rows = problem.rows.size();
   fit.evaluations = evaluations;
   const Eigen::Index m = result.residual.size(), p = result.x.size();

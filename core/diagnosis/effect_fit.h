@@ -37,7 +37,6 @@ struct EffectFit {
   Eigen::VectorXd unit_values;           ///< the fitted values in the unit box
   std::vector<bool> free;                ///< which were fitted (the others were held)
   double sum_of_squares = 0.0;           ///< over both channels of the rows fitted [N²·m²]
-  Eigen::MatrixX2d residual;             ///< per fitted row, measured minus predicted [N·m]
   std::size_t rows = 0;
   int evaluations = 0;                   ///< model evaluations over all rows (cost measure)
 };
