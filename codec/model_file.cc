@@ -56,8 +56,16 @@ std::vector<std::shared_ptr<const Effect>> effects_of(const v1::ModelConfig& con
                                                 entry.name() + "' is given twice");
       }
     }
+    ParameterValues values;
+    for (int p = 0; p < entry.parameters_size(); ++p) {
+      const v1::ParameterValue& parameter = entry.parameters(p);
+      if (!values.emplace(parameter.name(), parameter.value()).second) {
+        throw InvalidInput(field + ".parameters[" + std::to_string(p) + "]",
+                           std::string(source_name) + ": parameter '" + parameter.name() +
+                               "' of effect '" + entry.name() + "' is given twice");
+      }
+    }
     try {
-      const ParameterValues values(entry.parameters().begin(), entry.parameters().end());
       effects.push_back(make_effect(entry.name(), values));
     } catch (const InvalidInput& error) {
       // The core names "effects.<name>[.<parameter>]"; keep its tail after the index.
@@ -124,7 +132,9 @@ std::string write_model_text(std::string_view name, std::string_view description
     v1::EffectConfig* entry = config.add_effects();
     entry->set_name(effect->name());
     for (std::size_t i = 0; i < effect->values().size(); ++i) {
-      (*entry->mutable_parameters())[effect->info().parameters[i].name] = effect->values()[i];
+      v1::ParameterValue* parameter = entry->add_parameters();
+      parameter->set_name(effect->info().parameters[i].name);
+      parameter->set_value(effect->values()[i]);
     }
   }
   v1::ContactOptionsConfig* contact = config.mutable_contact();

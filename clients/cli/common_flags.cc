@@ -16,6 +16,10 @@ std::vector<FlagSpec> common_flags() {
        codec::default_catalog_dir().string()},
       {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
        true},
+      {"remote", "", "compute on gearcoupling-service over DDS (CYCLONEDDS_URI) instead of here",
+       std::nullopt, true},
+      {"domain", "N", "DDS domain of the service, with --remote", "0"},
+      {"timeout", "S", "seconds to wait for each reply, with --remote", "10"},
   };
 }
 

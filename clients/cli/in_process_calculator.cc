@@ -1,14 +1,11 @@
 #include "clients/cli/in_process_calculator.h"
 
+#include "clients/cli/coupling_reference.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 
 namespace gc::cli {
 namespace {
-
-bool is_file_reference(std::string_view coupling) {
-  return coupling.find('/') != std::string_view::npos || coupling.ends_with(".textproto");
-}
 
 template <typename Catalog>
 std::string known_names(const Catalog& catalog) {

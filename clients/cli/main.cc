@@ -3,12 +3,13 @@
 // 0 success, 1 failure after running (a batch row, an output file), 2 bad input.
 #include <array>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <span>
 
 #include <fmt/format.h>
 
-#include "clients/cli/in_process_calculator.h"
+#include "clients/cli/make_calculator.h"
 #include "clients/cli/input_names.h"
 #include "clients/cli/subcommand.h"
 #include "core/model_error.h"
@@ -71,8 +72,8 @@ int run(const Subcommand& subcommand, std::span<const char* const> args) {
       fmt::print("{}", usage_text(subcommand.name, subcommand.summary, flags->specs()));
       return 0;
     }
-    const InProcessCalculator calculator(flags->text("catalog"));
-    return subcommand.run(*flags, calculator, stdout);
+    const std::unique_ptr<Calculator> calculator = make_calculator(*flags);
+    return subcommand.run(*flags, *calculator, stdout);
   } catch (const UsageError& error) {
     return fail(error.what());
   } catch (const InvalidInput& error) {

@@ -48,15 +48,21 @@ TEST(ModelFile, UnknownEffectNamesItsEntryAndTheFile) {
 
 TEST(ModelFile, UnknownParameterNamesEffectAndParameter) {
   const InvalidInput error = error_of(
-      kCoupling + "effects { name: \"friction\" parameters { key: \"mu9\" value: 0.1 } }");
+      kCoupling + "effects { name: \"friction\" parameters { name: \"mu9\" value: 0.1 } }");
   EXPECT_EQ(error.field(), "model.effects[0].friction.mu9");
 }
 
 TEST(ModelFile, ParameterOutsideItsBoundsNamesTheParameterAndItsRange) {
   const InvalidInput error = error_of(kCoupling + "effects { name: \"self_weight\" }\n" +
-      "effects { name: \"friction\" parameters { key: \"mu0\" value: 0.9 } }");
+      "effects { name: \"friction\" parameters { name: \"mu0\" value: 0.9 } }");
   EXPECT_EQ(error.field(), "model.effects[1].friction.mu0");
   EXPECT_NE(std::string(error.what()).find("0.9"), std::string::npos) << error.what();
+}
+
+TEST(ModelFile, ParameterGivenTwiceIsAnErrorNotTheLastValue) {
+  const InvalidInput error = error_of(kCoupling + "effects { name: \"friction\" " +
+      "parameters { name: \"mu0\" value: 0.1 } parameters { name: \"mu0\" value: 0.2 } }");
+  EXPECT_EQ(error.field(), "model.effects[0].parameters[1]");
 }
 
 TEST(ModelFile, EffectGivenTwiceIsAnError) {

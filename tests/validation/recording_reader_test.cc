@@ -145,7 +145,10 @@ TEST(RecordingReader, CountsEveryExcludedRowBeyondTheKeptProblems) {
 
 TEST(RecordingReader, WrittenRowsReadBackExactly) {
   RecordedSample sample;
-  sample.input = {0.25, 1.234567e6, 0.00321, -2.5, 0};
+  sample.input.time_s = 0.25;
+  sample.input.torque_nm = 1.234567e6;
+  sample.input.misalignment_rad = 0.00321;
+  sample.input.direction_rad = -2.5;
   sample.measured = {-123456.789, 98765.4321};
   sample.input.temperature_c = 41.5;
   std::string text = recording_header(sample);

@@ -113,7 +113,7 @@ TEST(ValidateCli, MissingColumnIsBadInputNamingIt) {
 
 TEST(ValidateCli, ModelFileErrorIsBadInputNamingFieldAndFile) {
   const std::string model = temp_path("bad_model") + ".textproto";
-  write_file(model, "coupling: \"nrel_upwind\"\neffects { name: \"friction\" parameters { key: "
+  write_file(model, "coupling: \"nrel_upwind\"\neffects { name: \"friction\" parameters { name: "
                     "\"mu0\" value: -0.1 } }\n");
   const ProcessResult run = run_gearcoupling(
       {"validate", "--data", kRecordings + "/paper_torque_ramp.csv", "--model", model});

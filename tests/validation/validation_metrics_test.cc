@@ -108,7 +108,7 @@ TEST(Validation, HiddenEccentricityIsNamedAtTorquesBelowTheRestoringTorque) {
   // is right. The worst torque region must lie below T_m, the bins above T_m at noise level.
   const codec::ModelFile paper = testing::bundled_model("paper");
   const codec::ModelFile truth = testing::model_with(
-      "paper", "effects { name: \"eccentricity\" parameters { key: \"eccentric_misalignment_rad\" "
+      "paper", "effects { name: \"eccentricity\" parameters { name: \"eccentric_misalignment_rad\" "
                "value: 0.0015 } }\n");
   const double sigma = 2000.0;
   const ValidationAccumulator v =
@@ -133,8 +133,8 @@ TEST(Validation, FrictionRisingWithMisalignmentIsNamedAtLargeMisalignment) {
   // a moment sweep the misalignment bins must name the large misalignments.
   const codec::ModelFile paper = testing::bundled_model("paper");
   const std::string friction =
-      "name: \"truth\" coupling: \"nrel_upwind\" effects { name: \"friction\" parameters { key: "
-      "\"mu0\" value: 0.1 } parameters { key: \"mu_misalignment\" value: 0.1 } } effects { name: "
+      "name: \"truth\" coupling: \"nrel_upwind\" effects { name: \"friction\" parameters { name: "
+      "\"mu0\" value: 0.1 } parameters { name: \"mu_misalignment\" value: 0.1 } } effects { name: "
       "\"pressure_angle_rotation\" } effects { name: \"self_weight\" }";
   const codec::ModelFile rising =
       codec::parse_model_text(friction, "truth", GC_BUNDLED_CATALOG_DIR, ".");

@@ -1,0 +1,151 @@
+// Round-trip latency and throughput of gearcoupling-service (docs/benchmarks.md, "Service").
+// Runs against a service already started on --domain (bench/service_bench.sh starts one, and
+// ddsperf ping/pong on the same configuration for the floor).
+//
+//   service_bench --domain N [--latency-requests 5000] [--seconds 3] [--clients 1,8,32]
+//                 [--window 64]
+//
+// Latency: one client, one blocking call at a time, jam-angle then induced-moments requests
+// (catalogue coupling nrel_upwind); p50/p99/mean of the round trip. Throughput: K clients (each
+// its own participant and reply partition, one thread each) keeping --window induced-moments
+// requests in flight for --seconds; completed replies per second. Every loop is bounded in
+// count and time.
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "clients/remote/client.h"
+
+namespace {
+
+using gc::protocol::Calculation;
+using gc::protocol::CatalogueName;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  int domain = 0;
+  int latency_requests = 5000;
+  double seconds = 3.0;
+  std::vector<int> clients = {1, 8, 32};
+  std::size_t window = 64;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    const std::string value = argv[i + 1];
+    if (flag == "--domain") o.domain = std::atoi(value.c_str());
+    else if (flag == "--latency-requests") o.latency_requests = std::atoi(value.c_str());
+    else if (flag == "--seconds") o.seconds = std::atof(value.c_str());
+    else if (flag == "--window") o.window = static_cast<std::size_t>(std::atoi(value.c_str()));
+    else if (flag == "--clients") {
+      o.clients.clear();
+      std::stringstream list(value);
+      for (std::string item; std::getline(list, item, ',');) o.clients.push_back(std::atoi(item.c_str()));
+    } else {
+      std::fprintf(stderr, "unknown flag %s\n", flag.c_str());
+      std::exit(2);
+    }
+  }
+  return o;
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  const auto rank = static_cast<std::size_t>(p * static_cast<double>(v.size()));
+  return v[std::min(rank, v.size() - 1)];
+}
+
+const gc::OperatingPoint kPoint{1.5e6, 0.007, 0.0, 0.1};
+
+template <Calculation kCalculation, typename Request>
+void latency(gc::client::Client& client, const char* name, const Request& request, int count) {
+  for (int i = 0; i < 200; ++i) client.call<kCalculation>(request);  // warm up
+  std::vector<double> us;
+  us.reserve(static_cast<std::size_t>(count));
+  const Clock::time_point stop = Clock::now() + std::chrono::seconds(30);
+  for (int i = 0; i < count && Clock::now() < stop; ++i) {
+    const Clock::time_point start = Clock::now();
+    client.call<kCalculation>(request);
+    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+  }
+  double mean = 0.0;
+  for (double x : us) mean += x / static_cast<double>(us.size());
+  std::printf("latency %-16s n=%zu p50=%.1fus p99=%.1fus mean=%.1fus\n", name, us.size(),
+              percentile(us, 0.50), percentile(us, 0.99), mean);
+}
+
+void throughput(const Options& o, int clients) {
+  std::vector<std::unique_ptr<gc::client::Client>> pool;
+  for (int c = 0; c < clients; ++c) {
+    pool.push_back(std::make_unique<gc::client::Client>(
+        gc::client::ClientOptions{o.domain, std::chrono::seconds(30)}));
+  }
+  for (auto& client : pool) {
+    if (!client->wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(20))) {
+      std::fprintf(stderr, "no service on domain %d\n", o.domain);
+      std::exit(1);
+    }
+  }
+  std::atomic<long> completed{0};
+  std::atomic<bool> measuring{false};
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> threads;
+  for (int c = 0; c < clients; ++c) {
+    threads.emplace_back([&, c] {
+      gc::client::Client& client = *pool[static_cast<std::size_t>(c)];
+      std::deque<std::future<gc::InducedMoments>> in_flight;
+      const gc::protocol::InducedMomentsRequest request{CatalogueName{"nrel_upwind"}, kPoint, {}};
+      while (!stop) {
+        while (in_flight.size() < o.window) {
+          in_flight.push_back(client.call_async<Calculation::kInducedMoments>(request));
+        }
+        in_flight.front().get();
+        in_flight.pop_front();
+        if (measuring) completed.fetch_add(1, std::memory_order_relaxed);
+      }
+      while (!in_flight.empty()) {
+        in_flight.front().get();
+        in_flight.pop_front();
+      }
+    });
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // ramp up
+  const Clock::time_point start = Clock::now();
+  measuring = true;
+  std::this_thread::sleep_for(std::chrono::duration<double>(o.seconds));
+  measuring = false;
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  stop = true;
+  for (std::thread& thread : threads) thread.join();
+  std::printf("throughput clients=%-3d window=%zu %.0f req/s (%ld replies in %.2f s)\n", clients,
+              o.window, static_cast<double>(completed) / elapsed, completed.load(), elapsed);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  {
+    gc::client::Client client({o.domain, std::chrono::seconds(30)});
+    if (!client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(20))) {
+      std::fprintf(stderr, "no service on domain %d\n", o.domain);
+      return 1;
+    }
+    latency<Calculation::kJamAngle>(client, "jam_angle", gc::protocol::JamAngleRequest{CatalogueName{"nrel_upwind"}},
+                                    o.latency_requests);
+    latency<Calculation::kInducedMoments>(
+        client, "induced_moments",
+        gc::protocol::InducedMomentsRequest{CatalogueName{"nrel_upwind"}, kPoint, {}},
+        o.latency_requests);
+  }
+  for (int clients : o.clients) throughput(o, clients);
+  return 0;
+}

@@ -1,0 +1,15 @@
+// The Calculator the common flags ask for: in process, or gearcoupling-service with --remote.
+#pragma once
+
+#include <memory>
+
+#include "clients/cli/calculator.h"
+#include "clients/cli/command_line.h"
+
+namespace gc::cli {
+
+/// --remote [--domain N] [--timeout S]: a RemoteCalculator; otherwise an InProcessCalculator
+/// on --catalog. Throws UsageError for --remote in a build without the service.
+std::unique_ptr<Calculator> make_calculator(const Flags& flags);
+
+}  // namespace gc::cli

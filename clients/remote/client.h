@@ -1,0 +1,208 @@
+// The C++ client of gearcoupling-service (docs/protocol.md, docs/architecture.md).
+//
+//   gc::client::Client client({.domain = 7});
+//   gc::JamAngle jam = client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+//   auto future = client.call_async<Calculation::kInducedMoments>(request);  // many in flight
+//
+// Discovery is handled: instances are found through the status topic, and no request is
+// written to an instance before this client's request writer has matched the instance's
+// request reader and the instance's reply writer (recognised by its USER_DATA) has matched this
+// client's reply reader, so the first request is never lost. Requests are spread round-robin
+// over the live instances that accept work; when an instance disappears (its status is disposed
+// or its liveliness lapses) the requests it had not answered are sent again to another one. A
+// reply that arrives for a request already answered is dropped and counted.
+//
+// Errors: the model's errors come back as the core's exception types with the core's message
+// (gc::InvalidInput naming the field, gc::NotConverged), or protocol::ServiceError for the rest;
+// a call that gets no reply within ClientOptions::timeout fails with client::Timeout.
+// Thread-safe: any number of threads may call at once.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "clients/remote/client_error.h"
+#include "clients/remote/reply_error.h"
+#include "protocol/calculation_traits.h"
+#include "protocol/dds_entity.h"
+#include "protocol/requests.h"
+#include "protocol/samples.h"
+#include "protocol/wire_requests.h"
+#include "protocol/wire_results.h"
+
+namespace gc::client {
+
+struct ClientOptions {
+  int domain = 0;  ///< DDS domain id [0, 232]; the network comes from CYCLONEDDS_URI
+  /// Longest a call waits, from the call to its reply, including discovery of a service.
+  std::chrono::milliseconds timeout{5000};
+};
+
+/// One calculation's figures in an instance's status.
+struct CalculationStatus {
+  std::string calculation;          ///< "tooth_contact", ...
+  std::uint64_t served = 0;         ///< OK replies
+  std::uint64_t failed = 0;         ///< error replies
+  double p50_service_time_s = 0.0;  ///< over its last 4096 requests [s]
+  double p99_service_time_s = 0.0;
+};
+
+/// A service instance as its latest status describes it.
+struct InstanceInfo {
+  std::uint64_t id = 0;
+  std::string host;
+  int pid = 0;
+  bool accepting = false;
+  unsigned threads = 0;
+  double uptime_s = 0.0;
+  std::vector<std::string> catalogue;  ///< coupling names it serves
+  std::vector<CalculationStatus> calculations;
+};
+
+/// What happened to this client's requests so far.
+struct ClientCounters {
+  std::uint64_t sent = 0;          ///< requests written, resends included
+  std::uint64_t replies = 0;       ///< replies matched to a pending request
+  std::uint64_t resent = 0;        ///< requests sent again after their instance disappeared
+  std::uint64_t duplicates = 0;    ///< replies for a request no longer pending (dropped)
+  std::uint64_t foreign = 0;       ///< replies carrying another client's id (never expected)
+  std::uint64_t timeouts = 0;      ///< requests failed with Timeout
+};
+
+class Client {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// Joins the domain and starts discovering instances. Throws protocol::DdsError.
+  explicit Client(ClientOptions options);
+  /// Fails the pending requests with ClientClosed and leaves the domain.
+  ~Client();
+  Client(const Client&) = delete;
+  Client& operator=(const Client&) = delete;
+
+  /// Sends `request` and returns at once; the future holds the result or the error.
+  template <protocol::Calculation kCalculation>
+  std::future<typename protocol::CalculationTraits<kCalculation>::Result> call_async(
+      const typename protocol::CalculationTraits<kCalculation>::Request& request);
+
+  /// call_async(request).get(): the result, or throws the error. Looks for the reply for a
+  /// short while (yielding the core) before sleeping: a sleeping thread takes tens of
+  /// microseconds to wake, as long as a loopback round trip.
+  template <protocol::Calculation kCalculation>
+  typename protocol::CalculationTraits<kCalculation>::Result call(
+      const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+    auto future = call_async<kCalculation>(request);
+    const Clock::time_point spin_until = Clock::now() + std::chrono::microseconds(200);
+    while (future.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
+           Clock::now() < spin_until) {
+      std::this_thread::yield();
+    }
+    return future.get();
+  }
+
+  /// Waits until some instance is ready to take `calculation`; false at `timeout`.
+  bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
+  /// Live instances known from the status topic.
+  std::vector<InstanceInfo> instances() const;
+  ClientCounters counters() const;
+  std::uint64_t client_id() const { return client_id_; }
+  const ClientOptions& options() const { return options_; }
+
+ private:
+  struct Pending;
+  struct Instance;
+
+  /// Registers `pending` under a new sequence number and sends it (waiting for a ready instance
+  /// until its deadline). `write` writes the request sample with that sequence number.
+  void send(std::uint64_t sequence, Pending pending);
+  std::uint64_t next_sequence();
+  void receive_loop();
+  template <protocol::Calculation kCalculation>
+  void take_replies();
+  void take_status();
+  /// Fails requests past their deadline and sends orphaned ones (instance gone) to another.
+  void maintain();
+  Instance* pick_ready_locked(protocol::Calculation calculation);
+  bool ready_locked(Instance& instance, protocol::Calculation calculation);
+
+  ClientOptions options_;
+  std::uint64_t client_id_;
+  protocol::Entity participant_;
+  std::array<protocol::Entity, 5> request_topics_;
+  std::array<protocol::Entity, 5> reply_topics_;
+  protocol::Entity status_topic_;
+  protocol::Entity reply_subscriber_;
+  std::array<protocol::Entity, 5> reply_readers_;
+  protocol::Entity status_subscriber_;
+  protocol::Entity status_reader_;
+  protocol::Entity guard_;
+  protocol::Entity waitset_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable instances_changed_;
+  std::map<std::uint64_t, std::unique_ptr<Instance>> instances_;
+  std::map<dds_instance_handle_t, std::uint64_t> status_handles_;
+  std::map<std::uint64_t, Pending> pending_;
+  std::uint64_t sequence_ = 0;
+  std::size_t round_robin_ = 0;
+  ClientCounters counters_;
+  bool closing_ = false;
+  std::thread receiver_;
+};
+
+// ---- implementation of the templates ----------------------------------------------------------
+
+struct Client::Pending {
+  protocol::Calculation calculation{};
+  std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
+  Clock::time_point deadline;
+  Clock::time_point resend_at;  ///< when instance == 0: not before this
+  std::function<dds_return_t(dds_entity_t writer)> write;
+  std::function<void(const void* wire_reply)> deliver;
+  std::function<void(std::exception_ptr)> fail;
+};
+
+template <protocol::Calculation kCalculation>
+std::future<typename protocol::CalculationTraits<kCalculation>::Result> Client::call_async(
+    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+  using T = protocol::CalculationTraits<kCalculation>;
+  using Result = typename T::Result;
+  auto sample = std::make_shared<protocol::OwnedSample<typename T::WireRequest>>(T::request_type());
+  protocol::to_wire(request, sample->get());
+  const std::uint64_t sequence = next_sequence();
+  sample->get().correlation.client_id = client_id_;
+  sample->get().correlation.sequence_number = sequence;
+
+  auto promise = std::make_shared<std::promise<Result>>();
+  std::future<Result> future = promise->get_future();
+  Pending pending;
+  pending.calculation = kCalculation;
+  pending.deadline = Clock::now() + options_.timeout;
+  pending.write = [sample](dds_entity_t writer) { return dds_write(writer, &sample->get()); };
+  pending.deliver = [promise](const void* wire) {
+    const auto& reply = *static_cast<const typename T::WireReply*>(wire);
+    if (reply.status == gearcoupling_STATUS_OK) {
+      promise->set_value(protocol::from_wire(reply.result));
+      return;
+    }
+    try {
+      throw_reply_error(reply.status, reply.field, reply.message);
+    } catch (...) {
+      promise->set_exception(std::current_exception());
+    }
+  };
+  pending.fail = [promise](std::exception_ptr error) { promise->set_exception(error); };
+  send(sequence, std::move(pending));
+  return future;
+}
+
+}  // namespace gc::client

@@ -1,0 +1,55 @@
+// One table binding each calculation to its request and result types, its IDL C types and
+// their type descriptors, so the service and the client library handle all five with one
+// generic piece of code each.
+#pragma once
+
+#include <dds/dds.h>
+
+#include "core/friction_estimate.h"
+#include "core/induced_moments.h"
+#include "core/jam_angle.h"
+#include "core/restoring_torque.h"
+#include "core/tooth_contact.h"
+#include "gearcoupling.h"
+#include "protocol/calculation.h"
+#include "protocol/jam_angle_result.h"
+#include "protocol/requests.h"
+
+namespace gc::protocol {
+
+template <Calculation kCalculation>
+struct CalculationTraits;
+
+#define GC_PROTOCOL_CALCULATION_TRAITS(ENUM, NAME, RESULT)                               \
+  template <>                                                                            \
+  struct CalculationTraits<Calculation::ENUM> {                                          \
+    static constexpr Calculation kId = Calculation::ENUM;                                \
+    using Request = NAME##Request;                                                       \
+    using Result = RESULT;                                                               \
+    using WireRequest = gearcoupling_##NAME##Request;                                    \
+    using WireReply = gearcoupling_##NAME##Reply;                                        \
+    static const dds_topic_descriptor_t& request_type() {                                \
+      return gearcoupling_##NAME##Request_desc;                                          \
+    }                                                                                    \
+    static const dds_topic_descriptor_t& reply_type() { return gearcoupling_##NAME##Reply_desc; } \
+  };
+
+GC_PROTOCOL_CALCULATION_TRAITS(kToothContact, ToothContact, gc::ToothContact)
+GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle, protocol::JamAngleResult)
+GC_PROTOCOL_CALCULATION_TRAITS(kInducedMoments, InducedMoments, gc::InducedMoments)
+GC_PROTOCOL_CALCULATION_TRAITS(kRestoringTorque, RestoringTorque, gc::RestoringTorque)
+GC_PROTOCOL_CALCULATION_TRAITS(kFrictionEstimate, FrictionEstimate, gc::FrictionEstimate)
+
+#undef GC_PROTOCOL_CALCULATION_TRAITS
+
+/// Calls f(std::integral_constant<Calculation, c>{}) for each of the five calculations.
+template <typename Function>
+void for_each_calculation(Function&& f) {
+  f(std::integral_constant<Calculation, Calculation::kToothContact>{});
+  f(std::integral_constant<Calculation, Calculation::kJamAngle>{});
+  f(std::integral_constant<Calculation, Calculation::kInducedMoments>{});
+  f(std::integral_constant<Calculation, Calculation::kRestoringTorque>{});
+  f(std::integral_constant<Calculation, Calculation::kFrictionEstimate>{});
+}
+
+}  // namespace gc::protocol

@@ -1,0 +1,71 @@
+// Small RAII owners for the Cyclone DDS C API: an entity handle deleted with its owner, a QoS
+// object, and the error type every failed call becomes.
+#pragma once
+
+#include <dds/dds.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace gc::protocol {
+
+/// A DDS call failed. what() names the call and Cyclone's return code text.
+class DdsError : public std::runtime_error {
+ public:
+  DdsError(const std::string& call, dds_return_t code);
+  dds_return_t code() const noexcept { return code_; }
+
+ private:
+  dds_return_t code_;
+};
+
+/// Returns `result` (an entity or a count) when it is not negative, else throws DdsError.
+dds_entity_t check_dds(dds_entity_t result, const char* call);
+
+/// Owns one DDS entity: dds_delete() on destruction (which also deletes its children).
+class Entity {
+ public:
+  Entity() = default;
+  explicit Entity(dds_entity_t handle) : handle_(handle) {}
+  Entity(const Entity&) = delete;
+  Entity& operator=(const Entity&) = delete;
+  Entity(Entity&& other) noexcept : handle_(std::exchange(other.handle_, 0)) {}
+  Entity& operator=(Entity&& other) noexcept {
+    if (this != &other) {
+      reset();
+      handle_ = std::exchange(other.handle_, 0);
+    }
+    return *this;
+  }
+  ~Entity() { reset(); }
+
+  dds_entity_t get() const noexcept { return handle_; }
+  explicit operator bool() const noexcept { return handle_ > 0; }
+  void reset() noexcept {
+    if (handle_ > 0) dds_delete(handle_);
+    handle_ = 0;
+  }
+
+ private:
+  dds_entity_t handle_ = 0;
+};
+
+/// Owns a dds_qos_t.
+class Qos {
+ public:
+  Qos() : qos_(dds_create_qos()) {}
+  Qos(const Qos&) = delete;
+  Qos& operator=(const Qos&) = delete;
+  Qos(Qos&& other) noexcept : qos_(std::exchange(other.qos_, nullptr)) {}
+  Qos& operator=(Qos&&) = delete;
+  ~Qos() {
+    if (qos_ != nullptr) dds_delete_qos(qos_);
+  }
+  dds_qos_t* get() const noexcept { return qos_; }
+
+ private:
+  dds_qos_t* qos_;
+};
+
+}  // namespace gc::protocol

@@ -1,0 +1,34 @@
+#include "protocol/matching.h"
+
+#include <vector>
+
+namespace gc::protocol {
+
+std::uint32_t matched_reader_count(dds_entity_t writer) {
+  dds_publication_matched_status_t status{};
+  if (dds_get_publication_matched_status(writer, &status) < 0) return 0;
+  return status.current_count;
+}
+
+bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag) {
+  std::vector<dds_instance_handle_t> handles(64);
+  const dds_return_t n = dds_get_matched_publications(reader, handles.data(), handles.size());
+  if (n <= 0) return false;
+  handles.resize(std::min<std::size_t>(static_cast<std::size_t>(n), handles.size()));
+  for (dds_instance_handle_t handle : handles) {
+    dds_builtintopic_endpoint_t* endpoint = dds_get_matched_publication_data(reader, handle);
+    if (endpoint == nullptr) continue;
+    void* value = nullptr;
+    size_t size = 0;
+    bool same = false;
+    if (endpoint->qos != nullptr && dds_qget_userdata(endpoint->qos, &value, &size)) {
+      same = size == tag.size() && value != nullptr && tag.compare(0, size, static_cast<const char*>(value), size) == 0;
+      dds_free(value);
+    }
+    dds_builtintopic_free_endpoint(endpoint);
+    if (same) return true;
+  }
+  return false;
+}
+
+}  // namespace gc::protocol

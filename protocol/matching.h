@@ -1,0 +1,31 @@
+// Is the other side there yet? Matching checks that close the discovery race of request/reply
+// (a sample written before the reader on the other side is matched is lost).
+#pragma once
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <thread>
+
+namespace gc::protocol {
+
+/// Readers currently matched with `writer`.
+std::uint32_t matched_reader_count(dds_entity_t writer);
+
+/// True when `reader` is matched with at least one writer whose USER_DATA equals `tag`.
+bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag);
+
+/// Calls `ready` every `poll` until it returns true or `deadline` passes; returns its last value.
+template <typename Predicate>
+bool wait_until(Predicate ready, std::chrono::steady_clock::time_point deadline,
+                std::chrono::microseconds poll = std::chrono::microseconds(500)) {
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(poll);
+  }
+  return true;
+}
+
+}  // namespace gc::protocol

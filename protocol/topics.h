@@ -1,0 +1,20 @@
+// The protocol's topics on one participant, created the same way by the service and clients.
+#pragma once
+
+#include <array>
+
+#include "protocol/dds_entity.h"
+
+namespace gc::protocol {
+
+/// The five request topics, indexed by index_of(Calculation).
+std::array<Entity, 5> make_request_topics(dds_entity_t participant);
+/// The five reply topics, indexed by index_of(Calculation).
+std::array<Entity, 5> make_reply_topics(dds_entity_t participant);
+/// "gearcoupling/status".
+Entity make_status_topic(dds_entity_t participant);
+
+/// The raw handles of `entities`.
+std::array<dds_entity_t, 5> handles(const std::array<Entity, 5>& entities);
+
+}  // namespace gc::protocol

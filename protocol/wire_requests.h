@@ -1,0 +1,22 @@
+// Whole requests between core value types (requests.h) and the IDL's C types. Correlation is
+// written by the caller.
+#pragma once
+
+#include "gearcoupling.h"
+#include "protocol/requests.h"
+
+namespace gc::protocol {
+
+void to_wire(const ToothContactRequest& in, gearcoupling_ToothContactRequest& out);
+void to_wire(const JamAngleRequest& in, gearcoupling_JamAngleRequest& out);
+void to_wire(const InducedMomentsRequest& in, gearcoupling_InducedMomentsRequest& out);
+void to_wire(const RestoringTorqueRequest& in, gearcoupling_RestoringTorqueRequest& out);
+void to_wire(const FrictionEstimateRequest& in, gearcoupling_FrictionEstimateRequest& out);
+
+ToothContactRequest from_wire(const gearcoupling_ToothContactRequest& in);
+JamAngleRequest from_wire(const gearcoupling_JamAngleRequest& in);
+InducedMomentsRequest from_wire(const gearcoupling_InducedMomentsRequest& in);
+RestoringTorqueRequest from_wire(const gearcoupling_RestoringTorqueRequest& in);
+FrictionEstimateRequest from_wire(const gearcoupling_FrictionEstimateRequest& in);
+
+}  // namespace gc::protocol

@@ -1,0 +1,94 @@
+// gearcoupling-service: configuration, logging, the catalogue, signals; Service does the rest.
+#include <pthread.h>
+#include <signal.h>
+
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "codec/coupling_catalog.h"
+#include "core/model_error.h"
+#include "protocol/dds_entity.h"
+#include "service/service.h"
+#include "service/service_config.h"
+
+namespace {
+
+/// Blocks SIGINT and SIGTERM in every thread (call before starting any) and returns the set, for
+/// a thread that waits for them with sigwait: DDS calls are not async-signal-safe.
+sigset_t block_shutdown_signals() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const sigset_t signals = block_shutdown_signals();
+  auto logger = spdlog::stderr_color_mt("gearcoupling-service");
+  spdlog::set_default_logger(logger);
+  spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
+
+  gc::service::ServiceCommand command;
+  try {
+    command = gc::service::parse_service_command(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const gc::ModelError& e) {
+    std::fprintf(stderr, "gearcoupling-service: %s\n\n%s", e.what(),
+                 gc::service::service_usage().c_str());
+    return 2;
+  }
+  if (command.help) {
+    std::fputs(gc::service::service_usage().c_str(), stdout);
+    return 0;
+  }
+  const gc::service::ServiceConfig& config = command.config;
+  spdlog::set_level(spdlog::level::from_str(config.log_level));
+  spdlog::flush_on(spdlog::level::info);
+
+  try {
+    const std::filesystem::path catalogue_dir = config.catalogue_dir.empty()
+                                                    ? gc::codec::default_catalog_dir()
+                                                    : std::filesystem::path(config.catalogue_dir);
+    spdlog::info("config: domain={} threads={} catalogue_dir={} log_level={} status_interval={}s "
+                 "stats_interval={}s lease={}s reply_match_timeout={}s reply_block={}s departed_hold={}s "
+                 "shutdown_grace={}s "
+                 "CYCLONEDDS_URI={}",
+                 config.domain, config.threads, catalogue_dir.string(), config.log_level,
+                 config.status_interval_s, config.stats_log_interval_s, config.liveliness_lease_s,
+                 config.reply_match_timeout_s, config.reply_block_s, config.departed_hold_s,
+                 config.shutdown_grace_s,
+                 std::getenv("CYCLONEDDS_URI") ? std::getenv("CYCLONEDDS_URI") : "(unset)");
+    if (std::getenv("CYCLONEDDS_URI") == nullptr) {
+      spdlog::warn("CYCLONEDDS_URI is not set: Cyclone's defaults apply (every interface, "
+                   "multicast); deploy/cyclonedds-loopback.xml keeps DDS on loopback");
+    }
+    gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
+    gc::service::Service service(config, std::move(catalogue));
+
+    std::thread signal_waiter([&service, signals] {
+      int signal = 0;
+      sigwait(&signals, &signal);
+      if (signal != SIGUSR1) spdlog::info("received signal {}", signal);
+      service.request_stop();
+    });
+    service.run();
+    // run() returned without a signal only if it failed; wake the waiter either way.
+    pthread_kill(signal_waiter.native_handle(), SIGTERM);
+    signal_waiter.join();
+  } catch (const gc::ModelError& e) {
+    spdlog::error("cannot start: {}", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    spdlog::error("cannot start: {}", e.what());
+    return 1;
+  }
+  return 0;
+}

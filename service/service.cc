@@ -1,0 +1,281 @@
+#include "service/service.h"
+
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "protocol/calculation_traits.h"
+#include "protocol/matching.h"
+#include "protocol/names.h"
+#include "protocol/qos.h"
+#include "protocol/random_id.h"
+#include "protocol/reply_status.h"
+#include "protocol/samples.h"
+#include "protocol/topics.h"
+#include "protocol/wire_inputs.h"
+#include "protocol/wire_requests.h"
+#include "protocol/wire_results.h"
+#include "service/compute.h"
+
+namespace gc::service {
+
+using protocol::Calculation;
+using protocol::CalculationTraits;
+using protocol::check_dds;
+using protocol::Entity;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+unsigned worker_count(unsigned configured) {
+  if (configured > 0) return configured;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+Clock::duration seconds(double s) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
+}  // namespace
+
+Service::Service(const ServiceConfig& config, Catalogue catalogue)
+    : config_(config),
+      catalogue_(std::move(catalogue)),
+      instance_id_(protocol::random_id()),
+      participant_(check_dds(dds_create_participant(static_cast<dds_domainid_t>(config.domain),
+                                                    nullptr, nullptr),
+                             "dds_create_participant")),
+      request_topics_(protocol::make_request_topics(participant_.get())),
+      reply_topics_(protocol::make_reply_topics(participant_.get())),
+      reply_writers_(participant_.get(), protocol::handles(reply_topics_), protocol::hex_id(instance_id_),
+                     config.reply_block_s),
+      status_(participant_.get(), instance_id_, worker_count(config.threads),
+              config.liveliness_lease_s, catalogue_, stats_),
+      pool_(worker_count(config.threads)) {
+  const protocol::Qos partition = protocol::partition_qos(protocol::request_partition(instance_id_));
+  request_subscriber_ = Entity(check_dds(
+      dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
+  waitset_ = Entity(check_dds(dds_create_waitset(participant_.get()), "dds_create_waitset"));
+  // Requests are taken in Cyclone's delivery thread (a data-available listener), not by a
+  // thread woken through a waitset: one thread hop less on every round trip.
+  const protocol::Qos qos = protocol::request_reply_qos();
+  protocol::for_each_calculation([&](auto calculation) {
+    constexpr Calculation kCalculation = decltype(calculation)::value;
+    dds_listener_t* listener = dds_create_listener(this);
+    dds_lset_data_available(listener, [](dds_entity_t, void* service) {
+      static_cast<Service*>(service)->take_requests<kCalculation>();
+    });
+    const std::size_t i = protocol::index_of(kCalculation);
+    request_readers_[i] = Entity(check_dds(
+        dds_create_reader(request_subscriber_.get(), request_topics_[i].get(), qos.get(), listener),
+        "dds_create_reader(request)"));
+    dds_delete_listener(listener);
+  });
+  subscriptions_reader_ = Entity(check_dds(
+      dds_create_reader(participant_.get(), DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr),
+      "dds_create_reader(DCPSSubscription)"));
+  dds_set_status_mask(subscriptions_reader_.get(), DDS_DATA_AVAILABLE_STATUS);
+  check_dds(dds_waitset_attach(waitset_.get(), subscriptions_reader_.get(), 0),
+            "dds_waitset_attach");
+  guard_ = Entity(check_dds(dds_create_guardcondition(participant_.get()),
+                            "dds_create_guardcondition"));
+  check_dds(dds_waitset_attach(waitset_.get(), guard_.get(), 0), "dds_waitset_attach");
+}
+
+Service::~Service() { pool_.drain_and_stop(); }
+
+void Service::request_stop() {
+  stop_requested_ = true;
+  dds_set_guardcondition(guard_.get(), true);
+}
+
+template <Calculation kCalculation>
+void Service::take_requests() {
+  using T = CalculationTraits<kCalculation>;
+  const dds_entity_t reader = request_readers_[protocol::index_of(kCalculation)].get();
+  for (;;) {
+    protocol::LoanedSamples<typename T::WireRequest> samples(reader);
+    if (samples.size() == 0) return;
+    const Clock::time_point received = Clock::now();
+    std::vector<std::function<void()>> jobs;
+    jobs.reserve(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (!samples.info(i).valid_data) continue;
+      const gearcoupling_Correlation correlation = samples[i].correlation;
+      std::optional<typename T::Request> request;
+      std::exception_ptr malformed;
+      try {
+        request = protocol::from_wire(samples[i]);
+      } catch (...) {
+        malformed = std::current_exception();
+      }
+      jobs.emplace_back([this, correlation, request = std::move(request), malformed, received] {
+        answer<kCalculation>(correlation, request, malformed, received);
+      });
+    }
+    // Never answered here: in the listener this is Cyclone's receive thread, and a reliable
+    // write blocked on flow control would wait for acknowledgements only this thread can read.
+    for (auto& job : jobs) pool_.submit(std::move(job));
+  }
+}
+
+template <Calculation kCalculation>
+void Service::answer(const gearcoupling_Correlation& correlation,
+                     const std::optional<typename CalculationTraits<kCalculation>::Request>& request,
+                     std::exception_ptr malformed, Clock::time_point received) {
+  using T = CalculationTraits<kCalculation>;
+  protocol::OwnedSample<typename T::WireReply> sample(T::reply_type());
+  typename T::WireReply& reply = sample.get();
+  reply.correlation = correlation;
+  bool ok = false;
+  try {
+    if (malformed) std::rethrow_exception(malformed);
+    std::optional<CouplingGeometry> storage;
+    const CouplingGeometry& coupling = catalogue_.resolve(request->coupling, storage);
+    const typename T::Result result = compute(coupling, *request);
+    protocol::to_wire(result, reply.result);
+    reply.status = gearcoupling_STATUS_OK;
+    reply.field = protocol::wire_string("");
+    reply.message = protocol::wire_string("");
+    ok = true;
+  } catch (...) {
+    const protocol::ReplyError error = protocol::reply_error_from(std::current_exception());
+    reply.status = error.status;
+    reply.field = protocol::wire_string(error.field);
+    reply.message = protocol::wire_string(error.message);
+    const auto level = error.status == gearcoupling_STATUS_INTERNAL_ERROR ? spdlog::level::err
+                                                                          : spdlog::level::warn;
+    spdlog::log(level, "{} client={} seq={}: {} field=\"{}\": {}", protocol::to_string(kCalculation),
+                protocol::hex_id(correlation.client_id), correlation.sequence_number,
+                protocol::to_string(error.status), error.field, error.message);
+  }
+
+  const dds_entity_t writer = reply_writers_.matched_writer(
+      correlation.client_id, kCalculation, Clock::now() + seconds(config_.reply_match_timeout_s));
+  if (writer == 0) {
+    spdlog::warn("{} client={} seq={}: reply not delivered: the client's reply reader is not "
+                 "matched (client gone or did not wait for discovery)",
+                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                 correlation.sequence_number);
+    reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
+  } else if (const dds_return_t rc = dds_write(writer, &reply);
+             rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
+    spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
+                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                 correlation.sequence_number);
+  } else if (rc < 0) {
+    spdlog::error("{} client={} seq={}: dds_write of the reply failed: {}",
+                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                  correlation.sequence_number, dds_strretcode(rc));
+    if (rc == DDS_RETCODE_TIMEOUT) {
+      reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
+    }
+  }
+  const double service_time_s = std::chrono::duration<double>(Clock::now() - received).count();
+  stats_.record(kCalculation, ok, service_time_s);
+  spdlog::debug("{} client={} seq={} {} {:.1f} us", protocol::to_string(kCalculation),
+                protocol::hex_id(correlation.client_id), correlation.sequence_number,
+                protocol::to_string(reply.status), service_time_s * 1e6);
+}
+
+void Service::take_all_requests() {
+  protocol::for_each_calculation(
+      [&](auto calculation) { take_requests<decltype(calculation)::value>(); });
+}
+
+void Service::take_subscriptions() {
+  for (;;) {
+    protocol::LoanedSamples<dds_builtintopic_endpoint_t> samples(subscriptions_reader_.get());
+    if (samples.size() == 0) return;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const dds_sample_info_t& info = samples.info(i);
+      if (info.instance_state != DDS_IST_ALIVE) {
+        const auto known = reply_readers_.find(info.instance_handle);
+        if (known == reply_readers_.end()) continue;
+        reply_writers_.reader_gone(known->second.first, known->second.second);
+        spdlog::debug("client={} left ({} reply reader gone)",
+                      protocol::hex_id(known->second.first),
+                      protocol::to_string(known->second.second));
+        reply_readers_.erase(known);
+        continue;
+      }
+      if (!info.valid_data || reply_readers_.count(info.instance_handle) != 0) continue;
+      const dds_builtintopic_endpoint_t& endpoint = samples[i];
+      const auto calculation = protocol::calculation_of_reply_topic(endpoint.topic_name);
+      if (!calculation || endpoint.qos == nullptr) continue;
+      uint32_t count = 0;
+      char** partitions = nullptr;
+      if (!dds_qget_partition(endpoint.qos, &count, &partitions)) continue;
+      for (uint32_t p = 0; p < count; ++p) {
+        const auto client = protocol::client_id_of_reply_partition(partitions[p]);
+        if (client && reply_readers_.count(info.instance_handle) == 0) {
+          reply_writers_.reader_appeared(*client, *calculation);
+          reply_readers_.emplace(info.instance_handle, std::make_pair(*client, *calculation));
+          spdlog::debug("client={} {} reply reader discovered", protocol::hex_id(*client),
+                        protocol::to_string(*calculation));
+        }
+        dds_free(partitions[p]);
+      }
+      dds_free(partitions);
+    }
+  }
+}
+
+void Service::log_stats() const {
+  const auto snapshot = stats_.snapshot();
+  std::string line;
+  for (Calculation calculation : protocol::kAllCalculations) {
+    const CalculationSnapshot& s = snapshot[protocol::index_of(calculation)];
+    if (s.served + s.failed == 0) continue;
+    line += fmt::format(" {}: served={} failed={} p50={:.1f}us p99={:.1f}us;",
+                        protocol::to_string(calculation), s.served, s.failed,
+                        s.p50_service_time_s * 1e6, s.p99_service_time_s * 1e6);
+  }
+  spdlog::info("stats: clients={} queued={}{}", reply_writers_.clients(), pool_.queued(),
+               line.empty() ? " no requests yet" : line);
+}
+
+void Service::run() {
+  spdlog::info("gearcoupling-service instance {} on domain {}: {} worker threads, catalogue [{}], "
+               "requests in partition \"{}\"",
+               protocol::hex_id(instance_id_), config_.domain, pool_.threads(), catalogue_.names(),
+               protocol::request_partition(instance_id_));
+  status_.publish(true);
+  Clock::time_point next_status = Clock::now() + seconds(config_.status_interval_s);
+  Clock::time_point next_stats = Clock::now() + seconds(config_.stats_log_interval_s);
+  std::optional<Clock::time_point> stop_at;
+  for (;;) {
+    Clock::time_point now = Clock::now();
+    if (stop_requested_ && !stop_at) {
+      stop_at = now + seconds(config_.shutdown_grace_s);
+      status_.publish(false);
+      spdlog::info("shutting down: answering requests in flight for {} s", config_.shutdown_grace_s);
+    }
+    if (stop_at && now >= *stop_at) break;
+    Clock::time_point wake = std::min(next_status, next_stats);
+    if (stop_at) wake = std::min(wake, *stop_at);
+    const auto timeout = std::chrono::duration_cast<std::chrono::nanoseconds>(wake - now).count();
+    dds_waitset_wait(waitset_.get(), nullptr, 0, std::max<int64_t>(timeout, 0));
+    bool triggered = false;
+    dds_take_guardcondition(guard_.get(), &triggered);
+    take_subscriptions();
+    take_all_requests();
+    now = Clock::now();
+    if (now >= next_status) {
+      status_.publish(!stop_at);
+      next_status = now + seconds(config_.status_interval_s);
+    }
+    if (now >= next_stats) {
+      log_stats();
+      next_stats = now + seconds(config_.stats_log_interval_s);
+    }
+  }
+  for (const Entity& reader : request_readers_) dds_set_listener(reader.get(), nullptr);
+  take_all_requests();
+  pool_.drain_and_stop();
+  log_stats();
+  status_.dispose();
+  spdlog::info("instance {} stopped", protocol::hex_id(instance_id_));
+}
+
+}  // namespace gc::service

@@ -1,0 +1,74 @@
+// One gearcoupling-service instance: readers for the five request topics in this instance's own
+// request partition, a pool of workers computing with the core, reply writers per client, the
+// status topic. run() serves until request_stop(), then answers what has arrived and returns.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <optional>
+
+#include "protocol/calculation.h"
+#include "protocol/calculation_traits.h"
+#include "protocol/dds_entity.h"
+#include "protocol/requests.h"
+#include "service/catalogue.h"
+#include "service/reply_writers.h"
+#include "service/service_config.h"
+#include "service/service_stats.h"
+#include "service/status_publisher.h"
+#include "service/worker_pool.h"
+
+namespace gc::service {
+
+class Service {
+ public:
+  /// Joins DDS domain config.domain (network settings from CYCLONEDDS_URI) and creates every
+  /// entity. Throws protocol::DdsError when DDS cannot start.
+  Service(const ServiceConfig& config, Catalogue catalogue);
+  ~Service();
+  Service(const Service&) = delete;
+  Service& operator=(const Service&) = delete;
+
+  /// Serves requests until request_stop(); then keeps answering for config.shutdown_grace_s
+  /// (status says accepting = false), answers everything received, disposes its status.
+  void run();
+  /// Safe from any thread (not from a signal handler: use a signal-waiting thread).
+  void request_stop();
+
+  std::uint64_t instance_id() const { return instance_id_; }
+
+ private:
+  template <protocol::Calculation kCalculation>
+  void take_requests();
+  template <protocol::Calculation kCalculation>
+  void answer(const gearcoupling_Correlation& correlation,
+              const std::optional<typename protocol::CalculationTraits<kCalculation>::Request>& request,
+              std::exception_ptr malformed, std::chrono::steady_clock::time_point received);
+  void take_all_requests();
+  void take_subscriptions();
+  void log_stats() const;
+
+  ServiceConfig config_;
+  Catalogue catalogue_;
+  std::uint64_t instance_id_;
+  protocol::Entity participant_;
+  std::array<protocol::Entity, 5> request_topics_;
+  std::array<protocol::Entity, 5> reply_topics_;
+  protocol::Entity request_subscriber_;
+  std::array<protocol::Entity, 5> request_readers_;
+  protocol::Entity subscriptions_reader_;  ///< DCPSSubscription: clients' reply readers
+  protocol::Entity guard_;
+  protocol::Entity waitset_;
+  std::map<dds_instance_handle_t, std::pair<std::uint64_t, protocol::Calculation>> reply_readers_;
+  ServiceStats stats_;
+  ReplyWriters reply_writers_;
+  StatusPublisher status_;
+  std::atomic<bool> stop_requested_{false};
+  WorkerPool pool_;  ///< last: destroyed (drained) first
+};
+
+}  // namespace gc::service

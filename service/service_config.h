@@ -1,0 +1,50 @@
+// How one gearcoupling-service instance runs: defaults, then a config file
+// (service_config.proto in text format), then command-line flags, each overriding the last.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gc::service {
+
+struct ServiceConfig {
+  int domain = 0;                     ///< DDS domain id, [0, 232]
+  unsigned threads = 0;               ///< workers; 0 = one per core
+  std::string catalogue_dir;          ///< "" = codec::default_catalog_dir()
+  std::string log_level = "info";     ///< spdlog level: trace, debug, info, warn, error, off
+  double status_interval_s = 1.0;     ///< status topic period [s]
+  double stats_log_interval_s = 10.0; ///< periodic stats log line [s]
+  double liveliness_lease_s = 2.0;    ///< status writer lease: a killed instance is noticed
+                                      ///< within this time [s]
+  double reply_match_timeout_s = 1.0; ///< longest wait for a client's reply reader [s]
+  double reply_block_s = 0.5;         ///< longest a reply write blocks on an unacknowledging
+                                      ///< (killed) client before its replies are dropped [s]
+  double departed_hold_s = 5.0;       ///< how long such a client's replies are then dropped;
+                                      ///< longer than any participant lease in use [s]
+  double shutdown_grace_s = 0.2;      ///< after SIGINT/SIGTERM: keep answering requests already
+                                      ///< on their way this long, then drain and exit [s]
+};
+
+/// What the command line asked for.
+struct ServiceCommand {
+  ServiceConfig config;
+  bool help = false;
+};
+
+/// Parses `args` (without the program name): --config FILE is applied first wherever it
+/// appears, then --domain N, --threads N, --catalogue DIR (or --catalog), --log-level L,
+/// --status-interval S, --stats-interval S, --lease S, --reply-match-timeout S,
+/// --reply-block S, --departed-hold S, --shutdown-grace S, --help. Throws InvalidInput naming the flag or the file's field.
+ServiceCommand parse_service_command(const std::vector<std::string>& args);
+
+/// Reads a config file into `config` (fields it sets override). Errors name the file, line and
+/// field.
+void apply_config_file(const std::string& path, ServiceConfig& config);
+
+/// Throws InvalidInput naming the first setting out of range.
+void validate(const ServiceConfig& config);
+
+/// The usage text of gearcoupling-service.
+std::string service_usage();
+
+}  // namespace gc::service

@@ -1,0 +1,46 @@
+#include "service/service_stats.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gc::service {
+namespace {
+
+/// Nearest-rank percentile of `sorted` (not empty), p in (0, 1].
+double percentile(const std::vector<double>& sorted, double p) {
+  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())));
+  return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+}
+
+}  // namespace
+
+void ServiceStats::record(protocol::Calculation calculation, bool ok, double service_time_s) {
+  std::lock_guard lock(mutex_);
+  PerCalculation& c = calculations_[protocol::index_of(calculation)];
+  (ok ? c.served : c.failed) += 1;
+  if (c.window.size() < kWindow) {
+    c.window.push_back(service_time_s);
+  } else {
+    c.window[c.next] = service_time_s;
+  }
+  c.next = (c.next + 1) % kWindow;
+}
+
+std::array<CalculationSnapshot, 5> ServiceStats::snapshot() const {
+  std::array<CalculationSnapshot, 5> out;
+  std::lock_guard lock(mutex_);
+  for (std::size_t i = 0; i < calculations_.size(); ++i) {
+    const PerCalculation& c = calculations_[i];
+    out[i].served = c.served;
+    out[i].failed = c.failed;
+    if (!c.window.empty()) {
+      std::vector<double> sorted = c.window;
+      std::sort(sorted.begin(), sorted.end());
+      out[i].p50_service_time_s = percentile(sorted, 0.50);
+      out[i].p99_service_time_s = percentile(sorted, 0.99);
+    }
+  }
+  return out;
+}
+
+}  // namespace gc::service

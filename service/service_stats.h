@@ -1,0 +1,41 @@
+// Requests served and failed per calculation and the service time distribution, for the status
+// topic and the periodic log line. Thread-safe.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "protocol/calculation.h"
+
+namespace gc::service {
+
+struct CalculationSnapshot {
+  std::uint64_t served = 0;      ///< replies with STATUS_OK
+  std::uint64_t failed = 0;      ///< error replies
+  double p50_service_time_s = 0.0;  ///< over the last kWindow requests [s]
+  double p99_service_time_s = 0.0;
+};
+
+class ServiceStats {
+ public:
+  static constexpr std::size_t kWindow = 4096;
+
+  /// One answered request: whether it succeeded and its service time (taken from the reader to
+  /// reply written) [s].
+  void record(protocol::Calculation calculation, bool ok, double service_time_s);
+  std::array<CalculationSnapshot, 5> snapshot() const;
+
+ private:
+  struct PerCalculation {
+    std::uint64_t served = 0;
+    std::uint64_t failed = 0;
+    std::vector<double> window;  ///< ring buffer of the last kWindow service times
+    std::size_t next = 0;
+  };
+  mutable std::mutex mutex_;
+  std::array<PerCalculation, 5> calculations_;
+};
+
+}  // namespace gc::service

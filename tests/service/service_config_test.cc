@@ -1,0 +1,71 @@
+// gearcoupling-service configuration: defaults, a file, flags overriding the file, errors
+// naming the setting.
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "core/model_error.h"
+#include "service/service_config.h"
+
+namespace gc::service {
+namespace {
+
+std::string write_temp(const std::string& text) {
+  const std::string path = "/tmp/gc_service_config_" + std::to_string(getpid()) + ".conf";
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(ServiceConfig, FlagsOverrideTheFileWhereverConfigAppears) {
+  const std::string file = write_temp("domain: 12\nthreads: 3\nlog_level: \"debug\"\n");
+  const ServiceCommand command =
+      parse_service_command({"--domain", "7", "--config", file, "--catalogue", "/x"});
+  EXPECT_EQ(command.config.domain, 7);
+  EXPECT_EQ(command.config.threads, 3u);
+  EXPECT_EQ(command.config.log_level, "debug");
+  EXPECT_EQ(command.config.catalogue_dir, "/x");
+  EXPECT_DOUBLE_EQ(command.config.liveliness_lease_s, 2.0);  // default kept
+  std::remove(file.c_str());
+}
+
+TEST(ServiceConfig, BundledDeployFileParses) {
+  const ServiceCommand command =
+      parse_service_command({"--config", GC_SOURCE_DIR "/deploy/service.conf"});
+  EXPECT_EQ(command.config.domain, 0);
+  EXPECT_DOUBLE_EQ(command.config.reply_block_s, 0.5);
+}
+
+TEST(ServiceConfig, ErrorsNameTheSetting) {
+  try {
+    parse_service_command({"--domain", "500"});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "domain");
+  }
+  try {
+    parse_service_command({"--log-level", "loud"});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "log_level");
+  }
+  try {
+    parse_service_command({"--bogus", "1"});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "--bogus");
+  }
+  const std::string file = write_temp("domian: 3\n");
+  try {
+    parse_service_command({"--config", file});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "--config");
+    EXPECT_NE(std::string(e.what()).find(":1:"), std::string::npos) << e.what();
+  }
+  std::remove(file.c_str());
+}
+
+}  // namespace
+}  // namespace gc::service

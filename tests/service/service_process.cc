@@ -1,0 +1,65 @@
+#include "tests/service/service_process.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
+#include <thread>
+
+namespace gc::test {
+
+int test_domain() { return 1 + static_cast<int>(getpid() % 200); }
+
+void use_loopback_config() {
+  setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml", 1);
+}
+
+ServiceProcess::ServiceProcess(std::vector<std::string> extra_args) {
+  std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
+                                   "--log-level", "warn"};
+  args.insert(args.end(), extra_args.begin(), extra_args.end());
+  pid_ = fork();
+  if (pid_ < 0) throw std::runtime_error("fork failed");
+  if (pid_ == 0) {
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+}
+
+ServiceProcess::~ServiceProcess() {
+  if (running()) signal(SIGKILL);
+}
+
+void ServiceProcess::signal(int signal) {
+  if (reaped_) return;
+  kill(pid_, signal);
+  if (signal == SIGKILL) wait_exit(10.0);
+}
+
+bool ServiceProcess::running() {
+  if (reaped_) return false;
+  if (waitpid(pid_, &status_, WNOHANG) == pid_) reaped_ = true;
+  return !reaped_;
+}
+
+int ServiceProcess::wait_exit(double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (running()) {
+    if (std::chrono::steady_clock::now() >= deadline) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, &status_, 0);
+      reaped_ = true;
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
+}
+
+}  // namespace gc::test

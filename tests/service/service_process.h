@@ -1,0 +1,44 @@
+// A gearcoupling-service child process for the tests: started with the loopback Cyclone
+// configuration on the test's own domain, stopped by signal.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace gc::test {
+
+/// The DDS domain of this test process: 1 + pid % 200, so tests running in parallel (one
+/// process each under ctest) do not share a domain, and ports stay in range.
+int test_domain();
+
+/// Points CYCLONEDDS_URI at deploy/cyclonedds-loopback.xml (lo only, no multicast, peer
+/// 127.0.0.1). Call before any DDS entity is created.
+void use_loopback_config();
+
+class ServiceProcess {
+ public:
+  /// Starts gearcoupling-service --domain test_domain() with `extra_args`.
+  explicit ServiceProcess(std::vector<std::string> extra_args = {});
+  /// SIGKILLs the process if still running.
+  ~ServiceProcess();
+  ServiceProcess(const ServiceProcess&) = delete;
+  ServiceProcess& operator=(const ServiceProcess&) = delete;
+
+  /// Sends `signal`; for SIGKILL also waits for the process.
+  void signal(int signal);
+  /// Waits (at most `timeout_s`) for the process to exit; its exit status, or -1 on timeout
+  /// (then it is SIGKILLed).
+  int wait_exit(double timeout_s);
+  /// True while the process runs.
+  bool running();
+  pid_t pid() const { return pid_; }
+
+ private:
+  pid_t pid_ = -1;
+  bool reaped_ = false;
+  int status_ = 0;
+};
+
+}  // namespace gc::test

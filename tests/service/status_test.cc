@@ -1,0 +1,59 @@
+// The status topic tells clients and dashboards what an instance serves and how it is doing.
+#include <gtest/gtest.h>
+
+#include "clients/remote/client.h"
+#include "core/model_error.h"
+#include "protocol/matching.h"
+#include "tests/service/service_process.h"
+
+namespace gc {
+namespace {
+
+using protocol::Calculation;
+using protocol::CatalogueName;
+
+TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
+  test::ServiceProcess service({"--status-interval", "0.1", "--threads", "2"});
+  client::Client client({test::test_domain(), std::chrono::seconds(10)});
+  for (int r = 0; r < 10; ++r) client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  for (int r = 0; r < 3; ++r) {
+    EXPECT_THROW(client.call<Calculation::kJamAngle>({CatalogueName{"unknown"}}), ModelError);
+  }
+  const auto jam_counts = [&](std::uint64_t& served, std::uint64_t& failed) {
+    for (const client::InstanceInfo& instance : client.instances()) {
+      for (const client::CalculationStatus& c : instance.calculations) {
+        if (c.calculation == "jam_angle") {
+          served = c.served;
+          failed = c.failed;
+        }
+      }
+    }
+  };
+  std::uint64_t served = 0;
+  std::uint64_t failed = 0;
+  ASSERT_TRUE(protocol::wait_until(
+      [&] {
+        jam_counts(served, failed);
+        return served == 10 && failed == 3;
+      },
+      std::chrono::steady_clock::now() + std::chrono::seconds(5)))
+      << "served " << served << " failed " << failed;
+  const std::vector<client::InstanceInfo> instances = client.instances();
+  ASSERT_EQ(instances.size(), 1u);
+  const client::InstanceInfo& instance = instances.front();
+  EXPECT_EQ(instance.pid, service.pid());
+  EXPECT_TRUE(instance.accepting);
+  EXPECT_EQ(instance.threads, 2u);
+  EXPECT_GT(instance.uptime_s, 0.0);
+  EXPECT_EQ(instance.catalogue, (std::vector<std::string>{"nrel_downwind", "nrel_upwind"}));
+  ASSERT_EQ(instance.calculations.size(), 5u);
+  for (const client::CalculationStatus& c : instance.calculations) {
+    if (c.calculation != "jam_angle") continue;
+    EXPECT_GT(c.p50_service_time_s, 0.0);
+    EXPECT_GE(c.p99_service_time_s, c.p50_service_time_s);
+    EXPECT_LT(c.p99_service_time_s, 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace gc
