@@ -19,10 +19,10 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-std::array<const Subcommand*, 8> subcommands() {
+std::array<const Subcommand*, 9> subcommands() {
   return {&contact_subcommand(),          &jam_angle_subcommand(), &moments_subcommand(),
           &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand(),
-          &synth_subcommand(),            &validate_subcommand()};
+          &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand()};
 }
 
 std::string overview() {

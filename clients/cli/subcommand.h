@@ -29,6 +29,7 @@ const Subcommand& friction_subcommand();
 const Subcommand& batch_subcommand();
 const Subcommand& synth_subcommand();
 const Subcommand& validate_subcommand();
+const Subcommand& diagnose_subcommand();
 
 /// --coupling, --catalog and --json.
 std::vector<FlagSpec> common_flags();

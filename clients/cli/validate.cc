@@ -1,10 +1,13 @@
 // gearcoupling validate: a recording against a model. Metrics per channel, where the model
 // fails, a terminal summary, --json, and a self-contained HTML report.
 #include <fstream>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
+#include "clients/cli/before_after_summary.h"
+#include "clients/cli/effect_spec.h"
 #include "clients/cli/model_flags.h"
 #include "clients/cli/subcommand.h"
 #include "clients/cli/validation_report_html.h"
@@ -23,6 +26,9 @@ std::vector<FlagSpec> validate_flags() {
       model_flag(),
       {"reference-torque", "N·m", "T_ref: errors are also given in % of it", "1.5e6"},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
+      {"add", "EFFECT[=p=v,...]",
+       "also validate the model with this effect added (SI parameters, e.g. hysteresis=lag_rad=6e-4): "
+       "before and after side by side", ""},
       {"threads", "N", "threads for the model evaluations",
        std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
   };
@@ -70,6 +76,14 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   binning.jam_angle_rad = model.model.geometry().jam_angle().angle_rad;
   std::vector<ModelRun> runs;
   runs.push_back({model.name, &model.model, ValidationAccumulator(binning), PointSampler()});
+  // --add: the same recording through the model with one more effect, compared side by side.
+  std::optional<CouplingModel> with_added;
+  if (!flags.text("add").empty()) {
+    const auto effect = parse_effect_spec(flags.text("add"));
+    with_added.emplace(model.model.with_effect(effect));
+    runs.push_back({model.name + " + " + effect->name(), &*with_added, ValidationAccumulator(binning),
+                    PointSampler()});
+  }
   const RecordingSummary recording = run_validation(
       flags.text("data"), runs, {flags.integer("threads", 1, 1024)});
   const v1::ValidationResult result = to_message(recording, runs, binning);
@@ -78,6 +92,7 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
     print_json(result, out);
   } else {
     print_validation_summary(result, out);
+    if (result.models_size() > 1) print_before_after(result, out);
     if (!flags.text("html").empty()) fmt::print(out, "\nReport: {}\n", flags.text("html"));
   }
   return 0;

@@ -1,0 +1,103 @@
+#include "codec/diagnosis_messages.h"
+
+namespace gc::codec {
+namespace {
+
+namespace v1 = gearcoupling::v1;
+
+void fill(const EffectFit& fit, google::protobuf::RepeatedPtrField<v1::ParameterEstimateRecord>& out) {
+  for (const ParameterEstimate& p : fit.parameters) {
+    v1::ParameterEstimateRecord& r = *out.Add();
+    r.set_name(p.name);
+    r.set_unit(p.unit);
+    r.set_value(p.value);
+    if (p.standard_error) r.set_standard_error(*p.standard_error);
+    r.set_held(p.held);
+    r.set_note(p.note);
+  }
+}
+
+v1::CandidateRecord to_message(const CandidateScore& c) {
+  v1::CandidateRecord r;
+  r.set_effect(c.info->name);
+  r.set_held_out_rmse_nm(c.held_out_rmse_nm);
+  r.set_reduction(c.reduction);
+  r.set_t(c.against_base.t);
+  if (c.fit) fill(*c.fit, *r.mutable_parameters());
+  r.set_failure(c.failure);
+  return r;
+}
+
+v1::InputSignatureRecord to_message(const InputSignature& s) {
+  v1::InputSignatureRecord r;
+  r.set_input(s.input);
+  r.set_unit(s.unit);
+  r.set_explained_share(s.explained_share);
+  r.set_f(s.dispersion);
+  r.set_systematic(s.systematic);
+  r.set_slope_y(s.slope_y);
+  r.set_slope_z(s.slope_z);
+  for (const SignatureBin& b : s.bins) {
+    v1::SignatureBinRecord& bin = *r.add_bins();
+    bin.set_lower(b.lower);
+    bin.set_upper(b.upper);
+    bin.set_count(b.count);
+    bin.set_mean_y_nm(b.mean_y_nm);
+    bin.set_mean_z_nm(b.mean_z_nm);
+  }
+  return r;
+}
+
+v1::RoundRecord to_message(const DiagnosisRound& round) {
+  v1::RoundRecord r;
+  for (const std::string& e : round.model_effects) r.add_model_effects(e);
+  r.set_rmse_nm(round.rmse_nm);
+  r.set_noise_y_nm(round.noise_sigma_nm(0));
+  r.set_noise_z_nm(round.noise_sigma_nm(1));
+  r.set_noise_rmse_nm(round.noise_rmse_nm);
+  r.set_systematic(round.systematic);
+  r.set_outcome(to_string(round.outcome));
+  for (const CandidateScore& c : round.ranking) *r.add_ranking() = to_message(c);
+  if (round.claimed) {
+    r.mutable_claimed()->set_effect(round.claimed->info->name);
+    fill(*round.claimed, *r.mutable_claimed()->mutable_parameters());
+  }
+  for (const AlikeEffect& a : round.alike) {
+    v1::AlikeRecord& alike = *r.add_alike();
+    alike.set_effect(a.name);
+    alike.set_correlation(a.correlation);
+    alike.set_t_against_best(a.against_best.t);
+    alike.set_separating_input(a.experiment.input);
+    alike.set_separating_value(a.experiment.value);
+    alike.set_experiment(a.experiment.advice);
+  }
+  for (const InputSignature& s : round.signature.inputs) *r.add_signature() = to_message(s);
+  r.set_verdict(round.verdict);
+  return r;
+}
+
+}  // namespace
+
+const char* to_string(RoundOutcome outcome) {
+  switch (outcome) {
+    case RoundOutcome::effect_found: return "effect_found";
+    case RoundOutcome::indistinguishable: return "indistinguishable";
+    case RoundOutcome::noise: return "noise";
+    case RoundOutcome::unexplained: return "unexplained";
+  }
+  return "";
+}
+
+v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
+  v1::DiagnosisResult r;
+  r.set_recording_rows(diagnosis.rows);
+  r.set_excluded_rows(diagnosis.excluded_rows.size());
+  r.set_exclusion_reason(diagnosis.exclusion_reason);
+  r.set_search_rows(diagnosis.search_rows);
+  r.set_refit_rows(diagnosis.refit_rows);
+  for (const DiagnosisRound& round : diagnosis.rounds) *r.add_rounds() = to_message(round);
+  r.set_summary(diagnosis.summary);
+  return r;
+}
+
+}  // namespace gc::codec

@@ -1,0 +1,44 @@
+// One library effect as a candidate explanation of a residual: fitted on the training folds,
+// scored on the held-out folds (k-fold cross-validation), so that extra parameters cannot win
+// by fitting noise.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "core/diagnosis/cross_validation_folds.h"
+#include "core/diagnosis/effect_fit.h"
+#include "core/diagnosis/paired_block_test.h"
+
+namespace gc {
+
+struct CandidateScore {
+  const EffectInfo* info = nullptr;
+  std::optional<EffectFit> fit;   ///< on all search rows (for the ranking's parameters)
+  /// Per search row, the residual of the model fitted without that row's fold [N·m].
+  Eigen::MatrixX2d held_out_residual;
+  double held_out_rmse_nm = 0.0;  ///< pooled over both channels
+  double reduction = 0.0;         ///< 1 - held-out RMSE / the base model's RMSE on the same rows
+  PairedBlockTest against_base;   ///< t > 0: better than the base model on held-out blocks
+  std::string failure;            ///< non-empty when the effect could not be fitted or scored
+  int evaluations = 0;            ///< model evaluations of all rows it cost
+};
+
+struct CrossValidationSettings {
+  int folds = 5;
+  int blocks_per_fold = 20;  ///< 100 blocks of 15 search rows: enough for the paired test
+  int fold_iterations = 3;  ///< Levenberg-Marquardt steps per fold, warm-started from the full fit
+  FitSettings fit;
+};
+
+/// `rows` in time order; `base_residual` the base model's residual on them (no parameters fitted,
+/// so it is its own held-out residual).
+CandidateScore score_candidate(const CouplingModel& base, const EffectRegistration& registration,
+                               std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                               const Eigen::MatrixX2d& base_residual, const Folds& folds,
+                               const ParallelFor& parallel, const CrossValidationSettings& settings);
+
+}  // namespace gc

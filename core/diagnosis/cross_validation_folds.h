@@ -1,0 +1,25 @@
+// The folds of the cross-validation. Rows are cut into short contiguous blocks in time and the
+// blocks dealt to the folds in turn (block b to fold b mod k). Contiguous blocks keep
+// neighbouring samples, whose noise and sawtooth are correlated, on the same side of the split,
+// so the held-out error is not flattered by leakage; dealing many blocks round-robin gives every
+// fold rows from the whole load sequence, so no fold has to extrapolate to a torque or
+// misalignment range it never saw (which whole-fold time blocks would demand of a single sweep).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace gc {
+
+struct Folds {
+  std::vector<std::vector<std::size_t>> training;  ///< per fold, positions into the row list
+  std::vector<std::vector<std::size_t>> held_out;  ///< per fold
+  std::vector<int> block_of;                       ///< per position, its block (for paired tests)
+  int blocks = 0;
+};
+
+/// `rows` positions 0..count-1 in time order; `folds` >= 2, `blocks_per_fold` >= 1; fewer blocks
+/// when there are fewer rows than blocks.
+Folds blocked_folds(std::size_t count, int folds, int blocks_per_fold);
+
+}  // namespace gc

@@ -1,0 +1,98 @@
+// Which effect of the library the model lacks (docs/diagnosis.md). For a recording and a base
+// model: for every registered effect the model does not have, fit it on training folds and score
+// it on held-out folds; rank by held-out RMSE; claim the best only when its gain is significant
+// against the noise; add it and search again. Says so when the residual is noise, and shows the
+// residual's signature when no effect explains it.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/coupling_model.h"
+#include "core/diagnosis/candidate_score.h"
+#include "core/recorded_sample.h"
+#include "core/diagnosis/parallel_for.h"
+#include "core/diagnosis/residual_signature.h"
+#include "core/diagnosis/separating_experiment.h"
+
+namespace gc {
+
+struct DiagnosisSettings {
+  /// The search fits every candidate on at most this many rows, evenly spaced in time; the
+  /// claimed effect is then refitted on every row. 1500 rows of 2 channels pin a parameter that
+  /// halves the error to a few % while keeping a search of the library to seconds.
+  std::size_t search_rows = 1500;
+  CrossValidationSettings cross_validation;
+  /// The claimed effect is refitted, from its search fit, on at most this many rows evenly spaced
+  /// in time (all of a recording up to this size), then evaluated once on every row. 20,000 rows
+  /// pin the parameters far below the search's scatter; the full pass gives the next round its
+  /// residual. Keeps a 100,000-row diagnosis within seconds.
+  std::size_t refit_rows = 20000;
+  int final_iterations = 3;     ///< Levenberg-Marquardt steps of that refit
+  int max_rounds = 3;
+  /// Claim: the held-out gain over the base model has a block-paired t of at least this (one-sided
+  /// p about 3e-4 over 100 blocks, under 3e-3 for the whole library of about ten candidates) ...
+  double claim_t = 3.5;
+  /// ... and removes at least this share of the residual's excess over the noise (mean squares).
+  double claim_excess_share = 0.3;
+  /// Alike: held-out corrections correlated at least this much, and the better not significantly
+  /// better (paired t below alike_t).
+  double alike_correlation = 0.95;
+  double alike_t = 2.0;
+};
+
+enum class RoundOutcome {
+  effect_found,       ///< one effect explains the residual
+  indistinguishable,  ///< several effects explain it equally on this data
+  noise,              ///< the residual is consistent with the noise
+  unexplained,        ///< systematic, and no library effect explains it
+};
+
+struct AlikeEffect {
+  std::string name;
+  double correlation = 0.0;       ///< of its held-out corrections with the best's
+  PairedBlockTest against_best;   ///< t > 0: the best is better
+  SeparatingExperiment experiment;
+};
+
+struct DiagnosisRound {
+  std::vector<std::string> model_effects;  ///< the model searched from
+  double rmse_nm = 0.0;                    ///< the model's pooled RMSE over all usable rows
+  Eigen::Vector2d noise_sigma_nm = Eigen::Vector2d::Zero();  ///< per channel, successive differences
+  double noise_rmse_nm = 0.0;              ///< pooled noise sigma
+  bool systematic = false;                 ///< the residual is more than noise
+  ResidualSignature signature;             ///< of the model's residual, all usable rows
+  std::vector<CandidateScore> ranking;     ///< by held-out RMSE, best first; failures last
+  double search_base_rmse_nm = 0.0;        ///< the model's RMSE on the search rows
+  RoundOutcome outcome = RoundOutcome::noise;
+  std::optional<EffectFit> claimed;        ///< refitted on the refit rows, with uncertainties
+  /// Per channel, the share of the model's mean square residual the claimed effect removes (held out).
+  Eigen::Vector2d channel_reduction = Eigen::Vector2d::Zero();
+  std::vector<AlikeEffect> alike;          ///< when indistinguishable
+  std::string verdict;                     ///< plain language
+};
+
+struct Diagnosis {
+  std::vector<DiagnosisRound> rounds;
+  /// The effects the diagnosis added, in order, with their fitted values.
+  std::vector<std::shared_ptr<const Effect>> added;
+  std::size_t rows = 0;                   ///< rows in the recording
+  std::vector<std::size_t> excluded_rows; ///< rows the base model cannot predict
+  std::string exclusion_reason;           ///< the model's message for the first of them
+  std::size_t search_rows = 0;
+  std::size_t refit_rows = 0;
+  std::string summary;                    ///< the verdicts, one line per round
+};
+
+/// Throws InvalidInput naming "recording.rows[i].msy_nm" (or msz_nm) for a non-finite measured
+/// moment, and "recording.rows" when fewer than 4 * folds * blocks_per_fold rows are usable.
+Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
+                   const ParallelFor& parallel = serial_for(), const DiagnosisSettings& settings = {});
+
+}  // namespace gc

@@ -1,0 +1,215 @@
+#include "core/diagnosis/effect_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/diagnosis/model_residuals.h"
+#include "core/diagnosis/parameter_box.h"
+#include "core/diagnosis/parameter_identifiability.h"
+#include "core/diagnosis/pattern_search.h"
+#include "core/diagnosis/start_points.h"
+#include "core/model_error.h"
+
+namespace gc {
+namespace {
+
+/// The least-squares problem over the free parameters; held ones keep their value in `full`.
+struct EffectProblem {
+  const CouplingModel& base;
+  const EffectRegistration& registration;
+  ParameterBox box;
+  std::span<const RecordedSample> observations;
+  std::span<const std::size_t> rows;
+  const ParallelFor& parallel;
+  std::vector<bool> free;
+  Eigen::VectorXd full;  ///< every parameter in the unit box
+
+  Eigen::VectorXd expand(const Eigen::VectorXd& free_x) const {
+    Eigen::VectorXd x = full;
+    for (int i = 0, k = 0; i < box.size(); ++i) if (free[i]) x(i) = free_x(k++);
+    return x;
+  }
+  Eigen::VectorXd compress(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd free_x(std::count(free.begin(), free.end(), true));
+    for (int i = 0, k = 0; i < box.size(); ++i) if (free[i]) free_x(k++) = x(i);
+    return free_x;
+  }
+  std::optional<Eigen::VectorXd> residual(const Eigen::VectorXd& x) const {
+    try {
+      const CouplingModel model = model_with(base, registration, box.to_values(x));
+      const ModelResiduals r = model_residuals(model, observations, rows, parallel);
+      if (!r.failed_rows.empty()) return std::nullopt;
+      return Eigen::Map<const Eigen::VectorXd>(r.residual.data(), r.residual.size());
+    } catch (const ModelError&) {
+      return std::nullopt;  // e.g. a compliance that makes the coupling unphysical
+    }
+  }
+  ResidualFunction over_free() const {
+    return [this](const Eigen::VectorXd& free_x) { return residual(expand(free_x)); };
+  }
+  LeastSquaresResult solve(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
+    return bounded_least_squares(over_free(), compress(x), options);
+  }
+  /// Levenberg-Marquardt, then the polish.
+  LeastSquaresResult solve_and_polish(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
+    return polish(solve(x, options), options);
+  }
+  /// The compass-search polish, then the Jacobian where it ended.
+  LeastSquaresResult polish(LeastSquaresResult start, const LeastSquaresOptions& options) const {
+    LeastSquaresResult result = pattern_search(over_free(), std::move(start), 0.02, 5e-4, 40);
+    result.jacobian = difference_jacobian(over_free(), result.x, result.residual, options.difference_step,
+                                          result.evaluations);
+    return result;
+  }
+};
+
+/// The Jacobian over all parameters, zero columns for the held ones.
+Eigen::MatrixXd full_jacobian(const EffectProblem& problem, const Eigen::MatrixXd& free_jacobian) {
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(free_jacobian.rows(), problem.box.size());
+  for (int i = 0, k = 0; i < problem.box.size(); ++i) if (problem.free[i]) j.col(i) = free_jacobian.col(k++);
+  return j;
+}
+
+/// Starts: defaults, neutral values, Halton points; the `count` with the lowest cost.
+std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
+                                         int& evaluations) {
+  std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};
+  std::vector<double> neutral;
+  for (const ParameterSpec& spec : problem.box.info().parameters) neutral.push_back(spec.neutral);
+  candidates.push_back(problem.box.to_unit(neutral));
+  for (const Eigen::VectorXd& x : halton_points(problem.box.size(), settings.probe_points)) candidates.push_back(x);
+  std::vector<std::pair<double, Eigen::VectorXd>> scored;
+  for (const Eigen::VectorXd& x : candidates) {
+    ++evaluations;
+    if (const auto r = problem.residual(x)) scored.emplace_back(r->squaredNorm(), x);
+  }
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Eigen::VectorXd> starts;
+  for (const auto& [cost, x] : scored) {
+    if (static_cast<int>(starts.size()) < settings.starts) starts.push_back(x);
+  }
+  return starts;
+}
+
+std::string at_bound_note(const ParameterSpec& spec, double unit) {
+  if (unit <= 0.0) return "at its lower bound " + std::to_string(spec.lower) + " " + spec.unit;
+  if (unit >= 1.0) return "at its upper bound " + std::to_string(spec.upper) + " " + spec.unit;
+  return "";
+}
+
+/// Estimates in physical units: s^2 (J'J)^-1 on the free parameters, scaled by the bounds.
+EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& result,
+                   const std::vector<std::string>& hold_notes, bool with_uncertainty, int evaluations) {
+  EffectFit fit;
+  fit.info = problem.registration.info;
+  fit.unit_values = problem.expand(result.x);
+  fit.free = problem.free;
+  const ParameterValues values = problem.box.to_values(fit.unit_values);
+  fit.effect = problem.registration.make(values);
+  fit.sum_of_squares = result.cost;
+  fit.rows = problem.rows.size();
+  fit.evaluations = evaluations;
+  const Eigen::Index m = result.residual.size(), p = result.x.size();
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(p, p);
+  if (with_uncertainty && m > p && p > 0) {
+    const double s2 = result.cost / static_cast<double>(m - p);
+    covariance = s2 * (result.jacobian.transpose() * result.jacobian).completeOrthogonalDecomposition().pseudoInverse();
+  }
+  for (int i = 0, k = 0; i < problem.box.size(); ++i) {
+    const ParameterSpec& spec = problem.box.info().parameters[static_cast<std::size_t>(i)];
+    ParameterEstimate e{spec.name, spec.unit, values.at(spec.name), std::nullopt, !problem.free[i],
+                        hold_notes[static_cast<std::size_t>(i)]};
+    if (problem.free[i]) {
+      if (with_uncertainty) e.standard_error = std::sqrt(std::max(0.0, covariance(k, k))) * problem.box.range(i);
+      e.note = at_bound_note(spec, fit.unit_values(i));
+      ++k;
+    }
+    fit.parameters.push_back(e);
+  }
+  return fit;
+}
+
+std::string hold_note(const EffectProblem& problem, const Unidentifiable& u) {
+  if (u.partner < 0) return "no influence on these rows at the fitted values; held";
+  const std::string& partner = problem.box.info().parameters[static_cast<std::size_t>(u.partner)].name;
+  return "not separable from " + partner + " on this data (Jacobian columns correlated, |r| = " +
+         std::to_string(u.correlation).substr(0, 6) + "); held at its default";
+}
+
+}  // namespace
+
+CouplingModel model_with(const CouplingModel& base, const EffectRegistration& registration,
+                         const ParameterValues& values) {
+  return base.with_effect(registration.make(values));
+}
+
+std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
+                                    std::span<const RecordedSample> observations,
+                                    std::span<const std::size_t> rows, const ParallelFor& parallel,
+                                    const FitSettings& settings) {
+  EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,
+                        {}, {}};
+  problem.free.assign(static_cast<std::size_t>(problem.box.size()), true);
+  problem.full = problem.box.defaults();
+  std::vector<std::string> notes(static_cast<std::size_t>(problem.box.size()));
+  int evaluations = 0;
+  const std::vector<Eigen::VectorXd> starts = best_starts(problem, settings, evaluations);
+  if (starts.empty()) return std::nullopt;
+  std::optional<LeastSquaresResult> best;
+  for (const Eigen::VectorXd& start : starts) {
+    problem.full = start;
+    LeastSquaresResult r = problem.solve(start, settings.least_squares);
+    evaluations += r.evaluations;
+    if (!best || r.cost < best->cost) best = r;
+  }
+  const int before_polish = best->evaluations;
+  best = problem.polish(*best, settings.least_squares);  // the best start only
+  evaluations += best->evaluations - before_polish;
+  problem.full = problem.expand(best->x);
+  // Hold what the data cannot determine, one parameter at a time, refitting the rest.
+  for (int round = 0; round < problem.box.size(); ++round) {
+    const auto u = find_unidentifiable(full_jacobian(problem, best->jacobian), problem.free);
+    if (!u) break;
+    problem.free[static_cast<std::size_t>(u->parameter)] = false;
+    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u);
+    if (u->partner >= 0) problem.full(u->parameter) = problem.box.defaults()(u->parameter);
+    if (std::count(problem.free.begin(), problem.free.end(), true) == 0) break;
+    best = problem.solve_and_polish(problem.full, settings.least_squares);
+    evaluations += best->evaluations;
+    problem.full = problem.expand(best->x);
+  }
+  if (std::count(problem.free.begin(), problem.free.end(), true) == 0) {
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    best = LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true};
+  }
+  return make_fit(problem, *best, notes, true, evaluations);
+}
+
+std::optional<EffectFit> refit_effect(const CouplingModel& base, const EffectRegistration& registration,
+                                      const EffectFit& start, std::span<const RecordedSample> observations,
+                                      std::span<const std::size_t> rows, const ParallelFor& parallel,
+                                      int iterations, bool with_uncertainty) {
+  EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,
+                        start.free, start.unit_values};
+  std::vector<std::string> notes;
+  for (const ParameterEstimate& e : start.parameters) notes.push_back(e.held ? e.note : "");
+  LeastSquaresOptions options;
+  options.max_iterations = iterations;
+  LeastSquaresResult result;
+  if (std::count(problem.free.begin(), problem.free.end(), true) == 0) {
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    result = LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true};
+  } else {
+    try {
+      result = problem.solve(problem.full, options);
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;  // the start jams a row of these
+    }
+  }
+  return make_fit(problem, result, notes, with_uncertainty, result.evaluations);
+}
+
+}  // namespace gc

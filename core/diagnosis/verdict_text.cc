@@ -1,0 +1,109 @@
+#include "core/diagnosis/verdict_text.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/diagnosis/diagnose.h"
+
+namespace gc {
+namespace {
+
+std::string percent(double share) { return std::to_string(static_cast<int>(std::lround(100.0 * share))) + " %"; }
+
+std::string channels(const Eigen::Vector2d& reduction) {
+  const bool y = reduction(0) >= 0.25, z = reduction(1) >= 0.25;
+  if (y && z) return "Msy' and Msz'";
+  if (y) return "Msy'";
+  if (z) return "Msz'";
+  return reduction(0) >= reduction(1) ? "Msy'" : "Msz'";
+}
+
+std::string noise_text(const DiagnosisRound& round) {
+  return "RMSE " + short_number(round.rmse_nm) + " N·m against a noise estimate of " +
+         short_number(round.noise_rmse_nm) + " N·m from successive differences";
+}
+
+std::string signature_text(const ResidualSignature& signature) {
+  std::ostringstream text;
+  int shown = 0;
+  for (const InputSignature& s : signature.inputs) {
+    if (!s.systematic || shown == 2) continue;
+    double low_y = INFINITY, high_y = -INFINITY, low_z = INFINITY, high_z = -INFINITY;
+    for (const SignatureBin& b : s.bins) {
+      low_y = std::min(low_y, b.mean_y_nm); high_y = std::max(high_y, b.mean_y_nm);
+      low_z = std::min(low_z, b.mean_z_nm); high_z = std::max(high_z, b.mean_z_nm);
+    }
+    text << (shown++ ? "; then " : "") << s.input << " (bin means carry " << percent(s.explained_share)
+         << " of the residual; Msy' bin means " << short_number(low_y) << " to " << short_number(high_y)
+         << " N·m, Msz' " << short_number(low_z) << " to " << short_number(high_z) << " N·m; trend "
+         << short_number(s.slope_y) << " and " << short_number(s.slope_z) << " N·m per " << s.unit << ")";
+  }
+  return shown ? "systematic against " + text.str() : "no single input shows it";
+}
+
+std::string gain_text(const DiagnosisRound& round, const CandidateScore& c) {
+  return "held-out RMSE falls " + percent(c.reduction) + " (" + short_number(round.search_base_rmse_nm) + " to " +
+         short_number(c.held_out_rmse_nm) + " N·m; noise " + short_number(round.noise_rmse_nm) + " N·m)";
+}
+
+}  // namespace
+
+std::string short_number(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << value;
+  return text.str();
+}
+
+std::string fitted_parameters_text(const EffectFit& fit) {
+  std::string text;
+  for (const ParameterEstimate& p : fit.parameters) {
+    text += (text.empty() ? "" : ", ") + p.name + " = " + short_number(p.value);
+    if (p.standard_error) text += " (+/- " + short_number(*p.standard_error) + ")";
+    if (p.unit != "-") text += " " + p.unit;
+    if (p.held) text += " [held: " + p.note + "]";
+    else if (!p.note.empty()) text += " [" + p.note + "]";
+  }
+  return text;
+}
+
+std::string round_verdict(int number, const DiagnosisRound& round) {
+  std::string model;
+  for (const std::string& e : round.model_effects) model += (model.empty() ? "" : ", ") + e;
+  const std::string head = "Round " + std::to_string(number) + " (model: " + (model.empty() ? "no effects" : model) + "): ";
+  switch (round.outcome) {
+    case RoundOutcome::noise:
+      return head + "the residual is noise: " + noise_text(round) +
+             ", and no input shows a systematic dependence. No effect is claimed.";
+    case RoundOutcome::unexplained: {
+      std::string best;
+      if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
+        best = " (the best, " + round.ranking.front().info->name + ", lowers the held-out RMSE by only " +
+               percent(round.ranking.front().reduction) + ", t = " + short_number(round.ranking.front().against_base.t) + ")";
+      }
+      return head + "the residual is systematic (" + noise_text(round) + ") but no effect of the library explains it" +
+             best + ". Its signature: " + signature_text(round.signature) + ".";
+    }
+    case RoundOutcome::effect_found: {
+      const CandidateScore& c = round.ranking.front();
+      return head + "the residual in " + channels(round.channel_reduction) + " is explained by " + c.info->name +
+             " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " + gain_text(round, c) + ".";
+    }
+    case RoundOutcome::indistinguishable: {
+      const CandidateScore& c = round.ranking.front();
+      std::string text = head + c.info->name;
+      for (const AlikeEffect& a : round.alike) text += " and " + a.name;
+      text += " explain the residual in " + channels(round.channel_reduction) + " equally on this data (" + c.info->name +
+              ": " + gain_text(round, c);
+      for (const AlikeEffect& a : round.alike) {
+        text += "; " + a.name + ": corrections correlated r = " + short_number(a.correlation) +
+                ", difference t = " + short_number(a.against_best.t) + "); to tell " + c.info->name + " from " + a.name +
+                ", " + a.experiment.advice;
+      }
+      return text + ". The search continues with " + c.info->name + ": " + fitted_parameters_text(*round.claimed) + ".";
+    }
+  }
+  return head;
+}
+
+}  // namespace gc

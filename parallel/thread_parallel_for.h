@@ -1,0 +1,14 @@
+// A ParallelFor (core/diagnosis/parallel_for.h) on plain threads, for the edges that run the
+// diagnosis: the CLI, the benchmark and the tests. The core stays free of threads.
+#pragma once
+
+#include "core/diagnosis/parallel_for.h"
+
+namespace gc {
+
+/// Splits each call's range into `threads` contiguous chunks, runs them on threads - 1 new
+/// threads and the caller, and returns when all are done; exceptions from a chunk are rethrown.
+/// threads = 0 means std::thread::hardware_concurrency().
+ParallelFor thread_parallel_for(unsigned threads = 0);
+
+}  // namespace gc

@@ -1,0 +1,105 @@
+// diagnose and validate --add run as a user runs them, on the bundled recordings
+// (data/recordings/make_recordings.sh): find the hidden effect, write the model with it, and
+// watch the error fall to the noise.
+#include <numbers>
+
+#include <google/protobuf/util/json_util.h>
+#include <gtest/gtest.h>
+
+#include "idl/diagnosis.pb.h"
+#include "idl/validation.pb.h"
+#include "run_process.h"
+
+namespace gc::cli::testing {
+namespace {
+
+const std::string kRecordings = GC_BUNDLED_RECORDINGS_DIR;
+const std::string kHidden = kRecordings + "/hidden_eccentricity_torque_ramp.csv";
+constexpr double kNoiseNm = 2000.0;  // make_recordings.sh: --noise-nm 2000
+
+template <typename Message>
+Message parse(const ProcessResult& run) {
+  Message message;
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(google::protobuf::util::JsonStringToMessage(run.out, &message).ok()) << run.out;
+  return message;
+}
+
+double parameter(const gearcoupling::v1::ParameterSetRecord& set, const std::string& name) {
+  for (const auto& p : set.parameters()) if (p.name() == name) return p.value();
+  ADD_FAILURE() << "no parameter " << name;
+  return 0.0;
+}
+
+TEST(DiagnoseCli, FindsTheBundledHiddenEccentricityAndThenOnlyNoise) {
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(
+      run_gearcoupling({"diagnose", "--data", kHidden, "--model", "paper", "--json"}));
+  ASSERT_EQ(result.rounds_size(), 2) << result.summary();
+  EXPECT_EQ(result.rounds(0).outcome(), "effect_found");
+  EXPECT_EQ(result.rounds(0).ranking(0).effect(), "eccentricity");
+  EXPECT_EQ(result.rounds(0).claimed().effect(), "eccentricity");
+  // hidden_eccentricity.truth.textproto: 0.0015 rad, the default threshold 1 and direction pi/2.
+  EXPECT_NEAR(parameter(result.rounds(0).claimed(), "eccentric_misalignment_rad"), 0.0015, 0.0015 * 0.05);
+  EXPECT_NEAR(parameter(result.rounds(0).claimed(), "threshold_scale"), 1.0, 0.05);
+  EXPECT_NEAR(parameter(result.rounds(0).claimed(), "gravity_direction_rad"), std::numbers::pi / 2, 0.05);
+  EXPECT_EQ(result.rounds(1).outcome(), "noise");
+  EXPECT_NEAR(result.rounds(1).rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+}
+
+TEST(DiagnoseCli, TerminalVerdictNamesTheEffectAndTheFall) {
+  const ProcessResult run = run_gearcoupling({"diagnose", "--data", kHidden, "--model", "paper"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("is explained by eccentricity"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("held-out RMSE falls"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the residual is noise"), std::string::npos) << run.out;
+}
+
+TEST(DiagnoseCli, ClaimsNothingOnARecordingOfTheModelItself) {
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(run_gearcoupling(
+      {"diagnose", "--data", kRecordings + "/paper_moment_sweep.csv", "--model", "paper", "--json"}));
+  ASSERT_EQ(result.rounds_size(), 1);
+  EXPECT_EQ(result.rounds(0).outcome(), "noise");
+}
+
+TEST(DiagnoseCli, WrittenModelValidatesAtTheNoiseLevel) {
+  const std::string model = temp_path("diagnosed") + ".textproto";
+  ASSERT_EQ(run_gearcoupling({"diagnose", "--data", kHidden, "--model", "paper", "--write-model", model}).exit_code, 0);
+  const auto result = parse<gearcoupling::v1::ValidationResult>(
+      run_gearcoupling({"validate", "--data", kHidden, "--model", model, "--json"}));
+  ASSERT_EQ(result.models_size(), 1);
+  EXPECT_NEAR(result.models(0).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+  EXPECT_NEAR(result.models(0).overall().msz().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+}
+
+TEST(ValidateAddCli, ShowsBeforeAndAfterWithTheErrorFalling) {
+  const std::vector<std::string> args = {"validate", "--data", kHidden, "--model", "paper", "--add",
+                                         "eccentricity=eccentric_misalignment_rad=0.0015"};
+  auto json_args = args;
+  json_args.push_back("--json");
+  const auto result = parse<gearcoupling::v1::ValidationResult>(run_gearcoupling(json_args));
+  ASSERT_EQ(result.models_size(), 2);
+  EXPECT_EQ(result.models(1).model(), "paper + eccentricity");
+  EXPECT_LT(result.models(1).overall().msy().rmse_nm(), 0.5 * result.models(0).overall().msy().rmse_nm());
+  EXPECT_NEAR(result.models(1).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+  const ProcessResult table = run_gearcoupling(args);
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("Before (paper) and after (paper + eccentricity)"), std::string::npos) << table.out;
+}
+
+TEST(ValidateAddCli, BadEffectSpecsAreBadInputNamingTheField) {
+  const auto run_add = [](const std::string& spec) {
+    return run_gearcoupling({"validate", "--data", kHidden, "--model", "paper", "--add", spec});
+  };
+  const ProcessResult unknown = run_add("teleportation");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("effects.teleportation"), std::string::npos) << unknown.err;
+  const ProcessResult out_of_range = run_add("hysteresis=lag_rad=1");
+  EXPECT_EQ(out_of_range.exit_code, 2);
+  EXPECT_NE(out_of_range.err.find("effects.hysteresis.lag_rad"), std::string::npos) << out_of_range.err;
+  const ProcessResult not_a_number = run_add("hysteresis=lag_rad=much");
+  EXPECT_EQ(not_a_number.exit_code, 2);
+  EXPECT_NE(not_a_number.err.find("lag_rad=much"), std::string::npos) << not_a_number.err;
+}
+
+}  // namespace
+}  // namespace gc::cli::testing
