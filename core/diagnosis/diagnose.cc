@@ -51,7 +51,7 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
                                             const Folds& folds, const ParallelFor& parallel,
                                             const DiagnosisSettings& settings) {
   std::vector<CandidateScore> ranking;
-  for (const EffectRegistration& registration : effect_registry()) {
+  for (const EffectRegistration& registration : settings.library) {
     if (model.has_effect(registration.info->name)) continue;
     ranking.push_back(score_candidate(model, registration, observations, search, base, folds, parallel,
                                       settings.cross_validation));
@@ -135,8 +135,8 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   return round;
 }
 
-const EffectRegistration& registration_of(const std::string& name) {
-  for (const EffectRegistration& r : effect_registry()) if (r.info->name == name) return r;
+const EffectRegistration& registration_of(const std::string& name, const DiagnosisSettings& settings) {
+  for (const EffectRegistration& r : settings.library) if (r.info->name == name) return r;
   throw InvalidInput("effects." + name, "not registered");
 }
 
@@ -175,7 +175,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     DiagnosisRound round = search_round(current, residual, observations, rows, search, folds, parallel, settings);
     if (round.outcome == RoundOutcome::effect_found || round.outcome == RoundOutcome::indistinguishable) {
       const CandidateScore& best = round.ranking.front();
-      const EffectRegistration& registration = registration_of(best.info->name);
+      const EffectRegistration& registration = registration_of(best.info->name, settings);
       round.claimed = refit_effect(current, registration, *best.fit, observations, refit, parallel,
                                    settings.final_iterations, true);
     }

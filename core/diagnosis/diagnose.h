@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 
 #include "core/coupling_model.h"
+#include "core/effects/effect_registry.h"
 #include "core/diagnosis/candidate_score.h"
 #include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
@@ -24,6 +25,9 @@
 namespace gc {
 
 struct DiagnosisSettings {
+  /// The effects the search tries: the library, plus any effect a user registers here
+  /// (docs/adding-an-effect.md). Effects the model already has are skipped.
+  std::vector<EffectRegistration> library = effect_registry();
   /// The search fits every candidate on at most this many rows, evenly spaced in time; the
   /// claimed effect is then refitted on every row. 1500 rows of 2 channels pin a parameter that
   /// halves the error to a few % while keeping a search of the library to seconds.
