@@ -23,69 +23,51 @@ std::optional<double> from_wire_optional(const double* value) {
 
 char* wire_string(const std::string& text) { return dds_string_dup(text.c_str()); }
 
+// The numeric fields of a coupling definition, one list for both directions: `copy(core_field,
+// wire_field)` is called for each; the name and the optional fields are handled by the callers.
+template <typename Core, typename Wire, typename Copy>
+void coupling_numeric_fields(Core& core, Wire& wire, Copy copy) {
+  copy(core.teeth, wire.teeth);
+  copy(core.module_m, wire.module_m);
+  copy(core.pressure_angle_rad, wire.pressure_angle_rad);
+  copy(core.pitch_diameter_m, wire.pitch_diameter_m);
+  copy(core.base_diameter_m, wire.base_diameter_m);
+  copy(core.outer_diameter_m, wire.outer_diameter_m);
+  copy(core.root_diameter_m, wire.root_diameter_m);
+  copy(core.center_distance_m, wire.center_distance_m);
+  copy(core.backlash_m, wire.backlash_m);
+  copy(core.tooth_thickness_m, wire.tooth_thickness_m);
+  copy(core.tool_tip_radius_m, wire.tool_tip_radius_m);
+  copy(core.facewidth_m, wire.facewidth_m);
+  copy(core.lead_modification_m, wire.lead_modification_m);
+  copy(core.profile_tip_relief_m, wire.profile_tip_relief_m);
+  copy(core.profile_relief_start_roll_rad, wire.profile_relief_start_roll_rad);
+  copy(core.form_factor_hub, wire.form_factor_hub);
+  copy(core.form_factor_sleeve, wire.form_factor_sleeve);
+  copy(core.youngs_modulus_pa, wire.youngs_modulus_pa);
+  copy(core.poisson_ratio, wire.poisson_ratio);
+  copy(core.design_misalignment_rad, wire.design_misalignment_rad);
+  copy(core.coupling_weight_n, wire.coupling_weight_n);
+  copy(core.shaft_weight_per_length_n_per_m, wire.shaft_weight_per_length_n_per_m);
+  copy(core.shaft_length_m, wire.shaft_length_m);
+  copy(core.tilt_rad, wire.tilt_rad);
+  copy(core.allowables.contact_stress_pa, wire.allowables.contact_stress_pa);
+  copy(core.allowables.bending_stress_pa, wire.allowables.bending_stress_pa);
+}
+
 void to_wire(const CouplingDefinition& in, gearcoupling_CouplingDefinition& out) {
   out.name = wire_string(in.name);
-  out.teeth = in.teeth;
-  out.module_m = in.module_m;
-  out.pressure_angle_rad = in.pressure_angle_rad;
-  out.pitch_diameter_m = in.pitch_diameter_m;
-  out.base_diameter_m = in.base_diameter_m;
-  out.outer_diameter_m = in.outer_diameter_m;
-  out.root_diameter_m = in.root_diameter_m;
-  out.center_distance_m = in.center_distance_m;
-  out.backlash_m = in.backlash_m;
-  out.tooth_thickness_m = in.tooth_thickness_m;
-  out.tool_tip_radius_m = in.tool_tip_radius_m;
-  out.facewidth_m = in.facewidth_m;
-  out.lead_modification_m = in.lead_modification_m;
-  out.profile_tip_relief_m = in.profile_tip_relief_m;
-  out.profile_relief_start_roll_rad = in.profile_relief_start_roll_rad;
+  coupling_numeric_fields(in, out, [](const auto& core, auto& wire) { wire = core; });
   out.crown_radius_m = wire_optional(in.crown_radius_m);
-  out.form_factor_hub = in.form_factor_hub;
-  out.form_factor_sleeve = in.form_factor_sleeve;
-  out.youngs_modulus_pa = in.youngs_modulus_pa;
-  out.poisson_ratio = in.poisson_ratio;
-  out.design_misalignment_rad = in.design_misalignment_rad;
-  out.coupling_weight_n = in.coupling_weight_n;
-  out.shaft_weight_per_length_n_per_m = in.shaft_weight_per_length_n_per_m;
-  out.shaft_length_m = in.shaft_length_m;
-  out.tilt_rad = in.tilt_rad;
   out.sleeve_root_diameter_m = wire_optional(in.sleeve_root_diameter_m);
-  out.allowables.contact_stress_pa = in.allowables.contact_stress_pa;
-  out.allowables.bending_stress_pa = in.allowables.bending_stress_pa;
 }
 
 CouplingDefinition from_wire(const gearcoupling_CouplingDefinition& in) {
   CouplingDefinition out;
   out.name = in.name != nullptr ? in.name : "";
-  out.teeth = in.teeth;
-  out.module_m = in.module_m;
-  out.pressure_angle_rad = in.pressure_angle_rad;
-  out.pitch_diameter_m = in.pitch_diameter_m;
-  out.base_diameter_m = in.base_diameter_m;
-  out.outer_diameter_m = in.outer_diameter_m;
-  out.root_diameter_m = in.root_diameter_m;
-  out.center_distance_m = in.center_distance_m;
-  out.backlash_m = in.backlash_m;
-  out.tooth_thickness_m = in.tooth_thickness_m;
-  out.tool_tip_radius_m = in.tool_tip_radius_m;
-  out.facewidth_m = in.facewidth_m;
-  out.lead_modification_m = in.lead_modification_m;
-  out.profile_tip_relief_m = in.profile_tip_relief_m;
-  out.profile_relief_start_roll_rad = in.profile_relief_start_roll_rad;
+  coupling_numeric_fields(out, in, [](auto& core, const auto& wire) { core = wire; });
   out.crown_radius_m = from_wire_optional(in.crown_radius_m);
-  out.form_factor_hub = in.form_factor_hub;
-  out.form_factor_sleeve = in.form_factor_sleeve;
-  out.youngs_modulus_pa = in.youngs_modulus_pa;
-  out.poisson_ratio = in.poisson_ratio;
-  out.design_misalignment_rad = in.design_misalignment_rad;
-  out.coupling_weight_n = in.coupling_weight_n;
-  out.shaft_weight_per_length_n_per_m = in.shaft_weight_per_length_n_per_m;
-  out.shaft_length_m = in.shaft_length_m;
-  out.tilt_rad = in.tilt_rad;
   out.sleeve_root_diameter_m = from_wire_optional(in.sleeve_root_diameter_m);
-  out.allowables.contact_stress_pa = in.allowables.contact_stress_pa;
-  out.allowables.bending_stress_pa = in.allowables.bending_stress_pa;
   return out;
 }
 
