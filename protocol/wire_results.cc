@@ -10,73 +10,74 @@ Element* wire_buffer(std::size_t count) {
   return count == 0 ? nullptr : static_cast<Element*>(dds_alloc(count * sizeof(Element)));
 }
 
+// The scalar fields of a tooth-contact result, one list for both directions (see
+// coupling_numeric_fields in wire_inputs.cc): `copy(core_field, wire_field)` for each.
+template <typename Core, typename Wire, typename Copy>
+void tooth_contact_scalars(Core& core, Wire& wire, Copy copy) {
+  copy(core.load_sharing.q, wire.load_sharing.q);
+  copy(core.load_sharing.ze_over_zo, wire.load_sharing.ze_over_zo);
+  copy(core.load_sharing.iterations, wire.load_sharing.iterations);
+  copy(core.total_normal_load_n, wire.total_normal_load_n);
+  copy(core.mean_tooth_load_n, wire.mean_tooth_load_n);
+  copy(core.peak_tooth_load_n, wire.peak_tooth_load_n);
+  copy(core.elastic_deformation_m, wire.elastic_deformation_m);
+  copy(core.max_separation_m, wire.max_separation_m);
+  copy(core.offset_alpha_rad, wire.offset_alpha_rad);
+  copy(core.max_contact_offset_m, wire.max_contact_offset_m);
+  copy(core.z_axis_angle_rad, wire.z_axis_angle_rad);
+  copy(core.teeth_in_contact, wire.teeth_in_contact);
+  copy(core.max_load_tooth, wire.max_load_tooth);
+  copy(core.max_tooth_load_n, wire.max_tooth_load_n);
+  copy(core.sum_tooth_loads_n, wire.sum_tooth_loads_n);
+  copy(core.edge_loaded, wire.edge_loaded);
+  copy(core.slices, wire.slices);
+  copy(core.max_stress.contact_stress_pa, wire.max_stress.contact_stress_pa);
+  copy(core.max_stress.contact_half_width_m, wire.max_stress.contact_half_width_m);
+  copy(core.max_stress.bending_stress_pa, wire.max_stress.bending_stress_pa);
+  copy(core.max_stress.contact_safety_factor, wire.max_stress.contact_safety_factor);
+  copy(core.max_stress.bending_safety_factor, wire.max_stress.bending_safety_factor);
+}
+
+template <typename Core, typename Wire, typename Copy>
+void tooth_fields(Core& core, Wire& wire, Copy copy) {
+  copy(core.angle_rad, wire.angle_rad);
+  copy(core.load_n, wire.load_n);
+  copy(core.contact_offset_m, wire.contact_offset_m);
+  copy(core.deformation_m, wire.deformation_m);
+  copy(core.contact_length_m, wire.contact_length_m);
+  copy(core.zone_begin_m, wire.zone_begin_m);
+  copy(core.zone_end_m, wire.zone_end_m);
+}
+
+template <typename Core, typename Wire, typename Copy>
+void restoring_torque_scalars(Core& core, Wire& wire, Copy copy) {
+  copy(core.torque_nm, wire.torque_nm);
+  copy(core.teeth_in_contact, wire.teeth_in_contact);
+  copy(core.accessible_clearance_m, wire.accessible_clearance_m);
+  copy(core.design_clearance_m, wire.design_clearance_m);
+  copy(core.supported_weight_n, wire.supported_weight_n);
+  copy(core.sag_m, wire.sag_m);
+}
+
+constexpr auto kToWire = [](const auto& core, auto& wire) { wire = core; };
+constexpr auto kFromWire = [](auto& core, const auto& wire) { core = wire; };
+
 }  // namespace
 
 void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out) {
-  out.load_sharing.q = in.load_sharing.q;
-  out.load_sharing.ze_over_zo = in.load_sharing.ze_over_zo;
-  out.load_sharing.iterations = in.load_sharing.iterations;
-  out.total_normal_load_n = in.total_normal_load_n;
-  out.mean_tooth_load_n = in.mean_tooth_load_n;
-  out.peak_tooth_load_n = in.peak_tooth_load_n;
-  out.elastic_deformation_m = in.elastic_deformation_m;
-  out.max_separation_m = in.max_separation_m;
-  out.offset_alpha_rad = in.offset_alpha_rad;
-  out.max_contact_offset_m = in.max_contact_offset_m;
-  out.z_axis_angle_rad = in.z_axis_angle_rad;
+  tooth_contact_scalars(in, out, kToWire);
   const auto teeth = static_cast<std::uint32_t>(in.teeth.size());
   out.teeth._buffer = wire_buffer<gearcoupling_ToothLoad>(teeth);
   out.teeth._length = out.teeth._maximum = teeth;
   out.teeth._release = true;
-  for (std::uint32_t j = 0; j < teeth; ++j) {
-    const ToothLoad& t = in.teeth[j];
-    out.teeth._buffer[j] = gearcoupling_ToothLoad{t.angle_rad,        t.load_n,
-                                                  t.contact_offset_m, t.deformation_m,
-                                                  t.contact_length_m, t.zone_begin_m,
-                                                  t.zone_end_m};
-  }
-  out.teeth_in_contact = in.teeth_in_contact;
-  out.max_load_tooth = in.max_load_tooth;
-  out.max_tooth_load_n = in.max_tooth_load_n;
-  out.sum_tooth_loads_n = in.sum_tooth_loads_n;
-  out.edge_loaded = in.edge_loaded;
-  out.slices = in.slices;
-  out.max_stress = gearcoupling_ToothStress{
-      in.max_stress.contact_stress_pa, in.max_stress.contact_half_width_m,
-      in.max_stress.bending_stress_pa, in.max_stress.contact_safety_factor,
-      in.max_stress.bending_safety_factor};
+  for (std::uint32_t j = 0; j < teeth; ++j) tooth_fields(in.teeth[j], out.teeth._buffer[j], kToWire);
 }
 
 ToothContact from_wire(const gearcoupling_ToothContactResult& in) {
   ToothContact out;
-  out.load_sharing.q = in.load_sharing.q;
-  out.load_sharing.ze_over_zo = in.load_sharing.ze_over_zo;
-  out.load_sharing.iterations = in.load_sharing.iterations;
-  out.total_normal_load_n = in.total_normal_load_n;
-  out.mean_tooth_load_n = in.mean_tooth_load_n;
-  out.peak_tooth_load_n = in.peak_tooth_load_n;
-  out.elastic_deformation_m = in.elastic_deformation_m;
-  out.max_separation_m = in.max_separation_m;
-  out.offset_alpha_rad = in.offset_alpha_rad;
-  out.max_contact_offset_m = in.max_contact_offset_m;
-  out.z_axis_angle_rad = in.z_axis_angle_rad;
+  tooth_contact_scalars(out, in, kFromWire);
   out.teeth.resize(in.teeth._length);
-  for (std::uint32_t j = 0; j < in.teeth._length; ++j) {
-    const gearcoupling_ToothLoad& t = in.teeth._buffer[j];
-    out.teeth[j] = ToothLoad{t.angle_rad,        t.load_n,       t.contact_offset_m,
-                             t.deformation_m,    t.contact_length_m, t.zone_begin_m,
-                             t.zone_end_m};
-  }
-  out.teeth_in_contact = in.teeth_in_contact;
-  out.max_load_tooth = in.max_load_tooth;
-  out.max_tooth_load_n = in.max_tooth_load_n;
-  out.sum_tooth_loads_n = in.sum_tooth_loads_n;
-  out.edge_loaded = in.edge_loaded;
-  out.slices = in.slices;
-  out.max_stress = ToothStress{in.max_stress.contact_stress_pa, in.max_stress.contact_half_width_m,
-                               in.max_stress.bending_stress_pa,
-                               in.max_stress.contact_safety_factor,
-                               in.max_stress.bending_safety_factor};
+  for (std::uint32_t j = 0; j < in.teeth._length; ++j) tooth_fields(out.teeth[j], in.teeth._buffer[j], kFromWire);
   return out;
 }
 
@@ -129,26 +130,16 @@ InducedMoments from_wire(const gearcoupling_InducedMomentsResult& in) {
 }
 
 void to_wire(const RestoringTorque& in, gearcoupling_RestoringTorqueResult& out) {
-  out.torque_nm = in.torque_nm;
+  restoring_torque_scalars(in, out, kToWire);
   out.contact = in.contact == RootContact::kSleeveSides ? gearcoupling_ROOT_SLEEVE_SIDES
                                                         : gearcoupling_ROOT_SLEEVE_BOTTOM;
-  out.teeth_in_contact = in.teeth_in_contact;
-  out.accessible_clearance_m = in.accessible_clearance_m;
-  out.design_clearance_m = in.design_clearance_m;
-  out.supported_weight_n = in.supported_weight_n;
-  out.sag_m = in.sag_m;
 }
 
 RestoringTorque from_wire(const gearcoupling_RestoringTorqueResult& in) {
   RestoringTorque out;
-  out.torque_nm = in.torque_nm;
+  restoring_torque_scalars(out, in, kFromWire);
   out.contact = in.contact == gearcoupling_ROOT_SLEEVE_SIDES ? RootContact::kSleeveSides
                                                              : RootContact::kSleeveBottom;
-  out.teeth_in_contact = in.teeth_in_contact;
-  out.accessible_clearance_m = in.accessible_clearance_m;
-  out.design_clearance_m = in.design_clearance_m;
-  out.supported_weight_n = in.supported_weight_n;
-  out.sag_m = in.sag_m;
   return out;
 }
 
