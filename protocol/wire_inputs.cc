@@ -1,5 +1,7 @@
 #include "protocol/wire_inputs.h"
 
+#include "protocol/field_copy.h"
+
 #include <optional>
 
 #include "core/model_error.h"
@@ -57,7 +59,7 @@ void coupling_numeric_fields(Core& core, Wire& wire, Copy copy) {
 
 void to_wire(const CouplingDefinition& in, gearcoupling_CouplingDefinition& out) {
   out.name = wire_string(in.name);
-  coupling_numeric_fields(in, out, [](const auto& core, auto& wire) { wire = core; });
+  coupling_numeric_fields(in, out, kToWire);
   out.crown_radius_m = wire_optional(in.crown_radius_m);
   out.sleeve_root_diameter_m = wire_optional(in.sleeve_root_diameter_m);
 }
@@ -65,7 +67,7 @@ void to_wire(const CouplingDefinition& in, gearcoupling_CouplingDefinition& out)
 CouplingDefinition from_wire(const gearcoupling_CouplingDefinition& in) {
   CouplingDefinition out;
   out.name = in.name != nullptr ? in.name : "";
-  coupling_numeric_fields(out, in, [](auto& core, const auto& wire) { core = wire; });
+  coupling_numeric_fields(out, in, kFromWire);
   out.crown_radius_m = from_wire_optional(in.crown_radius_m);
   out.sleeve_root_diameter_m = from_wire_optional(in.sleeve_root_diameter_m);
   return out;

@@ -1,5 +1,7 @@
 #include "protocol/wire_results.h"
 
+#include "protocol/field_copy.h"
+
 #include <optional>
 
 namespace gc::protocol {
@@ -58,9 +60,6 @@ void restoring_torque_scalars(Core& core, Wire& wire, Copy copy) {
   copy(core.supported_weight_n, wire.supported_weight_n);
   copy(core.sag_m, wire.sag_m);
 }
-
-constexpr auto kToWire = [](const auto& core, auto& wire) { wire = core; };
-constexpr auto kFromWire = [](auto& core, const auto& wire) { core = wire; };
 
 }  // namespace
 
