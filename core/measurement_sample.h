@@ -16,6 +16,9 @@ struct MeasurementSample {
   int loading_direction = 0;
   std::optional<double> speed_rpm;            ///< [rpm]
   std::optional<double> temperature_c;        ///< [deg C]
+  /// Shaft rotation angle, integrated from speed over time by whoever reads the recording
+  /// (core/rotation_phase.h), so effects need no per-call state; where speed is recorded [rad].
+  std::optional<double> rotation_phase_rad;
   std::optional<double> applied_moment_y_nm;  ///< LAD moment about y [N·m]
   std::optional<double> applied_moment_z_nm;  ///< LAD moment about z [N·m]
 };
