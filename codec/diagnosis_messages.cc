@@ -84,6 +84,8 @@ const char* to_string(RoundOutcome outcome) {
     case RoundOutcome::indistinguishable: return "indistinguishable";
     case RoundOutcome::noise: return "noise";
     case RoundOutcome::unexplained: return "unexplained";
+    case RoundOutcome::partly_explained: return "partly_explained";
+    case RoundOutcome::formula_proposed: return "formula_proposed";
   }
   return "";
 }

@@ -48,7 +48,24 @@ CouplingModel CouplingModel::with_effect(std::shared_ptr<const Effect> effect) c
     if (existing->name() != effect->name()) effects.push_back(existing);
   }
   effects.push_back(std::move(effect));
+  // A formula (the expression effect) is defined on the model's moments before it: it stays last.
+  std::stable_partition(effects.begin(), effects.end(), [](const auto& e) { return e->name() != "expression"; });
   return CouplingModel(base_coupling_, std::move(effects), options_);
+}
+
+CouplingModel CouplingModel::without_effect(const std::string& name) const {
+  std::vector<std::shared_ptr<const Effect>> effects;
+  for (const auto& existing : effects_) {
+    if (existing->name() != name) effects.push_back(existing);
+  }
+  return CouplingModel(base_coupling_, std::move(effects), options_);
+}
+
+std::shared_ptr<const Effect> CouplingModel::effect(const std::string& name) const {
+  for (const auto& existing : effects_) {
+    if (existing->name() == name) return existing;
+  }
+  return nullptr;
 }
 
 ModelPrediction CouplingModel::predict(const MeasurementSample& sample) const {

@@ -34,6 +34,10 @@ class CouplingModel {
 
   /// This model with `effect` appended (or replacing the one of the same name).
   CouplingModel with_effect(std::shared_ptr<const Effect> effect) const;
+  /// This model without the effect of that name (unchanged when it has none).
+  CouplingModel without_effect(const std::string& name) const;
+  /// The effect of that name, nullptr when the model has none.
+  std::shared_ptr<const Effect> effect(const std::string& name) const;
 
   /// Sensor moments for one measured sample: effects on the inputs, eqs 5-47 through the
   /// z'' frame turned by the state's frame shift plus beta, effects on the outputs. Throws

@@ -37,10 +37,12 @@ std::optional<Eigen::MatrixX2d> held_out_residual(const CouplingModel& base, con
 CandidateScore score_candidate(const CouplingModel& base, const EffectRegistration& registration,
                                std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                const Eigen::MatrixX2d& base_residual, const Folds& folds,
-                               const ParallelFor& parallel, const CrossValidationSettings& settings) {
+                               const ParallelFor& parallel, const CrossValidationSettings& settings,
+                               const Effect* current) {
   CandidateScore score;
+  score.kind = current ? CandidateKind::refinement : CandidateKind::addition;
   score.info = registration.info;
-  score.fit = fit_effect(base, registration, observations, rows, parallel, settings.fit);
+  score.fit = fit_effect(base, registration, observations, rows, parallel, settings.fit, current);
   if (!score.fit) {
     score.failure = "no parameter values within the bounds let the model predict every row";
     return score;

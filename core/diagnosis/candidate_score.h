@@ -3,6 +3,7 @@
 // by fitting noise.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,7 +16,14 @@
 
 namespace gc {
 
+enum class CandidateKind {
+  addition,    ///< a library effect the model lacks
+  refinement,  ///< an effect the model has, with every parameter freed
+  formula,     ///< a formula of catalogue terms (core/diagnosis/formula_search.h)
+};
+
 struct CandidateScore {
+  CandidateKind kind = CandidateKind::addition;
   const EffectInfo* info = nullptr;
   std::optional<EffectFit> fit;   ///< on all search rows (for the ranking's parameters)
   /// Per search row, the residual of the model fitted without that row's fold [N·m].
@@ -32,13 +40,16 @@ struct CrossValidationSettings {
   int blocks_per_fold = 20;  ///< 100 blocks of 15 search rows: enough for the paired test
   int fold_iterations = 3;  ///< Levenberg-Marquardt steps per fold, warm-started from the full fit
   FitSettings fit;
+  std::uint64_t fold_seed = 0;  ///< blocked_folds' seed
 };
 
 /// `rows` in time order; `base_residual` the base model's residual on them (no parameters fitted,
-/// so it is its own held-out residual).
+/// so it is its own held-out residual). `current`: the effect of this name the base model has (a
+/// refinement starts from it and searches a box that holds it); nullptr for an addition.
 CandidateScore score_candidate(const CouplingModel& base, const EffectRegistration& registration,
                                std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                const Eigen::MatrixX2d& base_residual, const Folds& folds,
-                               const ParallelFor& parallel, const CrossValidationSettings& settings);
+                               const ParallelFor& parallel, const CrossValidationSettings& settings,
+                               const Effect* current = nullptr);
 
 }  // namespace gc

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace gc {
@@ -19,7 +20,9 @@ struct Folds {
 };
 
 /// `rows` positions 0..count-1 in time order; `folds` >= 2, `blocks_per_fold` >= 1; fewer blocks
-/// when there are fewer rows than blocks.
-Folds blocked_folds(std::size_t count, int folds, int blocks_per_fold);
+/// when there are fewer rows than blocks. Seed 0 deals blocks round-robin; another seed deals each
+/// run of `folds` consecutive blocks to the folds in a shuffled order (still every fold once per run,
+/// so every fold still sees the whole load sequence), to show a verdict does not hang on the cut.
+Folds blocked_folds(std::size_t count, int folds, int blocks_per_fold, std::uint64_t seed = 0);
 
 }  // namespace gc

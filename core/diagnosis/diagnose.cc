@@ -7,6 +7,7 @@
 #include "core/diagnosis/noise_estimate.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/effects/effect_registry.h"
+#include "core/effects/expression.h"
 #include "core/model_error.h"
 
 namespace gc {
@@ -46,15 +47,36 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
   return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
 }
 
+/// The registration that refits `effect`: the library's, or an expression over its own terms.
+std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
+  if (effect.name() == kExpressionEffect) {
+    std::vector<std::string> terms;
+    for (const ParameterSpec& p : effect.info().parameters) terms.push_back(p.name);
+    return expression_registration(terms);
+  }
+  for (const EffectRegistration& r : settings.library) if (r.info->name == effect.name()) return r;
+  return std::nullopt;
+}
+
 std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
                                             const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
                                             const Folds& folds, const ParallelFor& parallel,
-                                            const DiagnosisSettings& settings) {
+                                            const CouplingModel& given, const DiagnosisSettings& settings) {
   std::vector<CandidateScore> ranking;
   for (const EffectRegistration& registration : settings.library) {
-    if (model.has_effect(registration.info->name)) continue;
+    // The formula has its own stage; an effect the model has is a refinement below.
+    if (registration.info->name == kExpressionEffect || model.has_effect(registration.info->name)) continue;
     ranking.push_back(score_candidate(model, registration, observations, search, base, folds, parallel,
                                       settings.cross_validation));
+  }
+  if (settings.refinements) {
+    for (const auto& effect : model.effects()) {
+      if (!given.has_effect(effect->name())) continue;
+      const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
+      if (!registration || registration->info->parameters.empty()) continue;
+      ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,
+                                        settings.cross_validation, effect.get()));
+    }
   }
   std::stable_sort(ranking.begin(), ranking.end(), [](const CandidateScore& a, const CandidateScore& b) {
     if (a.failure.empty() != b.failure.empty()) return a.failure.empty();
@@ -71,24 +93,36 @@ bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const D
   return base_ms - effect_ms >= settings.claim_excess_share * excess && base_ms > effect_ms;
 }
 
+bool plausible(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
+
+/// Alike: corrections that point the same way, and held-out errors within a small share of each
+/// other or not significantly different.
+bool alike(const CandidateScore& best, const CandidateScore& other, const Eigen::MatrixX2d& base,
+           const Folds& folds, const DiagnosisSettings& settings, double& similarity, PairedBlockTest& t) {
+  similarity = correction_similarity(base, best.held_out_residual, other.held_out_residual);
+  t = paired_block_test(other.held_out_residual, best.held_out_residual, folds.block_of, folds.blocks);
+  const bool close = other.held_out_rmse_nm <= (1.0 + settings.alike_rmse_share) * best.held_out_rmse_nm;
+  return similarity >= settings.alike_correlation && (close || t.t < settings.alike_t);
+}
+
 std::vector<AlikeEffect> alike_effects(const CouplingModel& model, const std::vector<CandidateScore>& ranking,
                                        const Eigen::MatrixX2d& base, const Folds& folds, double base_ms,
                                        double noise_ms, std::span<const RecordedSample> observations,
                                        const std::vector<std::size_t>& rows, double noise_sigma,
                                        const DiagnosisSettings& settings) {
-  std::vector<AlikeEffect> alike;
+  std::vector<AlikeEffect> out;
   const CandidateScore& best = ranking.front();
   for (std::size_t k = 1; k < ranking.size(); ++k) {
     const CandidateScore& other = ranking[k];
-    if (!claimable(other, base_ms, noise_ms, settings)) continue;
-    const double similarity = correction_similarity(base, best.held_out_residual, other.held_out_residual);
-    const PairedBlockTest t = paired_block_test(other.held_out_residual, best.held_out_residual, folds.block_of, folds.blocks);
-    if (similarity < settings.alike_correlation || t.t >= settings.alike_t) continue;
-    alike.push_back({other.info->name, similarity, t,
-                     separating_experiment(model.with_effect(best.fit->effect), model.with_effect(other.fit->effect),
-                                           observations, rows, noise_sigma)});
+    if (!claimable(other, base_ms, noise_ms, settings) || !plausible(other) || other.info->name == best.info->name) continue;
+    double similarity = 0.0;
+    PairedBlockTest t;
+    if (!alike(best, other, base, folds, settings, similarity, t)) continue;
+    out.push_back({other.info->name, similarity, t,
+                   separating_experiment(model.with_effect(best.fit->effect), model.with_effect(other.fit->effect),
+                                         observations, rows, noise_sigma)});
   }
-  return alike;
+  return out;
 }
 
 /// Per channel, the share of the base mean square that the candidate's held-out residual removes.
@@ -98,24 +132,47 @@ Eigen::Vector2d channel_reduction(const Eigen::MatrixX2d& base, const Eigen::Mat
   return (b > 0.0).select(1.0 - h / b.max(1e-300), 0.0).matrix();
 }
 
-/// One round: residual, noise, signature, ranking, outcome.
+/// The residual is more than noise: its mean square beyond the noise's by 4.5 standard errors (of a
+/// mean square of n samples with the noise's correlation, and of the noise estimate itself), or an
+/// input whose bins carry more than the correlated noise allows.
+bool is_systematic(double all_ms, double noise_ms, std::size_t rows, const NoiseEstimate& noise,
+                   const ResidualSignature& signature) {
+  const double n = static_cast<double>(rows);
+  const double inflation = noise.variance_inflation();
+  return all_ms > noise_ms * (1.0 + 4.5 * std::sqrt(inflation / n + 5.4 * inflation / n)) || signature.systematic();
+}
+
+/// Moves the effect to claim to the front: the best plausible one unless an implausible one is
+/// significantly better (then it is claimed as partly explaining).
+void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, double noise_ms, const Folds& folds,
+                     const DiagnosisSettings& settings) {
+  if (ranking.empty() || plausible(ranking.front())) return;
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    if (!claimable(ranking[k], base_ms, noise_ms, settings) || !plausible(ranking[k])) continue;
+    const PairedBlockTest t = paired_block_test(ranking[k].held_out_residual, ranking.front().held_out_residual,
+                                                folds.block_of, folds.blocks);
+    if (t.t < settings.alike_t) std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(k),
+                                             ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    return;
+  }
+}
+
+/// One round: residual, noise, signature, candidates, outcome.
 /// `residual`: the model's on `rows`.
 DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
                             std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
                             const std::vector<std::size_t>& search, const Folds& folds,
-                            const ParallelFor& parallel, const DiagnosisSettings& settings) {
+                            const ParallelFor& parallel, const CouplingModel& given, const DiagnosisSettings& settings) {
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
-  round.noise_sigma_nm = successive_difference_noise(residual);
-  const double noise_ms = round.noise_sigma_nm.squaredNorm() / 2.0;
+  round.noise = estimate_noise(residual);
+  round.noise_sigma_nm = round.noise.sigma_nm;
+  const double noise_ms = round.noise.sigma_nm.squaredNorm() / 2.0;
   const double all_ms = pooled_mean_square(residual);
   round.noise_rmse_nm = std::sqrt(noise_ms);
   round.rmse_nm = std::sqrt(all_ms);
-  round.signature = residual_signature(observations, rows, residual);
-  // Excess over the noise beyond 3.7 standard errors of a mean square of 2n Gaussian values
-  // (sqrt(2 / 2n)) and of the median-based noise estimate (about sqrt(5.4 / n)).
-  const double n = static_cast<double>(rows.size());
-  round.systematic = all_ms > noise_ms * (1.0 + 3.7 * std::sqrt(1.0 / n + 5.4 / n)) || round.signature.systematic();
+  round.signature = residual_signature(observations, rows, residual, round.noise.variance_inflation());
+  round.systematic = is_systematic(all_ms, noise_ms, rows.size(), round.noise, round.signature);
   const Eigen::MatrixX2d base = select_rows(residual, rows, search);
   const double base_ms = pooled_mean_square(base);
   round.search_base_rmse_nm = std::sqrt(base_ms);
@@ -123,24 +180,86 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.outcome = RoundOutcome::noise;
     return round;
   }
-  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, settings);
-  if (round.ranking.empty() || !claimable(round.ranking.front(), base_ms, noise_ms, settings)) {
+  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, settings);
+  put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
+  if (settings.formula) {
+    FormulaSettings formula_settings = settings.formula_settings;
+    formula_settings.variance_inflation = round.noise.variance_inflation();
+    round.formula = formula_candidate(observations, search, base, folds, formula_settings);
+  }
+  const bool effect_ok = !round.ranking.empty() && claimable(round.ranking.front(), base_ms, noise_ms, settings);
+  const bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
+  if (formula_ok && effect_ok) {
+    const CandidateScore& effect = round.ranking.front();
+    const PairedBlockTest t = paired_block_test(effect.held_out_residual, round.formula->held_out_residual,
+                                                folds.block_of, folds.blocks);
+    const double effect_gain = base_ms - std::pow(effect.held_out_rmse_nm, 2);
+    const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
+    round.formula_chosen = !plausible(effect) || (t.t >= settings.formula_over_effect_t &&
+                                                  formula_gain >= settings.formula_over_effect_gain * effect_gain);
+  } else {
+    round.formula_chosen = formula_ok;
+  }
+  if (!effect_ok && !formula_ok) {
     round.outcome = RoundOutcome::unexplained;
     return round;
   }
-  round.alike = alike_effects(model, round.ranking, base, folds, base_ms, noise_ms, observations, rows,
-                              round.noise_rmse_nm, settings);
-  round.outcome = round.alike.empty() ? RoundOutcome::effect_found : RoundOutcome::indistinguishable;
-  round.channel_reduction = channel_reduction(base, round.ranking.front().held_out_residual);
+  if (round.formula_chosen) {
+    round.outcome = RoundOutcome::formula_proposed;
+  } else {
+    round.alike = alike_effects(model, round.ranking, base, folds, base_ms, noise_ms, observations, rows,
+                                round.noise_rmse_nm, settings);
+    round.outcome = !plausible(round.ranking.front()) ? RoundOutcome::partly_explained
+                    : round.alike.empty()             ? RoundOutcome::effect_found
+                                                      : RoundOutcome::indistinguishable;
+  }
+  round.channel_reduction = channel_reduction(base, round.chosen().held_out_residual);
   return round;
 }
 
-const EffectRegistration& registration_of(const std::string& name, const DiagnosisSettings& settings) {
-  for (const EffectRegistration& r : settings.library) if (r.info->name == name) return r;
-  throw InvalidInput("effects." + name, "not registered");
+/// The round's claim refitted on the refit rows (an effect from its search fit; a formula by least
+/// squares), or nullopt when the refit cannot predict those rows.
+std::optional<EffectFit> refit_claim(const CouplingModel& model, const DiagnosisRound& round,
+                                     std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                                     const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& refit,
+                                     const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  const CandidateScore& chosen = round.chosen();
+  if (round.formula_chosen) {
+    std::vector<std::string> terms;
+    for (const ParameterEstimate& p : chosen.fit->parameters) terms.push_back(p.name);
+    return fit_formula(observations, refit, select_rows(residual, rows, refit), terms, round.noise.variance_inflation());
+  }
+  const std::shared_ptr<const Effect> current = model.effect(chosen.info->name);
+  const std::optional<EffectRegistration> registration =
+      current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
+  if (!registration) return std::nullopt;
+  return refit_effect(model, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
+}
+
+/// Earlier claims that the model no longer needs once this round's claim is in: the model without
+/// one is not worse on the search rows' held-out blocks than this round's held-out residual with
+/// it (a paired t below keep_t, without refitting anything to make up for it).
+std::vector<std::string> claims_to_drop(const CouplingModel& model, const Diagnosis& diagnosis,
+                                        const CouplingModel& base_model, const DiagnosisRound& round,
+                                        std::span<const RecordedSample> observations,
+                                        const std::vector<std::size_t>& search, const Folds& folds,
+                                        const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  std::vector<std::string> drop;
+  for (const auto& earlier : diagnosis.added) {
+    // A refinement replaced an effect of the base model: it is refined again, never removed.
+    if (base_model.has_effect(earlier->name()) || earlier->name() == round.claimed->effect->name()) continue;
+    const ModelResiduals without = model_residuals(model.without_effect(earlier->name()), observations, search, parallel);
+    if (!without.failed_rows.empty()) continue;
+    const PairedBlockTest t = paired_block_test(without.residual, round.chosen().held_out_residual, folds.block_of,
+                                                folds.blocks);
+    if (t.t < settings.keep_t) drop.push_back(earlier->name());
+  }
+  return drop;
 }
 
 }  // namespace
+
+const CandidateScore& DiagnosisRound::chosen() const { return formula_chosen ? *formula : ranking.front(); }
 
 Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
@@ -159,6 +278,16 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
   // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
+  // Spikes are measurement faults, not physics: excluded once, from the base model's residual, and counted.
+  for (std::size_t position : outlier_positions(residual, settings.outlier_deviations)) out.outlier_rows.push_back(rows[position]);
+  if (!out.outlier_rows.empty()) {
+    std::vector<std::size_t> sorted = out.outlier_rows;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<std::size_t> kept;
+    for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
+    residual = select_rows(residual, rows, kept);
+    rows = std::move(kept);
+  }
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
     throw InvalidInput("recording.rows", static_cast<double>(rows.size()),
@@ -169,35 +298,42 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   const std::vector<std::size_t> refit = evenly_spaced(rows, settings.refit_rows);
   out.refit_rows = refit.size();
   const Folds folds = blocked_folds(search.size(), settings.cross_validation.folds,
-                                    settings.cross_validation.blocks_per_fold);
+                                    settings.cross_validation.blocks_per_fold, settings.cross_validation.fold_seed);
+  if (!out.outlier_rows.empty()) {
+    out.summary = std::to_string(out.outlier_rows.size()) + " of " + std::to_string(out.rows) +
+                  " samples excluded as outliers (more than " + short_number(settings.outlier_deviations) +
+                  " robust deviations from the running median of their neighbours).";
+  }
   CouplingModel current = model;
   for (int r = 0; r < settings.max_rounds; ++r) {
-    DiagnosisRound round = search_round(current, residual, observations, rows, search, folds, parallel, settings);
-    if (round.outcome == RoundOutcome::effect_found || round.outcome == RoundOutcome::indistinguishable) {
-      const CandidateScore& best = round.ranking.front();
-      const EffectRegistration& registration = registration_of(best.info->name, settings);
-      round.claimed = refit_effect(current, registration, *best.fit, observations, refit, parallel,
-                                   settings.final_iterations, true);
-    }
+    DiagnosisRound round = search_round(current, residual, observations, rows, search, folds, parallel, model, settings);
+    const bool claims = round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained;
+    if (claims) round.claimed = refit_claim(current, round, observations, rows, residual, refit, parallel, settings);
     std::optional<ModelResiduals> next;
+    CouplingModel candidate = current;
     if (round.claimed) {
-      next = model_residuals(current.with_effect(round.claimed->effect), observations, rows, parallel);
+      candidate = current.with_effect(round.claimed->effect);
+      next = model_residuals(candidate, observations, rows, parallel);
       if (!next->failed_rows.empty()) round.claimed.reset();
     }
-    // A claimed effect whose refit cannot predict every row is reported with its search fit,
-    // and the search stops there rather than lose rows.
+    // A claim whose refit cannot predict every row is reported with its search fit, and the
+    // search stops there rather than lose rows.
     const bool continues = round.claimed.has_value();
-    if (!continues && round.ranking.size() > 0 && round.outcome != RoundOutcome::noise &&
-        round.outcome != RoundOutcome::unexplained) {
-      round.claimed = round.ranking.front().fit;
+    if (!continues && claims) round.claimed = round.chosen().fit;
+    if (continues) {
+      round.dropped = claims_to_drop(candidate, out, model, round, observations, search, folds, parallel, settings);
+      for (const std::string& name : round.dropped) {
+        candidate = candidate.without_effect(name);
+        std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
+      }
+      if (!round.dropped.empty()) next = model_residuals(candidate, observations, rows, parallel);
+      std::erase_if(out.added, [&](const auto& e) { return e->name() == round.claimed->effect->name(); });
+      out.added.push_back(round.claimed->effect);
+      residual = next->residual;
+      current = candidate;
     }
     round.verdict = round_verdict(static_cast<int>(out.rounds.size()) + 1, round);
     out.summary += (out.summary.empty() ? "" : "\n") + round.verdict;
-    if (continues) {
-      residual = next->residual;
-      out.added.push_back(round.claimed->effect);
-      current = current.with_effect(round.claimed->effect);
-    }
     out.rounds.push_back(std::move(round));
     if (!continues) break;
   }

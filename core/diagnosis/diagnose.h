@@ -1,8 +1,11 @@
-// Which effect of the library the model lacks (docs/diagnosis.md). For a recording and a base
-// model: for every registered effect the model does not have, fit it on training folds and score
-// it on held-out folds; rank by held-out RMSE; claim the best only when its gain is significant
-// against the noise; add it and search again. Says so when the residual is noise, and shows the
-// residual's signature when no effect explains it.
+// What the model lacks (docs/diagnosis.md). For a recording and a base model, each round scores
+// three kinds of candidate on held-out folds: every registered effect the model does not have,
+// every effect it has with its parameters freed (a refinement), and a sparse formula of physical
+// terms (the discrepancy stage). The best is claimed only when its held-out gain is significant
+// against autocorrelated noise; a formula wins over an effect only when significantly better, or
+// when the effect's fit is implausible. After each claim, earlier claims that no longer earn their
+// place are dropped. Says so when the residual is noise, and shows the residual's signature when
+// nothing explains it.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +20,8 @@
 #include "core/coupling_model.h"
 #include "core/effects/effect_registry.h"
 #include "core/diagnosis/candidate_score.h"
+#include "core/diagnosis/formula_search.h"
+#include "core/diagnosis/noise_estimate.h"
 #include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
 #include "core/diagnosis/residual_signature.h"
@@ -26,8 +31,22 @@ namespace gc {
 
 struct DiagnosisSettings {
   /// The effects the search tries: the library, plus any effect a user registers here
-  /// (docs/adding-an-effect.md). Effects the model already has are skipped.
+  /// (docs/adding-an-effect.md). Effects the model already has are tried as refinements.
   std::vector<EffectRegistration> library = effect_registry();
+  /// Also try the given model's own effects with their parameters freed (an effect this diagnosis
+  /// added had every parameter free already).
+  bool refinements = true;
+  bool formula = true;      ///< the discrepancy stage
+  FormulaSettings formula_settings;
+  /// A formula is claimed over a claimable, plausible effect only when its held-out gain over that
+  /// effect has a block-paired t of at least this, and it removes at least formula_over_effect_gain
+  /// times the mean square the effect removes: physics first, unless the effect explains less than
+  /// half of what the formula shows is there (an offset taking the mean of a drift).
+  double formula_over_effect_t = 3.0;
+  double formula_over_effect_gain = 2.0;
+  /// Samples more than this many robust deviations from their running median are outliers,
+  /// excluded and counted (core/diagnosis/noise_estimate.h).
+  double outlier_deviations = 7.0;
   /// The search fits every candidate on at most this many rows, evenly spaced in time; the
   /// claimed effect is then refitted on every row. 1500 rows of 2 channels pin a parameter that
   /// halves the error to a few % while keeping a search of the library to seconds.
@@ -39,23 +58,31 @@ struct DiagnosisSettings {
   /// residual. Keeps a 100,000-row diagnosis within seconds.
   std::size_t refit_rows = 20000;
   int final_iterations = 3;     ///< Levenberg-Marquardt steps of that refit
-  int max_rounds = 3;
+  int max_rounds = 4;
   /// Claim: the held-out gain over the base model has a block-paired t of at least this (one-sided
   /// p about 3e-4 over 100 blocks, under 3e-3 for the whole library of about ten candidates) ...
   double claim_t = 3.5;
   /// ... and removes at least this share of the residual's excess over the noise (mean squares).
   double claim_excess_share = 0.3;
-  /// Alike: held-out corrections correlated at least this much, and the better not significantly
-  /// better (paired t below alike_t).
-  double alike_correlation = 0.95;
+  /// Alike: held-out corrections correlated at least this much, and either held-out RMSEs within
+  /// alike_rmse_share of each other or the better not significantly better (paired t below
+  /// alike_t). The share makes the verdict stable across fold cuts: two fits 0.3 % apart are alike
+  /// whichever blocks are held out, while a t near 2 is not.
+  double alike_correlation = 0.9;
+  double alike_rmse_share = 0.01;
   double alike_t = 2.0;
+  /// Dropping an earlier claim: the model without it is not worse on held-out blocks by a paired
+  /// t of this.
+  double keep_t = 2.0;
 };
 
 enum class RoundOutcome {
-  effect_found,       ///< one effect explains the residual
+  effect_found,       ///< one effect (added or refined) explains the residual, with plausible values
   indistinguishable,  ///< several effects explain it equally on this data
   noise,              ///< the residual is consistent with the noise
-  unexplained,        ///< systematic, and no library effect explains it
+  unexplained,        ///< systematic, and neither an effect nor a formula explains it
+  partly_explained,   ///< an effect lowers the error, but with implausible values or on a bound
+  formula_proposed,   ///< no effect explains it; a formula of physical terms does
 };
 
 struct AlikeEffect {
@@ -68,8 +95,9 @@ struct AlikeEffect {
 struct DiagnosisRound {
   std::vector<std::string> model_effects;  ///< the model searched from
   double rmse_nm = 0.0;                    ///< the model's pooled RMSE over all usable rows
-  Eigen::Vector2d noise_sigma_nm = Eigen::Vector2d::Zero();  ///< per channel, successive differences
+  Eigen::Vector2d noise_sigma_nm = Eigen::Vector2d::Zero();  ///< per channel (variogram fit)
   double noise_rmse_nm = 0.0;              ///< pooled noise sigma
+  NoiseEstimate noise;                     ///< sigma and lag-1 autocorrelation per channel
   bool systematic = false;                 ///< the residual is more than noise
   ResidualSignature signature;             ///< of the model's residual, all usable rows
   std::vector<CandidateScore> ranking;     ///< by held-out RMSE, best first; failures last
@@ -79,6 +107,11 @@ struct DiagnosisRound {
   /// Per channel, the share of the model's mean square residual the claimed effect removes (held out).
   Eigen::Vector2d channel_reduction = Eigen::Vector2d::Zero();
   std::vector<AlikeEffect> alike;          ///< when indistinguishable
+  std::optional<CandidateScore> formula;   ///< the discrepancy stage's candidate, when it kept terms
+  /// The candidate claimed: ranking.front(), or the formula (then ranking.front() is the best effect).
+  const CandidateScore& chosen() const;
+  bool formula_chosen = false;
+  std::vector<std::string> dropped;        ///< earlier claims dropped after this round's claim
   std::string verdict;                     ///< plain language
 };
 
@@ -89,6 +122,7 @@ struct Diagnosis {
   std::size_t rows = 0;                   ///< rows in the recording
   std::vector<std::size_t> excluded_rows; ///< rows the base model cannot predict
   std::string exclusion_reason;           ///< the model's message for the first of them
+  std::vector<std::size_t> outlier_rows;  ///< rows excluded as outliers (spikes)
   std::size_t search_rows = 0;
   std::size_t refit_rows = 0;
   std::string summary;                    ///< the verdicts, one line per round

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/diagnosis/model_residuals.h"
@@ -24,6 +25,7 @@ struct EffectProblem {
   const ParallelFor& parallel;
   std::vector<bool> free;
   Eigen::VectorXd full;  ///< every parameter in the unit box
+  double jam_angle_rad;  ///< of the base model's coupling, for plausible ranges
 
   Eigen::VectorXd expand(const Eigen::VectorXd& free_x) const {
     Eigen::VectorXd x = full;
@@ -73,8 +75,9 @@ Eigen::MatrixXd full_jacobian(const EffectProblem& problem, const Eigen::MatrixX
 
 /// Starts: defaults, neutral values, Halton points; the `count` with the lowest cost.
 std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
-                                         int& evaluations) {
+                                         const Effect* current, int& evaluations) {
   std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};
+  if (current) candidates.push_back(problem.box.to_unit(current->values()));
   std::vector<double> neutral;
   for (const ParameterSpec& spec : problem.box.info().parameters) neutral.push_back(spec.neutral);
   candidates.push_back(problem.box.to_unit(neutral));
@@ -92,10 +95,25 @@ std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const Fit
   return starts;
 }
 
-std::string at_bound_note(const ParameterSpec& spec, double unit) {
-  if (unit <= 0.0) return "at its lower bound " + std::to_string(spec.lower) + " " + spec.unit;
-  if (unit >= 1.0) return "at its upper bound " + std::to_string(spec.upper) + " " + spec.unit;
-  return "";
+std::string number(double v) {
+  std::ostringstream text;
+  text.precision(3);
+  text << v;
+  return text.str();
+}
+
+/// Within 1 % of the box's width from an edge: the polish stops short of a bound by about its step.
+bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
+
+/// Empty when the value is inside the box, else which physical bound it sits on.
+std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, int i, double unit) {
+  if (!on_edge(unit) || !box.at_physical_bound(i, unit)) return "";
+  return unit <= 0.5 ? "at its lower bound " + number(spec.lower) + " " + spec.unit
+                     : "at its upper bound " + number(spec.upper) + " " + spec.unit;
+}
+
+std::string implausible_note(const ParameterSpec& spec, double low, double high) {
+  return "outside its plausible range " + number(low) + " to " + number(high) + " " + spec.unit;
 }
 
 /// Estimates in physical units: s^2 (J'J)^-1 on the free parameters, scaled by the bounds.
@@ -104,6 +122,10 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
   EffectFit fit;
   fit.info = problem.registration.info;
   fit.unit_values = problem.expand(result.x);
+  for (int i = 0; i < problem.box.size(); ++i) {
+    fit.box_lower.push_back(problem.box.lower(i));
+    fit.box_upper.push_back(problem.box.upper(i));
+  }
   fit.free = problem.free;
   const ParameterValues values = problem.box.to_values(fit.unit_values);
   fit.effect = problem.registration.make(values);
@@ -122,7 +144,11 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
                         hold_notes[static_cast<std::size_t>(i)]};
     if (problem.free[i]) {
       if (with_uncertainty) e.standard_error = std::sqrt(std::max(0.0, covariance(k, k))) * problem.box.range(i);
-      e.note = at_bound_note(spec, fit.unit_values(i));
+      e.note = at_bound_note(spec, problem.box, i, fit.unit_values(i));
+      const auto [low, high] = plausible_range(spec, problem.jam_angle_rad);
+      const double tolerance = 1e-9 * std::max(1.0, std::abs(high - low));
+      e.plausible = e.note.empty() && e.value >= low - tolerance && e.value <= high + tolerance;
+      if (e.note.empty() && !e.plausible) e.note = implausible_note(spec, low, high);
       ++k;
     }
     fit.parameters.push_back(e);
@@ -137,7 +163,40 @@ std::string hold_note(const EffectProblem& problem, const Unidentifiable& u) {
          std::to_string(u.correlation).substr(0, 6) + "); held at its default";
 }
 
+/// A parameter that ends on the edge of the plausible box, where the box is not yet the physical
+/// bound, gets the box widened to that bound and the fit goes on from there (twice at most: a
+/// truth beyond the plausible range is reported as such, not clipped to it).
+void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResult>& best, int& evaluations,
+                         const LeastSquaresOptions& options) {
+  for (int pass = 0; pass < 2; ++pass) {
+    ParameterBox box = problem.box;
+    bool widened = false;
+    for (int i = 0; i < box.size(); ++i) {
+      const double unit = problem.full(i);
+      if (problem.free[static_cast<std::size_t>(i)] && on_edge(unit) && !box.at_physical_bound(i, unit)) {
+        box = box.widened(i, unit);
+        widened = true;
+      }
+    }
+    if (!widened) return;
+    const ParameterValues values = problem.box.to_values(problem.full);
+    std::vector<double> ordered;
+    for (const ParameterSpec& spec : box.info().parameters) ordered.push_back(values.at(spec.name));
+    problem.box = box;
+    problem.full = box.to_unit(ordered);
+    best = problem.solve_and_polish(problem.full, options);
+    evaluations += best->evaluations;
+    problem.full = problem.expand(best->x);
+  }
+}
+
 }  // namespace
+
+bool EffectFit::plausible() const {
+  return std::all_of(parameters.begin(), parameters.end(), [](const ParameterEstimate& p) { return p.plausible; });
+}
+
+ParameterBox EffectFit::box() const { return ParameterBox(*info, box_lower, box_upper); }
 
 CouplingModel model_with(const CouplingModel& base, const EffectRegistration& registration,
                          const ParameterValues& values) {
@@ -147,14 +206,16 @@ CouplingModel model_with(const CouplingModel& base, const EffectRegistration& re
 std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
                                     std::span<const RecordedSample> observations,
                                     std::span<const std::size_t> rows, const ParallelFor& parallel,
-                                    const FitSettings& settings) {
-  EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,
-                        {}, {}};
+                                    const FitSettings& settings, const Effect* current) {
+  const double jam = base.geometry().jam_angle().angle_rad;
+  EffectProblem problem{base, registration,
+                        ParameterBox::plausible(*registration.info, jam, current ? current->values() : std::vector<double>{}),
+                        observations, rows, parallel, {}, {}, jam};
   problem.free.assign(static_cast<std::size_t>(problem.box.size()), true);
   problem.full = problem.box.defaults();
   std::vector<std::string> notes(static_cast<std::size_t>(problem.box.size()));
   int evaluations = 0;
-  const std::vector<Eigen::VectorXd> starts = best_starts(problem, settings, evaluations);
+  const std::vector<Eigen::VectorXd> starts = best_starts(problem, settings, current, evaluations);
   if (starts.empty()) return std::nullopt;
   std::optional<LeastSquaresResult> best;
   for (const Eigen::VectorXd& start : starts) {
@@ -167,6 +228,7 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
   best = problem.polish(*best, settings.least_squares);  // the best start only
   evaluations += best->evaluations - before_polish;
   problem.full = problem.expand(best->x);
+  widen_where_on_edge(problem, best, evaluations, settings.least_squares);
   // Hold what the data cannot determine, one parameter at a time, refitting the rest.
   for (int round = 0; round < problem.box.size(); ++round) {
     const auto u = find_unidentifiable(full_jacobian(problem, best->jacobian), problem.free);
@@ -191,8 +253,8 @@ std::optional<EffectFit> refit_effect(const CouplingModel& base, const EffectReg
                                       const EffectFit& start, std::span<const RecordedSample> observations,
                                       std::span<const std::size_t> rows, const ParallelFor& parallel,
                                       int iterations, bool with_uncertainty) {
-  EffectProblem problem{base, registration, ParameterBox(*registration.info), observations, rows, parallel,
-                        start.free, start.unit_values};
+  EffectProblem problem{base, registration, start.box(), observations, rows, parallel,
+                        start.free, start.unit_values, base.geometry().jam_angle().angle_rad};
   std::vector<std::string> notes;
   for (const ParameterEstimate& e : start.parameters) notes.push_back(e.held ? e.note : "");
   LeastSquaresOptions options;

@@ -14,6 +14,7 @@
 
 #include "core/coupling_model.h"
 #include "core/diagnosis/bounded_least_squares.h"
+#include "core/diagnosis/parameter_box.h"
 #include "core/recorded_sample.h"
 #include "core/diagnosis/parallel_for.h"
 #include "core/effects/effect_registry.h"
@@ -28,6 +29,8 @@ struct ParameterEstimate {
   std::optional<double> standard_error;
   bool held = false;            ///< true when the data could not determine it
   std::string note;             ///< why it was held, or that it sits at a bound
+  /// Inside the parameter's plausible range for this coupling (ParameterSpec::plausible).
+  bool plausible = true;
 };
 
 struct EffectFit {
@@ -35,10 +38,15 @@ struct EffectFit {
   std::shared_ptr<const Effect> effect;  ///< with the fitted values
   std::vector<ParameterEstimate> parameters;
   Eigen::VectorXd unit_values;           ///< the fitted values in the unit box
+  std::vector<double> box_lower, box_upper;  ///< the box searched, per parameter [unit]
   std::vector<bool> free;                ///< which were fitted (the others were held)
   double sum_of_squares = 0.0;           ///< over both channels of the rows fitted [N²·m²]
   std::size_t rows = 0;
   int evaluations = 0;                   ///< model evaluations over all rows (cost measure)
+  /// Every fitted parameter inside its plausible range and none on a physical bound.
+  bool plausible() const;
+  /// The box the fit searched, for a refit.
+  ParameterBox box() const;
 };
 
 struct FitSettings {
@@ -51,12 +59,15 @@ struct FitSettings {
 CouplingModel model_with(const CouplingModel& base, const EffectRegistration& registration,
                          const ParameterValues& values);
 
-/// Fits the effect to `rows` from several starts and holds unidentifiable parameters. Returns
-/// nullopt when no start can be evaluated (the effect jams every candidate on these rows).
+/// Fits the effect to `rows` from several starts and holds unidentifiable parameters. The search
+/// box is the plausible range for the base model's coupling (holding `current`'s values, the
+/// effect the model has now when this is a refinement), widened to the physical bounds for a
+/// parameter that ends on its edge. Returns nullopt when no start can be evaluated (the effect
+/// jams every candidate on these rows).
 std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
                                     std::span<const RecordedSample> observations,
                                     std::span<const std::size_t> rows, const ParallelFor& parallel,
-                                    const FitSettings& settings);
+                                    const FitSettings& settings, const Effect* current = nullptr);
 
 /// Refits from `start` (held parameters stay held) with at most `iterations` steps: the cheap
 /// fit of a cross-validation fold, or the final fit on all rows after a search on a subsample.

@@ -2,30 +2,108 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace gc {
 namespace {
 
+constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of the noise we meet
+constexpr int kMedianHalf = 3;  ///< running median over 7 samples
+
 double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
 }
 
+/// Robust half mean square of the lag-h differences: (1.4826 MAD)^2 / 2, centred on zero.
+double robust_semivariance(const Eigen::VectorXd& r, int h) {
+  std::vector<double> d;
+  for (Eigen::Index i = h; i < r.size(); ++i) d.push_back(std::abs(r(i) - r(i - h)));
+  const double scale = 1.4826 * median(std::move(d));
+  return 0.5 * scale * scale;
+}
+
+struct VariogramFit {
+  double sigma2 = 0.0, phi = 0.0, sse = INFINITY;
+};
+
+/// gamma(h) = s2 (1 - phi^h) + b h + c h^2 for fixed phi: linear least squares with b, c >= 0
+/// (the four sign patterns, the best feasible one).
+VariogramFit fit_for_phi(const Eigen::VectorXd& gamma, double phi) {
+  const int n = static_cast<int>(gamma.size());
+  Eigen::MatrixXd design(n, 3);
+  for (int h = 1; h <= n; ++h) design.row(h - 1) << 1.0 - std::pow(phi, h), h, static_cast<double>(h) * h;
+  VariogramFit best;
+  for (int mask = 0; mask < 4; ++mask) {
+    std::vector<int> columns{0};
+    if (mask & 1) columns.push_back(1);
+    if (mask & 2) columns.push_back(2);
+    Eigen::MatrixXd a(n, static_cast<Eigen::Index>(columns.size()));
+    for (std::size_t k = 0; k < columns.size(); ++k) a.col(static_cast<Eigen::Index>(k)) = design.col(columns[k]);
+    const Eigen::VectorXd x = a.colPivHouseholderQr().solve(gamma);
+    if ((x.array() < 0.0).any()) continue;
+    const double sse = (a * x - gamma).squaredNorm();
+    if (sse < best.sse) best = {x(0), phi, sse};
+  }
+  return best;
+}
+
+/// sigma, phi of one channel.
+std::pair<double, double> channel_noise(const Eigen::VectorXd& r) {
+  if (r.size() < 2) return {0.0, 0.0};
+  const int lags = static_cast<int>(std::min<Eigen::Index>(kMaxLag, r.size() / 4));
+  if (lags < 3) return {std::sqrt(robust_semivariance(r, 1)), 0.0};
+  Eigen::VectorXd gamma(lags);
+  for (int h = 1; h <= lags; ++h) gamma(h - 1) = robust_semivariance(r, h);
+  VariogramFit best;
+  for (int k = 0; k <= 95; ++k) {
+    const VariogramFit f = fit_for_phi(gamma, k / 100.0);
+    if (f.sse < best.sse) best = f;
+  }
+  return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi};
+}
+
 }  // namespace
 
-Eigen::Vector2d successive_difference_noise(const Eigen::MatrixX2d& residual) {
-  Eigen::Vector2d sigma = Eigen::Vector2d::Zero();
-  if (residual.rows() < 2) return sigma;
+double NoiseEstimate::variance_inflation() const {
+  const double p = std::clamp(phi.maxCoeff(), 0.0, 0.95);
+  return (1.0 + p) / (1.0 - p);
+}
+
+NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual) {
+  NoiseEstimate out;
   for (int c = 0; c < 2; ++c) {
-    std::vector<double> differences(static_cast<std::size_t>(residual.rows() - 1));
-    for (Eigen::Index i = 1; i < residual.rows(); ++i) {
-      differences[static_cast<std::size_t>(i - 1)] = std::abs(residual(i, c) - residual(i - 1, c));
-    }
-    sigma(c) = 1.4826 * median(std::move(differences)) / std::sqrt(2.0);
+    const auto [sigma, phi] = channel_noise(residual.col(c));
+    out.sigma_nm(c) = sigma;
+    out.phi(c) = phi;
   }
-  return sigma;
+  return out;
+}
+
+std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, double k) {
+  const Eigen::Index n = residual.rows();
+  std::vector<bool> flagged(static_cast<std::size_t>(n), false);
+  if (n < 2 * kMedianHalf + 1) return {};
+  for (int c = 0; c < 2; ++c) {
+    Eigen::VectorXd deviation(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Index from = std::max<Eigen::Index>(0, i - kMedianHalf);
+      const Eigen::Index to = std::min<Eigen::Index>(n, i + kMedianHalf + 1);
+      std::vector<double> window(residual.col(c).data() + from, residual.col(c).data() + to);
+      deviation(i) = residual(i, c) - median(std::move(window));
+    }
+    std::vector<double> magnitudes(deviation.data(), deviation.data() + n);
+    for (double& m : magnitudes) m = std::abs(m);
+    const double scale = 1.4826 * median(magnitudes);
+    if (scale <= 0.0) continue;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (std::abs(deviation(i)) > k * scale) flagged[static_cast<std::size_t>(i)] = true;
+    }
+  }
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < flagged.size(); ++i) if (flagged[i]) out.push_back(i);
+  return out;
 }
 
 double pooled_mean_square(const Eigen::MatrixX2d& residual) {

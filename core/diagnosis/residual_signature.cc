@@ -32,6 +32,13 @@ std::vector<InputAxis> axes() {
       {"time", "s", [](const MeasurementSample& s) { return std::optional(s.time_s); }, B::quantile},
       {"speed", "rpm", [](const MeasurementSample& s) { return s.speed_rpm; }, B::quantile},
       {"temperature", "deg C", [](const MeasurementSample& s) { return s.temperature_c; }, B::quantile},
+      {"rotation_phase", "rad",
+       [](const MeasurementSample& s) -> std::optional<double> {
+         if (!s.rotation_phase_rad) return std::nullopt;
+         const double p = std::fmod(*s.rotation_phase_rad, 2 * std::numbers::pi);
+         return p < 0.0 ? p + 2 * std::numbers::pi : p;
+       },
+       B::angle},
   };
 }
 
@@ -74,7 +81,8 @@ double chi_square_per_dof(int dof, double z) {
   return std::pow(1.0 - a + z * std::sqrt(a), 3.0);
 }
 
-InputSignature signature_for(const InputAxis& axis, const Eigen::VectorXd& x, const Eigen::MatrixX2d& r) {
+InputSignature signature_for(const InputAxis& axis, const Eigen::VectorXd& x, const Eigen::MatrixX2d& r,
+                             double inflation) {
   InputSignature s{axis.name, axis.unit, {}, 0.0, 0.0, false, 0.0, 0.0};
   std::vector<std::pair<double, double>> edges;
   const std::vector<int> bin = assign_bins(x, axis.binning, edges);
@@ -105,7 +113,7 @@ InputSignature signature_for(const InputAxis& axis, const Eigen::VectorXd& x, co
   if (dof >= 1 && within_dof >= 1.0) {
     const Eigen::Vector2d total_per_channel = (r.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
     const Eigen::Array2d within = (total_per_channel - between).array().max(1e-300);
-    s.dispersion = ((between.array() / dof) / (within / within_dof)).maxCoeff();
+    s.dispersion = ((between.array() / dof) / (within / within_dof)).maxCoeff() / std::max(1.0, inflation);
     // z = 3.7: a one-sided 1e-4 level, strict because many inputs and two channels are tested.
     s.systematic = s.dispersion > chi_square_per_dof(dof, 3.7);
   }
@@ -123,7 +131,7 @@ bool ResidualSignature::systematic() const {
 
 ResidualSignature residual_signature(std::span<const RecordedSample> observations,
                                      std::span<const std::size_t> rows,
-                                     const Eigen::MatrixX2d& residual) {
+                                     const Eigen::MatrixX2d& residual, double variance_inflation) {
   ResidualSignature out;
   if (rows.size() < 2) return out;
   for (const InputAxis& axis : axes()) {
@@ -134,7 +142,7 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
       complete = v.has_value();
       if (complete) x(static_cast<Eigen::Index>(k)) = *v;
     }
-    if (complete) out.inputs.push_back(signature_for(axis, x, residual));
+    if (complete) out.inputs.push_back(signature_for(axis, x, residual, variance_inflation));
   }
   std::stable_sort(out.inputs.begin(), out.inputs.end(),
                    [](const InputSignature& a, const InputSignature& b) { return a.explained_share > b.explained_share; });

@@ -39,9 +39,11 @@ struct ResidualSignature {
 };
 
 /// `residual` row k belongs to observations[rows[k]]. Bins: 8 of equal count (continuous inputs), 8 of 45 deg
-/// (direction), one per loading direction.
+/// (direction and rotation phase), one per loading direction. `variance_inflation`: the noise's
+/// (NoiseEstimate::variance_inflation): the samples of a bin are mostly neighbours in time, so a
+/// correlated noise scatters the bin means that much more than a white one, and F is judged against it.
 ResidualSignature residual_signature(std::span<const RecordedSample> observations,
                                      std::span<const std::size_t> rows,
-                                     const Eigen::MatrixX2d& residual);
+                                     const Eigen::MatrixX2d& residual, double variance_inflation = 1.0);
 
 }  // namespace gc

@@ -4,9 +4,12 @@
 #include <sstream>
 
 #include "core/diagnosis/diagnose.h"
+#include "core/effects/expression_terms.h"
 
 namespace gc {
 namespace {
+
+bool plausible_fit(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
 
 std::string percent(double share) { return std::to_string(static_cast<int>(std::lround(100.0 * share))) + " %"; }
 
@@ -20,7 +23,28 @@ std::string channels(const Eigen::Vector2d& reduction) {
 
 std::string noise_text(const DiagnosisRound& round) {
   return "RMSE " + short_number(round.rmse_nm) + " N·m against a noise estimate of " +
-         short_number(round.noise_rmse_nm) + " N·m from successive differences";
+         short_number(round.noise_rmse_nm) + " N·m (lag-1 autocorrelation " + short_number(round.noise.phi.maxCoeff()) + ")";
+}
+
+/// "c1 [formula1] + c2 [formula2]" with units and standard errors, then the mechanisms.
+std::string formula_text(const EffectFit& fit) {
+  std::string text, mechanisms;
+  for (const ParameterEstimate& p : fit.parameters) {
+    const ExpressionTerm* term = find_expression_term(p.name);
+    text += (text.empty() ? "" : " + ") + short_number(p.value);
+    if (p.standard_error) text += " (+/- " + short_number(*p.standard_error) + ")";
+    text += " " + p.unit + " x " + (term ? term->formula : p.name) + " [" + p.name + "]";
+    if (term) mechanisms += (mechanisms.empty() ? "" : " | ") + p.name + ": " + term->mechanisms;
+  }
+  return "(M_sy', M_sz') += " + text + ". Such terms usually mean: " + mechanisms;
+}
+
+std::string dropped_text(const DiagnosisRound& round) {
+  std::string text;
+  for (const std::string& name : round.dropped) {
+    text += " With it in place, the earlier claim " + name + " no longer lowers the held-out error and is dropped.";
+  }
+  return text;
 }
 
 std::string signature_text(const ResidualSignature& signature) {
@@ -77,17 +101,42 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
              ", and no input shows a systematic dependence. No effect is claimed.";
     case RoundOutcome::unexplained: {
       std::string best;
-      if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
+ if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
         best = " (the best, " + round.ranking.front().info->name + ", lowers the held-out RMSE by only " +
                percent(round.ranking.front().reduction) + ", t = " + short_number(round.ranking.front().against_base.t) + ")";
       }
-      return head + "the residual is systematic (" + noise_text(round) + ") but no effect of the library explains it" +
+ return head + "the residual is systematic (" + noise_text(round) + ") but neither an effect of the library nor a formula of physical terms explains it" +
              best + ". Its signature: " + signature_text(round.signature) + ".";
     }
     case RoundOutcome::effect_found: {
       const CandidateScore& c = round.ranking.front();
+      if (c.kind == CandidateKind::refinement) {
+        return head + "refine " + c.info->name + ": the model has it, and with its parameters freed it explains the residual in " +
+               channels(round.channel_reduction) + " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) +
+               "; " + gain_text(round, c) + "." + dropped_text(round);
+      }
       return head + "the residual in " + channels(round.channel_reduction) + " is explained by " + c.info->name +
-             " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " + gain_text(round, c) + ".";
+             " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " + gain_text(round, c) + "." +
+             dropped_text(round);
+    }
+    case RoundOutcome::partly_explained: {
+      const CandidateScore& c = round.ranking.front();
+      return head + (c.kind == CandidateKind::refinement ? "refining " : "") + c.info->name + " partly explains the residual in " +
+             channels(round.channel_reduction) + ", but not as that physics: " + fitted_parameters_text(*round.claimed) + "; " +
+             gain_text(round, c) + ". A value outside its plausible range means another mechanism with a similar signature; "
+             "no formula did better. The search continues with it." + dropped_text(round);
+    }
+    case RoundOutcome::formula_proposed: {
+      const CandidateScore& c = *round.formula;
+      std::string effect;
+      if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
+        const CandidateScore& e = round.ranking.front();
+        effect = " (the best effect, " + std::string(e.kind == CandidateKind::refinement ? "refining " : "") + e.info->name +
+                 ", lowers it " + percent(e.reduction) + (plausible_fit(e) ? "" : " with implausible values") + ")";
+      }
+      return head + "no effect of the library explains the residual in " + channels(round.channel_reduction) + effect +
+             "; a formula does: " + formula_text(*round.claimed) + ". " + gain_text(round, c) +
+             ". The search continues with it (an expression effect in the model file)." + dropped_text(round);
     }
     case RoundOutcome::indistinguishable: {
       const CandidateScore& c = round.ranking.front();

@@ -13,8 +13,8 @@ const EffectInfo kInfo{
     "A misalignment the sensors do not see (assembly tolerances, structural deflection), "
     "added to the measured misalignment vector.",
     "Section 6.3.1",
-    {{"zeta0_rad", "rad", "amplitude of the initial misalignment", 0.0, 0.005, 0.0, 0.0},
-     {"beta0_rad", "rad", "its direction, as beta", -M_PI, M_PI, 0.0, 0.0}}};
+    {{"zeta0_rad", "rad", "amplitude of the initial misalignment", 0.0, 0.05, 0.0, 0.0, {0.0, 0.3, RangeScale::jam_angle}},
+     {"beta0_rad", "rad", "its direction, as beta", -M_PI, M_PI, 0.0, 0.0, {}}}};
 
 class AssemblyMisalignment final : public Effect {
  public:

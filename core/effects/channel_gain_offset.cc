@@ -11,10 +11,10 @@ const EffectInfo kInfo{
     "Calibration errors of the strain-gauge bending channels: a relative gain error and an "
     "offset on each of M_sy' and M_sz'.",
     "Section 3 (instrumentation and calibration)",
-    {{"gain_y", "-", "relative gain error of M_sy'", -0.3, 0.3, 0.0, 0.0},
-     {"gain_z", "-", "relative gain error of M_sz'", -0.3, 0.3, 0.0, 0.0},
-     {"offset_y_nm", "N·m", "offset of M_sy'", -5e5, 5e5, 0.0, 0.0},
-     {"offset_z_nm", "N·m", "offset of M_sz'", -5e5, 5e5, 0.0, 0.0}}};
+    {{"gain_y", "-", "relative gain error of M_sy'", -0.5, 0.5, 0.0, 0.0, {-0.1, 0.1}},
+     {"gain_z", "-", "relative gain error of M_sz'", -0.5, 0.5, 0.0, 0.0, {-0.1, 0.1}},
+     {"offset_y_nm", "N·m", "offset of M_sy'", -2e6, 2e6, 0.0, 0.0, {-2e5, 2e5}},
+     {"offset_z_nm", "N·m", "offset of M_sz'", -2e6, 2e6, 0.0, 0.0, {-2e5, 2e5}}}};
 
 class ChannelGainOffset final : public Effect {
  public:

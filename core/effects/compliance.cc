@@ -13,7 +13,7 @@ const EffectInfo kInfo{
     "more teeth (eqs 20-22 with a smaller C).",
     "Section 4 (rigid-shaft assumption), 6.1 (FE/CM against analytic)",
     {{"stiffness_factor", "-", "k, the mesh stiffness as a share of eq 5's C", 0.1, 1.0, 1.0,
-      0.7}}};
+      0.7, {0.6, 1.0}}}};
 
 class Compliance final : public Effect {
  public:

@@ -14,12 +14,12 @@ const EffectInfo kInfo{
     "Below the restoring torque the hub rests eccentric on the sleeve under its self-weight; "
     "the resulting misalignment fades linearly as the torque lifts and centres the hub.",
     "Sections 4.4 (eqs 49-53), 6.4 (Figures 14-15, Table 4)",
-    {{"eccentric_misalignment_rad", "rad", "zeta_e, the misalignment at zero torque", 0.0, 0.003,
-      0.0, 0.00105},
+    {{"eccentric_misalignment_rad", "rad", "zeta_e, the misalignment at zero torque", 0.0, 0.01,
+      0.0, 0.00105, {0.0, 0.3, RangeScale::jam_angle}},
      {"threshold_scale", "-", "s, the torque that centres the hub as a multiple of eqs 49-53's T_m",
-      0.2, 3.0, 1.0, 1.0},
+      0.2, 3.0, 1.0, 1.0, {0.5, 2.0}},
      {"gravity_direction_rad", "rad", "direction of the sag, as beta", -M_PI, M_PI, M_PI / 2,
-      M_PI / 2}}};
+      M_PI / 2, {}}}};
 
 class Eccentricity final : public Effect {
  public:

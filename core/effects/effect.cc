@@ -1,5 +1,6 @@
 #include "core/effects/effect.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/model_error.h"
@@ -37,6 +38,13 @@ bool Effect::neutral() const {
     if (values_[i] != info_.parameters[i].neutral) return false;
   }
   return true;
+}
+
+std::pair<double, double> plausible_range(const ParameterSpec& spec, double jam_angle_rad) {
+  const double scale = spec.plausible.scale == RangeScale::jam_angle ? jam_angle_rad : 1.0;
+  const double lower = std::isfinite(spec.plausible.lower) ? spec.plausible.lower * scale : spec.lower;
+  const double upper = std::isfinite(spec.plausible.upper) ? spec.plausible.upper * scale : spec.upper;
+  return {std::clamp(lower, spec.lower, spec.upper), std::clamp(upper, spec.lower, spec.upper)};
 }
 
 void add_misalignment(double zeta_rad, double beta_rad, OperatingPoint& point) {

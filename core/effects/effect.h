@@ -4,6 +4,7 @@
 // so a model with effects stays reentrant.
 #pragma once
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -18,6 +19,21 @@ namespace gc {
 
 class CouplingGeometry;
 
+/// The coupling quantity a plausible range is given in.
+enum class RangeScale {
+  absolute,   ///< the parameter's own unit
+  jam_angle,  ///< fractions of the coupling's jam angle xi (eq 35)
+};
+
+/// Where a fitted value may end and still be called this physics (docs/effects.md gives the
+/// source of each). The diagnosis searches in it first, widens toward the bounds when a fit
+/// sits on its edge, and calls an effect fitted outside it "partly explains".
+struct PlausibleRange {
+  double lower = -INFINITY;  ///< [unit, or fraction of the scale]
+  double upper = INFINITY;
+  RangeScale scale = RangeScale::absolute;
+};
+
 struct ParameterSpec {
   std::string name;           ///< e.g. "mu0"
   std::string unit;           ///< SI unit, "-" for none
@@ -26,7 +42,12 @@ struct ParameterSpec {
   double upper = 0.0;
   double neutral = 0.0;       ///< the value at which the effect does nothing
   double default_value = 0.0; ///< the value used when a configuration omits it
+  PlausibleRange plausible;   ///< unbounded: every value within the bounds is plausible
 };
+
+/// The plausible range in the parameter's unit for a coupling of jam angle `jam_angle_rad`,
+/// within the bounds.
+std::pair<double, double> plausible_range(const ParameterSpec& spec, double jam_angle_rad);
 
 struct EffectInfo {
   std::string name;     ///< registry name, snake_case

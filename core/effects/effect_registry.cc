@@ -1,5 +1,6 @@
 #include "core/effects/effect_registry.h"
 
+#include "core/effects/expression.h"
 #include "core/model_error.h"
 
 namespace gc {
@@ -20,6 +21,8 @@ const std::vector<EffectRegistration>& effect_registry() {
       friction_effect(),      self_weight_effect(),   pressure_angle_rotation_effect(),
       assembly_misalignment_effect(), eccentricity_effect(), compliance_effect(),
       spacing_errors_effect(), channel_gain_offset_effect(), hysteresis_effect(),
+      // The formula of docs/diagnosis.md: its parameters are the terms it is given.
+      {&expression_info({}), [](const ParameterValues& values) { return make_expression(values); }},
   };
   return registry;
 }

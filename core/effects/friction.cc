@@ -15,11 +15,11 @@ const EffectInfo kInfo{
     "at low torque and at large misalignment, as the paper's measured friction does.",
     "Sections 3 (eqs 1-4), 4.3 (eq 37), 6.3",
     {{"mu0", "-", "friction coefficient at the reference torque and no misalignment", 0.0, 0.5,
-      0.0, 0.1},
-     {"mu_low_torque", "-", "rise of mu with T_ref / T", 0.0, 0.3, 0.0, 0.0},
-     {"reference_torque_nm", "N·m", "T_ref", 1e4, 1e8, 1.5e6, 1.5e6},
+      0.0, 0.1, {0.02, 0.3}},
+     {"mu_low_torque", "-", "rise of mu with T_ref / T", 0.0, 0.5, 0.0, 0.0, {0.0, 0.15}},
+     {"reference_torque_nm", "N·m", "T_ref", 1e4, 1e8, 1.5e6, 1.5e6, {}},
      {"mu_misalignment", "-", "rise of mu from no misalignment to the jam angle", 0.0, 0.5, 0.0,
-      0.0}}};
+      0.0, {0.0, 0.3}}}};
 
 class Friction final : public Effect {
  public:

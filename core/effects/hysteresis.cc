@@ -14,8 +14,8 @@ const EffectInfo kInfo{
     "Friction and compliance in the load-application device make the coupling lag the "
     "measured misalignment: lower while the misalignment rises, higher while it falls.",
     "Section 6.3",
-    {{"lag_rad", "rad", "lag of the coupling behind the measured misalignment", 0.0, 0.002, 0.0,
-      1e-4}}};
+    {{"lag_rad", "rad", "lag of the coupling behind the measured misalignment", 0.0, 0.01, 0.0,
+      1e-4, {0.0, 0.1, RangeScale::jam_angle}}}};
 
 class Hysteresis final : public Effect {
  public:

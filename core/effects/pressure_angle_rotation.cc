@@ -12,7 +12,7 @@ const EffectInfo kInfo{
     "but phi from it; the induced moments turn with it (Figure 3b).",
     "Section 4.1 (after eq 19), eqs 44-47",
     {{"shift_scale", "-", "s, the share of the pressure angle phi the moment direction turns by",
-      0.0, 2.0, 0.0, 1.0}}};
+      0.0, 2.0, 0.0, 1.0, {0.0, 1.5}}}};
 
 class PressureAngleRotation final : public Effect {
  public:

@@ -11,7 +11,7 @@ const EffectInfo kInfo{
     "gauges: a constant moment about y' at the sensors.",
     "Section 4.3, eq 48",
     {{"weight_scale", "-", "s, the share of the coupling's weights (W_c, w_sh, L_s, gamma) that acts",
-      0.0, 5.0, 0.0, 1.0}}};
+      0.0, 5.0, 0.0, 1.0, {0.5, 2.0}}}};
 
 class SelfWeight final : public Effect {
  public:

@@ -12,7 +12,7 @@ const EffectInfo kInfo{
     "Unequal tooth spacing leaves some teeth out of contact: the load concentrates on fewer "
     "teeth, as a larger separation z_o would.",
     "Sections 1, 4 (equal-spacing assumption), 6.4",
-    {{"spacing_error_m", "m", "e, added to eq 11's z_o", 0.0, 1e-4, 0.0, 1e-5}}};
+    {{"spacing_error_m", "m", "e, added to eq 11's z_o", 0.0, 1e-4, 0.0, 1e-5, {0.0, 5e-5}}}};
 
 class SpacingErrors final : public Effect {
  public:

@@ -10,6 +10,7 @@
 #include "core/coupling_geometry.h"
 #include "core/coupling_model.h"
 #include "core/effects/effect_registry.h"
+#include "core/effects/expression.h"
 #include "core/induced_moments.h"
 #include "core/restoring_torque.h"
 #include "tests/core/nrel_couplings.h"
@@ -59,7 +60,13 @@ TEST(Reentrancy, EightThreadsMatchSingleThreadedResultsBitForBit) {
 
 TEST(Reentrancy, ModelWithEveryEffectOnMatchesSerialResultsBitForBit) {
   std::vector<std::shared_ptr<const Effect>> effects;
-  for (const EffectRegistration& r : effect_registry()) effects.push_back(r.make({}));  // defaults
+  for (const EffectRegistration& r : effect_registry()) {
+    // Defaults; the formula needs its terms: one of each kind of input it reads.
+    effects.push_back(r.info->name != kExpressionEffect
+                          ? r.make({})
+                          : make_expression({{"travel_sign_along_moment", 3e3}, {"torque_misalignment_along_misalignment", 0.02},
+                                             {"model_z_on_y", 0.01}}));
+  }
   const CouplingModel model(testing::nrel_downwind(), effects);
   const auto predict = [&model](int i) {
     MeasurementSample s;

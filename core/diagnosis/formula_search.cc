@@ -1,0 +1,214 @@
+#include "core/diagnosis/formula_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/diagnosis/noise_estimate.h"
+#include "core/effects/expression.h"
+#include "core/effects/expression_terms.h"
+#include "core/model_error.h"
+
+namespace gc {
+namespace {
+
+/// Rows of the stacked design for the positions `at` (y rows, then z rows).
+Eigen::MatrixXd stacked_rows(const Eigen::MatrixXd& m, const std::vector<std::size_t>& at, Eigen::Index n) {
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(2 * at.size()), m.cols());
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    out.row(static_cast<Eigen::Index>(k)) = m.row(static_cast<Eigen::Index>(at[k]));
+    out.row(static_cast<Eigen::Index>(at.size() + k)) = m.row(n + static_cast<Eigen::Index>(at[k]));
+  }
+  return out;
+}
+
+Eigen::VectorXd stacked(const Eigen::MatrixX2d& residual) {
+  Eigen::VectorXd v(2 * residual.rows());
+  v << residual.col(0), residual.col(1);
+  return v;
+}
+
+/// Least squares on the columns in `keep` (others zero), lightly damped so that columns that
+/// coincide on this recording (four directions make constants along beta and on y/z alike) share
+/// rather than cancel.
+Eigen::VectorXd solve_on(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const std::vector<bool>& keep) {
+  std::vector<Eigen::Index> columns;
+  for (std::size_t j = 0; j < keep.size(); ++j) if (keep[j]) columns.push_back(static_cast<Eigen::Index>(j));
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(x.cols());
+  if (columns.empty()) return c;
+  Eigen::MatrixXd a(x.rows(), static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t k = 0; k < columns.size(); ++k) a.col(static_cast<Eigen::Index>(k)) = x.col(columns[k]);
+  Eigen::MatrixXd normal = a.transpose() * a;
+  normal.diagonal().array() += 1e-9 * static_cast<double>(x.rows());
+  const Eigen::VectorXd s = normal.ldlt().solve(a.transpose() * y);
+  for (std::size_t k = 0; k < columns.size(); ++k) c(columns[k]) = s(static_cast<Eigen::Index>(k));
+  return c;
+}
+
+/// Sequentially thresholded least squares: drop |c| < threshold, refit the rest, until stable.
+std::vector<bool> stlsq_support(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, double threshold) {
+  std::vector<bool> keep(static_cast<std::size_t>(x.cols()), true);
+  for (int pass = 0; pass < 10; ++pass) {
+    const Eigen::VectorXd c = solve_on(x, y, keep);
+    bool changed = false;
+    for (std::size_t j = 0; j < keep.size(); ++j) {
+      if (keep[j] && std::abs(c(static_cast<Eigen::Index>(j))) < threshold) { keep[j] = false; changed = true; }
+    }
+    if (!changed) break;
+  }
+  return keep;
+}
+
+int count(const std::vector<bool>& keep) { return static_cast<int>(std::count(keep.begin(), keep.end(), true)); }
+
+/// Per search row, the held-out residual of the formula chosen by `choose` on each fold's
+/// training rows.
+template <typename Choose>
+Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& residual, const Folds& folds, Choose choose) {
+  const Eigen::Index n = residual.rows();
+  const Eigen::VectorXd y = stacked(residual);
+  Eigen::MatrixX2d out = residual;
+  for (std::size_t f = 0; f < folds.training.size(); ++f) {
+    const Eigen::MatrixXd xt = stacked_rows(x, folds.training[f], n);
+    const Eigen::MatrixXd yt = stacked_rows(y, folds.training[f], n);
+    const Eigen::VectorXd c = solve_on(xt, yt.col(0), choose(xt, yt.col(0)));
+    const Eigen::MatrixXd xh = stacked_rows(x, folds.held_out[f], n);
+    const Eigen::VectorXd prediction = xh * c;
+    const std::size_t m = folds.held_out[f].size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const Eigen::Index row = static_cast<Eigen::Index>(folds.held_out[f][k]);
+      out(row, 0) -= prediction(static_cast<Eigen::Index>(k));
+      out(row, 1) -= prediction(static_cast<Eigen::Index>(m + k));
+    }
+  }
+  return out;
+}
+
+/// Mean and standard error of the held-out mean square over the blocks.
+std::pair<double, double> block_mean_square(const Eigen::MatrixX2d& r, const Folds& folds) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(folds.blocks), n = Eigen::VectorXd::Zero(folds.blocks);
+  for (Eigen::Index i = 0; i < r.rows(); ++i) {
+    sum(folds.block_of[static_cast<std::size_t>(i)]) += 0.5 * r.row(i).squaredNorm();
+    n(folds.block_of[static_cast<std::size_t>(i)]) += 1.0;
+  }
+  std::vector<double> means;
+  for (int b = 0; b < folds.blocks; ++b) if (n(b) > 0) means.push_back(sum(b) / n(b));
+  const Eigen::Map<const Eigen::VectorXd> m(means.data(), static_cast<Eigen::Index>(means.size()));
+  const double mean = m.mean();
+  const double sd = m.size() > 1 ? std::sqrt((m.array() - mean).square().sum() / (m.size() - 1.0)) : 0.0;
+  return {mean, sd / std::sqrt(std::max<double>(1.0, static_cast<double>(m.size())))};
+}
+
+}  // namespace
+
+TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                       const Eigen::MatrixX2d& residual) {
+  TermDesign design;
+  const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
+  std::vector<Eigen::VectorXd> columns;
+  for (const ExpressionTerm& term : expression_terms()) {
+    Eigen::VectorXd column(2 * n);
+    bool complete = true;
+    for (Eigen::Index k = 0; k < n && complete; ++k) {
+      const RecordedSample& o = observations[rows[static_cast<std::size_t>(k)]];
+      const SensorMoments model{o.measured.y_nm - residual(k, 0), o.measured.z_nm - residual(k, 1)};
+      const std::optional<Eigen::Vector2d> v = term.value(o.input, model);
+      complete = v.has_value();
+      if (complete) { column(k) = v->x(); column(n + k) = v->y(); }
+    }
+    if (!complete || column.norm() == 0.0) continue;
+    design.terms.push_back(term.name);
+    columns.push_back(std::move(column));
+  }
+  design.columns.resize(2 * n, static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t j = 0; j < columns.size(); ++j) design.columns.col(static_cast<Eigen::Index>(j)) = columns[j];
+  return design;
+}
+
+std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                     const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
+                                     double variance_inflation) {
+  const TermDesign all = term_design(observations, rows, residual);
+  const EffectInfo& info = expression_info(terms);
+  Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(info.parameters.size()));
+  for (std::size_t j = 0; j < info.parameters.size(); ++j) {
+    const auto at = std::find(all.terms.begin(), all.terms.end(), info.parameters[j].name);
+    if (at == all.terms.end()) return std::nullopt;  // not available on these rows
+    x.col(static_cast<Eigen::Index>(j)) = all.columns.col(at - all.terms.begin());
+  }
+  const Eigen::VectorXd y = stacked(residual);
+  const auto qr = x.colPivHouseholderQr();
+  const Eigen::VectorXd c = qr.solve(y);
+  const Eigen::VectorXd r = y - x * c;
+  const double dof = std::max(1.0, static_cast<double>(x.rows() - x.cols()));
+  const Eigen::MatrixXd covariance = (r.squaredNorm() / dof) * variance_inflation *
+                                     (x.transpose() * x).completeOrthogonalDecomposition().pseudoInverse();
+  EffectFit fit;
+  fit.info = &info;
+  ParameterValues values;
+  fit.unit_values.resize(x.cols());
+  for (std::size_t j = 0; j < info.parameters.size(); ++j) {
+    const ParameterSpec& spec = info.parameters[j];
+    const double v = c(static_cast<Eigen::Index>(j));
+    if (!std::isfinite(v) || std::abs(v) > spec.upper) return std::nullopt;
+    values[spec.name] = v;
+    fit.parameters.push_back({spec.name, spec.unit, v, std::sqrt(std::max(0.0, covariance(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)))),
+                              false, "", true});
+    fit.unit_values(static_cast<Eigen::Index>(j)) = (v - spec.lower) / (spec.upper - spec.lower);
+    fit.box_lower.push_back(spec.lower);
+    fit.box_upper.push_back(spec.upper);
+  }
+  fit.effect = make_expression(values);
+  fit.free.assign(info.parameters.size(), true);
+  fit.sum_of_squares = r.squaredNorm();
+  fit.rows = rows.size();
+  return fit;
+}
+
+std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
+                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                                const Folds& folds, const FormulaSettings& settings) {
+  const TermDesign design = term_design(observations, rows, residual);
+  if (design.terms.empty()) return std::nullopt;
+  // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
+  const Eigen::VectorXd scale =
+      (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();
+  const Eigen::MatrixXd z = design.columns * scale.cwiseInverse().asDiagonal();
+  const Eigen::VectorXd y = stacked(residual);
+  const double largest = solve_on(z, y, std::vector<bool>(static_cast<std::size_t>(z.cols()), true)).cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) return std::nullopt;
+  // The threshold path, sparsest first; each scored on held-out blocks.
+  std::vector<double> thresholds;
+  for (int k = 0; k < settings.thresholds; ++k) thresholds.push_back(largest * std::pow(1e-3, k / (settings.thresholds - 1.0)));
+  std::vector<std::pair<double, double>> scores;
+  for (double threshold : thresholds) {
+    const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
+      return stlsq_support(xt, yt, threshold);
+    });
+    scores.push_back(block_mean_square(r, folds));
+  }
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < scores.size(); ++k) if (scores[k].first < scores[best].first) best = k;
+  std::size_t chosen = best;  // one-standard-error rule: the sparsest within 1 SE of the best
+  for (std::size_t k = 0; k < best; ++k) {
+    if (scores[k].first <= scores[best].first + scores[best].second) { chosen = k; break; }
+  }
+  std::vector<bool> support = stlsq_support(z, y, thresholds[chosen]);
+  while (count(support) > settings.max_terms && chosen > 0) support = stlsq_support(z, y, thresholds[--chosen]);
+  if (count(support) == 0 || count(support) > settings.max_terms) return std::nullopt;
+
+  std::vector<std::string> terms;
+  for (std::size_t j = 0; j < support.size(); ++j) if (support[j]) terms.push_back(design.terms[j]);
+  CandidateScore score;
+  score.kind = CandidateKind::formula;
+  score.fit = fit_formula(observations, rows, residual, terms, settings.variance_inflation);
+  if (!score.fit) return std::nullopt;
+  score.info = score.fit->info;
+  score.held_out_residual = held_out(z, residual, folds, [&](const Eigen::MatrixXd&, const Eigen::VectorXd&) { return support; });
+  score.held_out_rmse_nm = std::sqrt(pooled_mean_square(score.held_out_residual));
+  const double base_rmse = std::sqrt(pooled_mean_square(residual));
+  score.reduction = base_rmse > 0.0 ? 1.0 - score.held_out_rmse_nm / base_rmse : 0.0;
+  score.against_base = paired_block_test(residual, score.held_out_residual, folds.block_of, folds.blocks);
+  return score;
+}
+
+}  // namespace gc

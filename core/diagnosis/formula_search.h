@@ -1,0 +1,51 @@
+// The discrepancy stage: when no effect of the library explains the residual, a formula may
+// (Kennedy and O'Hagan's model discrepancy, in a parametric form). The residual is regressed on the
+// catalogue of physical terms (core/effects/expression_terms.h) by sequentially thresholded least
+// squares (the SINDy family) on normalised columns; the threshold is chosen by the blocked
+// cross-validation of the diagnosis with the one-standard-error rule (the sparsest formula within
+// one standard error of the best). The chosen terms are then scored like any candidate: refitted
+// on each fold's training rows, their held-out residual tested against the base model's.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/diagnosis/candidate_score.h"
+#include "core/recorded_sample.h"
+
+namespace gc {
+
+struct FormulaSettings {
+  int max_terms = 6;          ///< a formula a reader can take in
+  int thresholds = 24;        ///< on a geometric grid down to 1e-3 of the largest coefficient
+  /// Variance inflation of the noise's autocorrelation (NoiseEstimate::variance_inflation) for the
+  /// coefficients' standard errors.
+  double variance_inflation = 1.0;
+};
+
+/// The terms every listed row can evaluate, as columns: rows k (M_sy') and n + k (M_sz') for
+/// observations[rows[k]], with the model's moments taken as measured minus `residual`.
+struct TermDesign {
+  std::vector<std::string> terms;
+  Eigen::MatrixXd columns;  ///< 2n x terms [N·m per coefficient unit]
+};
+TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                       const Eigen::MatrixX2d& residual);
+
+/// The formula candidate for `residual` on `rows` (the search rows, in time order, as `folds` cut
+/// them); nullopt when the sparse regression keeps no term.
+std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
+                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                                const Folds& folds, const FormulaSettings& settings);
+
+/// The formula over `terms` fitted by least squares on `rows` (e.g. the refit rows), with standard
+/// errors; nullopt when a coefficient leaves its bound.
+std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                     const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
+                                     double variance_inflation);
+
+}  // namespace gc

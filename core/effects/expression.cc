@@ -1,0 +1,93 @@
+#include "core/effects/expression.h"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "core/effects/expression_terms.h"
+#include "core/model_error.h"
+
+namespace gc {
+namespace {
+
+EffectInfo make_info(const std::vector<std::string>& terms) {
+  EffectInfo info{kExpressionEffect,
+                  "A formula for what the library's effects do not explain: a sum of terms built from the "
+                  "model's inputs and outputs (docs/diagnosis.md), found by diagnose or written by hand.",
+                  "none: a discrepancy term (Kennedy and O'Hagan's model discrepancy)",
+                  {}};
+  for (const std::string& name : terms) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (!term) {
+      std::string known;
+      for (const ExpressionTerm& t : expression_terms()) known += (known.empty() ? "" : ", ") + t.name;
+      throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + name, "unknown term; the terms are: " + known);
+    }
+    info.parameters.push_back({term->name, term->coefficient_unit, term->formula, -term->bound, term->bound, 0.0, 0.0, {}});
+  }
+  return info;
+}
+
+/// Catalogue order, so that {a, b} and {b, a} are one expression.
+std::vector<std::string> in_catalogue_order(const std::vector<std::string>& terms) {
+  std::vector<std::string> ordered;
+  for (const ExpressionTerm& t : expression_terms()) {
+    for (const std::string& name : terms) if (name == t.name) { ordered.push_back(name); break; }
+  }
+  for (const std::string& name : terms) if (!find_expression_term(name)) ordered.push_back(name);  // make_info names it
+  return ordered;
+}
+
+class Expression final : public Effect {
+ public:
+  Expression(const EffectInfo& info, const ParameterValues& values) : Effect(info, values) {
+    for (const ParameterSpec& p : info.parameters) terms_.push_back(find_expression_term(p.name));
+  }
+
+  void adjust_outputs(const MeasurementSample& sample, const ModelContext&, const ModelState&,
+                      SensorMoments& moments) const override {
+    const SensorMoments model = moments;  // every term sees the model before the formula
+    for (std::size_t k = 0; k < terms_.size(); ++k) {
+      const std::optional<Eigen::Vector2d> v = terms_[k]->value(sample, model);
+      if (!v) {
+        throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + terms_[k]->name,
+                           "needs an input this sample lacks (" + terms_[k]->formula + ")");
+      }
+      moments.y_nm += values()[k] * v->x();
+      moments.z_nm += values()[k] * v->y();
+    }
+  }
+
+ private:
+  std::vector<const ExpressionTerm*> terms_;
+};
+
+}  // namespace
+
+const EffectInfo& expression_info(const std::vector<std::string>& terms) {
+  static std::mutex mutex;
+  static std::map<std::vector<std::string>, std::unique_ptr<const EffectInfo>> interned;
+  const std::vector<std::string> key = in_catalogue_order(terms);
+  std::lock_guard lock(mutex);
+  auto& slot = interned[key];
+  if (!slot) slot = std::make_unique<const EffectInfo>(make_info(key));
+  return *slot;
+}
+
+std::shared_ptr<const Effect> make_expression(const ParameterValues& coefficients) {
+  if (coefficients.empty()) {
+    throw InvalidInput(std::string("effects.") + kExpressionEffect, "give at least one term and its coefficient");
+  }
+  std::vector<std::string> terms;
+  for (const auto& [name, value] : coefficients) {
+    require_finite(std::string("effects.") + kExpressionEffect + "." + name, value);
+    terms.push_back(name);
+  }
+  return std::make_shared<const Expression>(expression_info(terms), coefficients);
+}
+
+EffectRegistration expression_registration(const std::vector<std::string>& terms) {
+  return {&expression_info(terms), [](const ParameterValues& values) { return make_expression(values); }};
+}
+
+}  // namespace gc

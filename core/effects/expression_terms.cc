@@ -1,0 +1,158 @@
+#include "core/effects/expression_terms.h"
+
+#include <cmath>
+
+namespace gc {
+namespace {
+
+/// The scalar factor of a term: what it is, its unit, its coefficient's bound when it multiplies a
+/// unit direction, and the mechanisms it usually stands for.
+struct Scalar {
+  const char* name;
+  const char* formula;
+  const char* unit;   ///< of the scalar
+  double bound;       ///< |coefficient| [N·m per unit]
+  const char* mechanisms;
+  std::optional<double> (*read)(const MeasurementSample&);
+};
+
+const Scalar kScalars[] = {
+    {"constant", "1", "", 1e7,
+     "a constant moment: a bridge zero offset, the weight of a part the model leaves out, or (along the "
+     "model's moment) a friction moment that does not grow with torque, i.e. friction rising at low torque "
+     "(eq 37's mu T with mu ~ 1/T)",
+     [](const MeasurementSample&) { return std::optional(1.0); }},
+    {"torque", "T", "N·m", 1.0,
+     "a moment in proportion to torque: torque cross-talk into the bending bridge, or a torque-dependent "
+     "offset of the shaft",
+     [](const MeasurementSample& s) { return std::optional(s.torque_nm); }},
+    {"misalignment", "zeta", "rad", 1e9,
+     "a moment in proportion to misalignment: a misalignment the sensors mis-scale (scale error of the "
+     "displacement sensors), or a coupling stiffer or softer in bending than modelled (compliance)",
+     [](const MeasurementSample& s) { return std::optional(s.misalignment_rad); }},
+    {"misalignment_squared", "zeta^2", "rad^2", 1e11,
+     "a moment growing with the square of misalignment: a contact zone or crowning that differs from the "
+     "model's, or a misalignment the coupling sees more of than measured",
+     [](const MeasurementSample& s) { return std::optional(s.misalignment_rad * s.misalignment_rad); }},
+    {"torque_misalignment", "T zeta", "N·m·rad", 1e3,
+     "a moment in proportion to torque times misalignment, the scale of the induced moment itself: a "
+     "friction coefficient or mesh stiffness different from the model's, or a misalignment scale error",
+     [](const MeasurementSample& s) { return std::optional(s.torque_nm * s.misalignment_rad); }},
+    {"travel_sign", "sign(dzeta/dt)", "", 1e7,
+     "a moment whose sign follows the direction of travel of the misalignment: Coulomb friction in the "
+     "loading mechanism or the spline, or hysteresis (a lag of the coupling behind the measured "
+     "misalignment)",
+     [](const MeasurementSample& s) { return std::optional<double>(s.loading_direction); }},
+    {"time", "t", "s", 1e4,
+     "a moment that changes with time alone: zero drift of the strain-gauge bridge (its temperature), or "
+     "a slow change of the rig during the test",
+     [](const MeasurementSample& s) { return std::optional(s.time_s); }},
+    {"speed", "n", "rpm", 1e6,
+     "a moment in proportion to shaft speed: viscous drag (oil shear in the spline, windage), or bearing "
+     "drag",
+     [](const MeasurementSample& s) { return s.speed_rpm; }},
+    {"temperature", "theta", "deg C", 1e6,
+     "a moment that changes with oil temperature: viscosity changing friction, or thermal drift of the "
+     "bridge",
+     [](const MeasurementSample& s) { return s.temperature_c; }},
+};
+
+/// The direction factor of a term.
+struct Frame {
+  const char* name;
+  const char* formula;
+  const char* mechanisms;
+};
+
+const Frame kFrames[] = {
+    {"on_y", "(1, 0)", "on M_sy' alone, so more likely a sensor (bridge, calibration) than the coupling"},
+    {"on_z", "(0, 1)", "on M_sz' alone, so more likely a sensor (bridge, calibration) than the coupling"},
+    {"along_moment", "M/|M| (the model's moment direction)", "along the model's moment, so in the coupling's own mechanics"},
+    {"normal_to_moment", "the model's moment direction turned by +90 deg",
+     "normal to the model's moment: the moment turned, as by a pressure-angle shift (eqs 44-45) or a sensor frame "
+     "rotated against the model's"},
+    {"along_misalignment", "(cos beta, sin beta)", "along the misalignment direction, in the coupling's frame"},
+    {"normal_to_misalignment", "(-sin beta, cos beta)", "normal to the misalignment direction, in the coupling's frame"},
+};
+
+constexpr int kScalarCount = static_cast<int>(std::size(kScalars));
+constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
+// Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
+constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
+
+Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMoments& m) {
+  const Eigen::Vector2d moment(m.y_nm, m.z_nm);
+  const double size = moment.norm();
+  const Eigen::Vector2d along = size > 0.0 ? Eigen::Vector2d(moment / size) : Eigen::Vector2d::Zero();
+  switch (frame) {
+    case 0: return {1.0, 0.0};
+    case 1: return {0.0, 1.0};
+    case 2: return along;
+    case 3: return {-along.y(), along.x()};
+    case 4: return {std::cos(s.direction_rad), std::sin(s.direction_rad)};
+    default: return {-std::sin(s.direction_rad), std::cos(s.direction_rad)};
+  }
+}
+
+std::vector<ExpressionTerm> make_terms() {
+  std::vector<ExpressionTerm> terms;
+  for (int i = 0; i < kScalarCount; ++i) {
+    for (int f = 0; f < kFrameCount; ++f) {
+      const Scalar& s = kScalars[i];
+      const std::string unit = *s.unit ? std::string("N·m/") + s.unit : std::string("N·m");
+      terms.push_back({std::string(s.name) + "_" + kFrames[f].name, std::string(s.formula) + " " + kFrames[f].formula,
+                       unit, s.bound, std::string(s.mechanisms) + "; " + kFrames[f].mechanisms, i, f});
+    }
+  }
+  const char* gain = "a gain (calibration slope) error of that channel, or a coupling stiffer or softer than modelled";
+  const char* cross = "cross-talk between the two bending bridges, or a sensor frame rotated against the model's";
+  const char* revolution =
+      "once per revolution: runout or an eccentric hub, an unbalance, or a gauge on the rotating shaft "
+      "seeing a fixed load";
+  terms.push_back({"model_y_on_y", "M_sy' (model) on M_sy'", "-", 1.0, gain, -1, kGainYY});
+  terms.push_back({"model_z_on_z", "M_sz' (model) on M_sz'", "-", 1.0, gain, -1, kGainZZ});
+  terms.push_back({"model_z_on_y", "M_sz' (model) on M_sy'", "-", 1.0, cross, -1, kCrossZY});
+  terms.push_back({"model_y_on_z", "M_sy' (model) on M_sz'", "-", 1.0, cross, -1, kCrossYZ});
+  terms.push_back({"revolution_sin_on_y", "sin(phi_rot) on M_sy'", "N·m", 1e7, revolution, -1, kSinY});
+  terms.push_back({"revolution_cos_on_y", "cos(phi_rot) on M_sy'", "N·m", 1e7, revolution, -1, kCosY});
+  terms.push_back({"revolution_sin_on_z", "sin(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kSinZ});
+  terms.push_back({"revolution_cos_on_z", "cos(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kCosZ});
+  return terms;
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sample, const SensorMoments& model) const {
+  if (scalar >= 0) {
+    const std::optional<double> s = kScalars[scalar].read(sample);
+    if (!s) return std::nullopt;
+    return *s * direction(frame, sample, model);
+  }
+  switch (frame) {
+    case kGainYY: return Eigen::Vector2d(model.y_nm, 0.0);
+    case kGainZZ: return Eigen::Vector2d(0.0, model.z_nm);
+    case kCrossZY: return Eigen::Vector2d(model.z_nm, 0.0);
+    case kCrossYZ: return Eigen::Vector2d(0.0, model.y_nm);
+    default: break;
+  }
+  if (!sample.rotation_phase_rad) return std::nullopt;
+  const double p = *sample.rotation_phase_rad;
+  switch (frame) {
+    case kSinY: return Eigen::Vector2d(std::sin(p), 0.0);
+    case kCosY: return Eigen::Vector2d(std::cos(p), 0.0);
+    case kSinZ: return Eigen::Vector2d(0.0, std::sin(p));
+    default: return Eigen::Vector2d(0.0, std::cos(p));
+  }
+}
+
+const std::vector<ExpressionTerm>& expression_terms() {
+  static const std::vector<ExpressionTerm> terms = make_terms();
+  return terms;
+}
+
+const ExpressionTerm* find_expression_term(std::string_view name) {
+  for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return &t;
+  return nullptr;
+}
+
+}  // namespace gc

@@ -1,0 +1,42 @@
+// The terms a formula for the model's discrepancy is built from (docs/diagnosis.md, "formula").
+// Each term is a physical quantity the model knows times a direction on the two sensor channels:
+//   term(sample) = s(sample) * d(sample),   s a scalar with a unit, d a unit 2-vector (M_sy', M_sz'),
+// so that "a moment along the model's moment direction, proportional to T zeta" is one term and
+// its coefficient has a unit (N·m per unit of s). A few terms take the model's own moments instead
+// (gain and cross-talk), and the rotation phase gives the once-per-revolution harmonics.
+// The same catalogue serves the discrepancy search and the `expression` effect that adds a found
+// formula to a model file, so what was fitted is what is added.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/measurement_sample.h"
+
+namespace gc {
+
+struct ExpressionTerm {
+  std::string name;              ///< e.g. "travel_sign_along_misalignment"
+  std::string formula;           ///< e.g. "sign(dzeta/dt) (cos beta, sin beta)"
+  std::string coefficient_unit;  ///< e.g. "N·m"
+  double bound = 0.0;            ///< |coefficient| at most this [coefficient_unit]
+  std::string mechanisms;        ///< what such a term usually means, one sentence
+  /// The term's (M_sy', M_sz') per unit coefficient for a sample and the model's moments there
+  /// [N·m per coefficient unit]; nullopt when the sample lacks the input (speed, temperature, phase).
+  std::optional<Eigen::Vector2d> value(const MeasurementSample& sample, const SensorMoments& model) const;
+
+  // What the term is made of (see expression_terms.cc).
+  int scalar = 0;
+  int frame = 0;
+};
+
+/// Every term, in a fixed order.
+const std::vector<ExpressionTerm>& expression_terms();
+/// nullptr when no term has that name.
+const ExpressionTerm* find_expression_term(std::string_view name);
+
+}  // namespace gc
