@@ -136,7 +136,6 @@ Eigen::VectorXd stlsq(const Eigen::MatrixXd& gram, const Eigen::VectorXd& xty, d
 
 SindyChannel fit_channel(const Eigen::MatrixXd& x, const Eigen::VectorXd& target, const SindySettings& s) {
   const Eigen::Index rows = x.rows();
-  const double ridge = s.ridge * static_cast<double>(rows);
   const double spread = std::sqrt((target.array() - target.mean()).square().mean());
   std::vector<double> thresholds = {0.0};
   for (int k = 0; k < s.thresholds; ++k) {
@@ -149,7 +148,9 @@ SindyChannel fit_channel(const Eigen::MatrixXd& x, const Eigen::VectorXd& target
     const auto block = static_cast<int>(i * s.blocks / rows);
     fold[static_cast<std::size_t>(i)] = block % s.folds;
   }
-  Eigen::MatrixXd fold_mse(static_cast<Eigen::Index>(thresholds.size()), s.folds);
+  // fold_mse[r](k, f): held-out mean square of fold f at ridge r and threshold k.
+  std::vector<Eigen::MatrixXd> fold_mse(s.ridges.size(),
+                                        Eigen::MatrixXd(static_cast<Eigen::Index>(thresholds.size()), s.folds));
   for (int f = 0; f < s.folds; ++f) {
     std::vector<Eigen::Index> train, test;
     for (Eigen::Index i = 0; i < rows; ++i) (fold[static_cast<std::size_t>(i)] == f ? test : train).push_back(i);
@@ -158,27 +159,38 @@ SindyChannel fit_channel(const Eigen::MatrixXd& x, const Eigen::VectorXd& target
     const Eigen::VectorXd xty = xt.transpose() * target(train);
     const Eigen::MatrixXd xv = x(test, Eigen::all);
     const Eigen::VectorXd yv = target(test);
-    for (std::size_t k = 0; k < thresholds.size(); ++k) {
-      const Eigen::VectorXd coef = stlsq(gram, xty, s.ridge * static_cast<double>(train.size()), thresholds[k],
-                                         s.stlsq_iterations);
-      fold_mse(static_cast<Eigen::Index>(k), f) = (yv - xv * coef).squaredNorm() / static_cast<double>(test.size());
+    for (std::size_t r = 0; r < s.ridges.size(); ++r) {
+      for (std::size_t k = 0; k < thresholds.size(); ++k) {
+        const Eigen::VectorXd coef =
+            stlsq(gram, xty, s.ridges[r] * static_cast<double>(train.size()), thresholds[k], s.stlsq_iterations);
+        fold_mse[r](static_cast<Eigen::Index>(k), f) = (yv - xv * coef).squaredNorm() / static_cast<double>(test.size());
+      }
     }
   }
-  // One-standard-error rule: the largest (sparsest) threshold whose mean held-out error is within
-  // one standard error (over folds) of the best.
-  const Eigen::VectorXd mean = fold_mse.rowwise().mean();
+  // The ridge with the lowest cross-validated error at its best threshold; then the one-standard-
+  // error rule on the threshold: the largest (sparsest) whose mean held-out error is within one
+  // standard error (over folds) of that best.
+  std::size_t ridge = 0;
   Eigen::Index best = 0;
-  mean.minCoeff(&best);
-  const double sd = std::sqrt((fold_mse.row(best).array() - mean(best)).square().sum() / (s.folds - 1));
+  double best_mse = INFINITY;
+  for (std::size_t r = 0; r < s.ridges.size(); ++r) {
+    Eigen::Index k = 0;
+    const double m = fold_mse[r].rowwise().mean().minCoeff(&k);
+    if (m < best_mse) best_mse = m, ridge = r, best = k;
+  }
+  const Eigen::VectorXd mean = fold_mse[ridge].rowwise().mean();
+  const double sd = std::sqrt((fold_mse[ridge].row(best).array() - mean(best)).square().sum() / (s.folds - 1));
   const double limit = mean(best) + sd / std::sqrt(static_cast<double>(s.folds));
   std::size_t chosen = static_cast<std::size_t>(best);
   for (std::size_t k = 0; k < thresholds.size(); ++k) {
     if (mean(static_cast<Eigen::Index>(k)) <= limit && thresholds[k] > thresholds[chosen]) chosen = k;
   }
   SindyChannel channel;
+  channel.ridge = s.ridges[ridge];
   channel.threshold_nm = thresholds[chosen];
   channel.cv_rmse_nm = std::sqrt(mean(static_cast<Eigen::Index>(chosen)));
-  channel.coefficients = stlsq(x.transpose() * x, x.transpose() * target, ridge, channel.threshold_nm, s.stlsq_iterations);
+  channel.coefficients = stlsq(x.transpose() * x, x.transpose() * target, channel.ridge * static_cast<double>(rows),
+                               channel.threshold_nm, s.stlsq_iterations);
   channel.active_terms = static_cast<int>((channel.coefficients.array() != 0.0).count());
   return channel;
 }

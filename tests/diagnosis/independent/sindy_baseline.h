@@ -17,7 +17,10 @@ namespace gc::independent {
 struct SindySettings {
   int max_degree = 3;             ///< polynomial terms of T, zeta, time (speed, temperature) up to this
   int trig_product_degree = 2;    ///< sin/cos of beta and 2 beta, times monomials up to this degree
-  double ridge = 1e-6;            ///< ridge per row on the unit-variance columns [-]
+  /// Ridge per row on the unit-variance columns [-], chosen by the same cross-validation: the
+  /// library is strongly collinear (speed and temperature are smooth in time), and with a ridge of
+  /// 1e-6 alone the full fit extrapolates wildly into held-out time blocks.
+  std::vector<double> ridges = {1e-6, 1e-4, 1e-3, 1e-2};
   int stlsq_iterations = 10;
   int thresholds = 25;            ///< log-spaced from 1e-3 to 1 x the residual's std, plus 0
   int folds = 5;
@@ -27,6 +30,7 @@ struct SindySettings {
 /// One channel's sparse model: coefficients on the normalised library columns.
 struct SindyChannel {
   Eigen::VectorXd coefficients;   ///< [N·m per unit column]
+  double ridge = 0.0;             ///< the cross-validated choice, per row [-]
   double threshold_nm = 0.0;      ///< the one-standard-error choice
   int active_terms = 0;
   double cv_rmse_nm = 0.0;        ///< cross-validated RMSE at that threshold
@@ -43,8 +47,9 @@ struct SindyModel {
 };
 
 /// Fits the residual (measured - base model) of each channel separately: STLSQ (sequential
-/// thresholded ridge least squares) at every threshold, scored by blocked cross-validation, the
-/// sparsest threshold within one standard error of the best kept, then refitted on all rows.
+/// thresholded ridge least squares) at every ridge and threshold, scored by blocked
+/// cross-validation; the ridge of the lowest error, the sparsest threshold within one standard
+/// error of its best, then refitted on all rows. Column normalisation is from all training rows.
 /// `inputs` and `residual` are the same rows in time order.
 SindyModel fit_sindy(std::span<const MeasurementSample> inputs, std::span<const SensorMoments> residual,
                      const SindySettings& settings = {});
