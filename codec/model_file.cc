@@ -84,6 +84,9 @@ ContactOptions contact_of(const v1::ContactOptionsConfig& config) {
   if (config.has_load_sharing_max_iterations()) {
     options.load_sharing.max_iterations = config.load_sharing_max_iterations();
   }
+  if (config.has_continuous_quarter_sums()) {
+    options.continuous_quarter_sums = config.continuous_quarter_sums();
+  }
   return options;
 }
 
@@ -141,6 +144,7 @@ std::string write_model_text(std::string_view name, std::string_view description
   contact->set_slices(model.options().slices);
   contact->set_load_sharing_tolerance(model.options().load_sharing.tolerance);
   contact->set_load_sharing_max_iterations(model.options().load_sharing.max_iterations);
+  contact->set_continuous_quarter_sums(model.options().continuous_quarter_sums);
   std::string text;
   google::protobuf::TextFormat::Printer printer;
   printer.PrintToString(config, &text);

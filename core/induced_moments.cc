@@ -34,20 +34,28 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
   const double max_offset = contact.max_contact_offset_m;  // R_F sin(zeta), eq 15
 
   // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
-  const int last = static_cast<int>(q_n / 4.0);
+  const double quarter = q_n / 4.0;
+  const int last = static_cast<int>(quarter);
   double sum_y = 0.0;
   double sum_z = 0.0;
-  for (int j = 0; j <= last; ++j) {
+  const auto add_tooth = [&](int j, double weight) {
     const ToothLoad& tooth = contact.teeth[static_cast<std::size_t>(j)];
     const double projection = std::cos(tooth.angle_rad);                        // cos(2 pi j/N + a)
     const double offset = max_offset * std::cos(2.0 * M_PI * j / q_n + alpha);  // f_d, eq 40
     const double arm = std::sqrt(radius * radius - offset * offset);            // R_d, eq 39
     const double axial = tooth.load_n * axial_factor;                           // W_d, eq 37
-    sum_z += projection * axial * arm;          // M_dz'' = W_d R_d, eq 38
-    sum_y += projection * tooth.load_n * offset;  // M_dy'' = P_d f_d, eq 41
-  }
+    sum_z += weight * projection * axial * arm;            // M_dz'' = W_d R_d, eq 38
+    sum_y += weight * projection * tooth.load_n * offset;  // M_dy'' = P_d f_d, eq 41
+  };
+  for (int j = 0; j <= last; ++j) add_tooth(j, 1.0);
+  // The continuous variant (docs/model.md): as qN/4 grows from one whole number to the next,
+  // the next tooth enters the quarter in proportion instead of all at once, so the sums run
+  // from the paper's value at int(qN/4) to its value at int(qN/4) + 1 without a step.
+  const double entering = quarter - last;
+  const bool fractional_tooth = contact.continuous_quarter_sums && entering > 0.0;
+  if (fractional_tooth) add_tooth(last + 1, entering);
   InducedMoments m;
-  m.teeth_summed = 4 * (last + 1);
+  m.teeth_summed = 4 * (last + 1 + (fractional_tooth ? 1 : 0));
   m.moment_y_dd_nm = 4.0 * sum_y;  // eq 43
   m.moment_z_dd_nm = 4.0 * sum_z;  // eq 42
   const Eigen::Vector2d global =

@@ -19,7 +19,8 @@ struct InducedMoments {
   double self_weight_moment_nm = 0.0;  ///< W_c cos(gamma) L_s + w_sh cos(gamma) L_s^2 / 2 [N·m]
   double magnitude_nm = 0.0;      ///< |(M_y', M_z')| [N·m]
   double direction_rad = 0.0;     ///< atan2(M_z', M_y') [rad]
-  int teeth_summed = 0;           ///< 4 (int(qN/4) + 1): the symmetric sums of eqs 42-43
+  int teeth_summed = 0;           ///< 4 (int(qN/4) + 1): the symmetric sums of eqs 42-43;
+                                  ///< + 4 for the continuous variant's fractional tooth
 };
 
 /// Eq 37's ratio W_d / P_d = (mu cos zeta + sin zeta) / (cos zeta - mu sin zeta) [-].

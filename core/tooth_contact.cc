@@ -27,9 +27,14 @@ double max_separation_m(const CouplingGeometry& coupling, double misalignment_ra
 // Eq 13, with the residue of qN turned into an angle: a fraction of one tooth pitch 2 pi / N
 // (as printed, a bare number of radians, it shifts the pattern by up to 14 deg and makes the
 // moments jump; docs/model.md), plus the half tooth angle pi / N.
-double offset_alpha_rad(double q, int teeth) {
+// The residue r = qN - int(qN) drops from 1 to 0 each time qN passes a whole number, so alpha
+// steps back by a quarter pitch there. The continuous variant folds it, min(r, 1 - r): the
+// paper's value for r <= 1/2, back to 0 at every whole qN without a step (docs/model.md).
+double offset_alpha_rad(double q, int teeth, bool continuous) {
   const double q_n = q * teeth;
-  return (q_n - std::floor(q_n)) * (2.0 * M_PI / teeth) / 4.0 + M_PI / teeth;
+  const double residue = q_n - std::floor(q_n);
+  const double used = continuous ? std::min(residue, 1.0 - residue) : residue;
+  return used * (2.0 * M_PI / teeth) / 4.0 + M_PI / teeth;
 }
 
 // Eq 18: chord of the crown circle R_F cut at depth delta_d [m].
@@ -75,7 +80,8 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
                                       options.load_sharing);                         // 20-22
   c.peak_tooth_load_n = c.mean_tooth_load_n / c.load_sharing.q;                      // eq 20
   c.elastic_deformation_m = c.peak_tooth_load_n / stiffness;                         // eq 10
-  c.offset_alpha_rad = offset_alpha_rad(c.load_sharing.q, n);                        // eq 13
+  c.offset_alpha_rad =
+      offset_alpha_rad(c.load_sharing.q, n, options.continuous_quarter_sums);          // eq 13
   c.max_contact_offset_m = crown * std::sin(point.misalignment_rad);                 // eq 15
   c.z_axis_angle_rad = coupling.pressure_angle_rad() + point.direction_rad;
 
@@ -110,6 +116,7 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
 
   require_load_carried(c, point, options.min_load_fraction);
   c.slices = options.slices;
+  c.continuous_quarter_sums = options.continuous_quarter_sums;
   const ToothLoad& governing = c.teeth[c.max_load_tooth];
   c.max_stress = tooth_stress(coupling, governing.load_n, governing.contact_length_m);
   return c;

@@ -29,6 +29,12 @@ struct ContactOptions {
   /// (light torque near the jam angle) eq 9 with eq 22's q loses load, down to none at all;
   /// such a point is an InvalidInput on the torque, not a result (docs/model.md).
   double min_load_fraction = 0.9;
+  /// false: the paper's eqs 13 and 42-43, whose int(qN/4) and residue of qN make |M| a
+  /// sawtooth in torque and misalignment. true: the continuous variant of docs/model.md
+  /// (issue 8): eq 13's residue folded, min(r, 1 - r), and the quarter sums closed by the
+  /// fractional tooth, weighted by the fractional part of qN/4. Equal to the paper's form
+  /// wherever qN/4 is a whole number.
+  bool continuous_quarter_sums = false;
 };
 
 /// One tooth of the hub.
@@ -60,6 +66,7 @@ struct ToothContact {
   double sum_tooth_loads_n = 0.0;       ///< sum of P_d, against P_t [N]
   bool edge_loaded = false;             ///< some eq 19 zone reached a facewidth edge
   int slices = 0;                       ///< N_s, eq 14
+  bool continuous_quarter_sums = false; ///< ContactOptions' choice, read by eqs 42-43
   ToothStress max_stress;               ///< stress of the most loaded tooth (it governs)
 
   /// cos(pi l / N_s), l = -N_s/2 .. N_s/2, eq 14 (computed on demand: only outputs need it).

@@ -112,6 +112,7 @@ void to_wire(const ContactOptions& in, gearcoupling_ContactOptions& out) {
   out.slices = in.slices;
   out.spacing_error_m = in.spacing_error_m;
   out.min_load_fraction = in.min_load_fraction;
+  out.continuous_quarter_sums = in.continuous_quarter_sums;
 }
 
 ContactOptions from_wire(const gearcoupling_ContactOptions& in) {
@@ -121,6 +122,7 @@ ContactOptions from_wire(const gearcoupling_ContactOptions& in) {
   out.slices = in.slices;
   out.spacing_error_m = in.spacing_error_m;
   out.min_load_fraction = in.min_load_fraction;
+  out.continuous_quarter_sums = in.continuous_quarter_sums;
   return out;
 }
 

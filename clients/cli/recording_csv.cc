@@ -156,12 +156,36 @@ std::vector<RecordingColumn> parse_recording_header(std::string_view header,
 
 RecordingReader::RecordingReader(const std::filesystem::path& path,
                                  LoadingDirectionOptions loading)
-    : source_name_(path.filename().string()), in_(path, std::ios::binary), loading_(loading) {
+    : source_name_(path.filename().string()),
+      in_(path, std::ios::binary),
+      loading_(0.0, loading.still_after_s) {
   if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
   if (!std::getline(in_, line_)) {
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }
   columns_ = parse_recording_header(line_, source_name_);
+  has_speed_ = std::any_of(columns_.begin(), columns_.end(),
+                           [](const RecordingColumn& c) { return c.quantity == Quantity::speed; });
+  loading_dead_band_rad_ = scan_dead_band(loading);
+  loading_ = LoadingDirectionTracker(loading_dead_band_rad_, loading.still_after_s);
+}
+
+double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
+  const std::streampos first_row = in_.tellg();
+  std::vector<double> amplitudes;
+  RecordedSample sample;
+  while (std::getline(in_, line_)) {
+    const std::string_view line = trim(line_);
+    if (line.empty() || parse_row(line, sample)) continue;  // problems are reported on pass 2
+    last_time_s_ = sample.input.time_s;
+    amplitudes.push_back(sample.input.misalignment_rad);
+  }
+  last_time_s_.reset();
+  in_.clear();
+  if (!in_.seekg(first_row)) {
+    throw InvalidInput("recording", source_name_ + ": cannot be read twice (not a regular file?)");
+  }
+  return gc::loading_dead_band_rad(amplitudes, loading);
 }
 
 std::optional<RowProblem> RecordingReader::parse_row(std::string_view line, RecordedSample& s) {
@@ -217,6 +241,11 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
     last_time_s_ = sample.input.time_s;
     sample.input.loading_direction =
         loading_.next(sample.input.time_s, sample.input.misalignment_rad);
+    // Every kept row has a speed when the column exists (an empty cell excludes the row), so
+    // the trapezoid runs over the kept rows, across any excluded between them.
+    if (has_speed_) {
+      sample.input.rotation_phase_rad = phase_.next(sample.input.time_s, *sample.input.speed_rpm);
+    }
     samples.push_back(sample);
   }
   return !samples.empty() || !in_.eof();

@@ -6,7 +6,9 @@
 // The reader streams: it holds one chunk of samples at a time. Malformed rows (wrong field
 // count, an empty, non-numeric, NaN or infinite cell, time going backwards) are excluded and
 // reported with their line and column, never dropped in silence. It derives each sample's
-// loading direction from the misalignment amplitude of the rows it keeps.
+// loading direction from the misalignment amplitude of the rows it keeps, with a dead band from
+// the whole recording's misalignment noise (so it reads the rows twice: once, on opening, for
+// the noise, then chunk by chunk), and, where there is a speed column, the rotation phase.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +21,7 @@
 
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
+#include "core/rotation_phase.h"
 
 namespace gc::cli {
 
@@ -63,8 +66,9 @@ std::vector<RecordingColumn> parse_recording_header(std::string_view header,
 
 class RecordingReader {
  public:
-  /// Opens `path` and reads its header (errors as parse_recording_header, or "recording" when
-  /// the file cannot be read or is empty).
+  /// Opens `path`, reads its header (errors as parse_recording_header, or "recording" when
+  /// the file cannot be read twice or is empty) and the misalignment of every good row, for the
+  /// loading directions' dead band (loading_dead_band_rad, core/loading_direction.h).
   explicit RecordingReader(const std::filesystem::path& path, LoadingDirectionOptions loading = {});
 
   /// Reads up to `max_samples` good samples into `samples` (cleared first). Returns false
@@ -74,6 +78,8 @@ class RecordingReader {
   const std::vector<RecordingColumn>& columns() const { return columns_; }
   std::size_t rows_read() const { return rows_read_; }          ///< data rows, good and bad
   std::size_t excluded_rows() const { return excluded_rows_; }
+  /// The loading directions' dead band for this recording [rad].
+  double loading_dead_band_rad() const { return loading_dead_band_rad_; }
   /// The first `kKeptProblems` problems; excluded_rows() counts them all.
   const std::vector<RowProblem>& problems() const { return problems_; }
   static constexpr std::size_t kKeptProblems = 1000;
@@ -81,11 +87,17 @@ class RecordingReader {
  private:
   std::optional<RowProblem> parse_row(std::string_view line, RecordedSample& sample);
   void exclude(RowProblem problem);
+  /// The first pass: the dead band from the misalignment of the good rows, then back to the
+  /// first row.
+  double scan_dead_band(const LoadingDirectionOptions& loading);
 
   std::string source_name_;
   std::ifstream in_;
   std::vector<RecordingColumn> columns_;
+  double loading_dead_band_rad_ = 0.0;
   LoadingDirectionTracker loading_;
+  bool has_speed_ = false;
+  RotationPhaseIntegrator phase_;
   std::string line_;
   std::vector<std::string_view> fields_;
   long line_number_ = 1;

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "core/loading_direction.h"
 #include "core/model_error.h"
+#include "core/rotation_phase.h"
 
 namespace gc {
 namespace {
@@ -36,11 +38,12 @@ SynthesizedRecording synthesize(const CouplingModel& model,
   require_non_negative("synthesis.noise_nm", options.noise_nm);
   SynthesizedRecording recording;
   recording.samples.reserve(inputs.size());
-  LoadingDirectionTracker loading;
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    RecordedSample sample{inputs[i], {}, std::nullopt};
-    sample.input.loading_direction = loading.next(sample.input.time_s,
-                                                  sample.input.misalignment_rad);
+  // Derived inputs from the whole sequence first, as the recording reader does.
+  std::vector<MeasurementSample> derived(inputs.begin(), inputs.end());
+  derive_loading_directions(derived);
+  derive_rotation_phase(derived);  // where every input has a speed
+  for (std::size_t i = 0; i < derived.size(); ++i) {
+    RecordedSample sample{derived[i], {}, std::nullopt};
     try {
       const SensorMoments moments = model.predict(sample.input).moments;
       sample.measured.y_nm = moments.y_nm + options.noise_nm * standard_normal(options.seed, i, 0);

@@ -33,9 +33,10 @@ struct SynthesizedRecording {
 };
 
 /// Predicts every input with `model`, adds noise; inputs the model rejects are listed, not
-/// dropped in silence. Loading directions are derived from the sequence (core/loading_direction.h)
-/// before the model sees them, as the recording reader does. Throws InvalidInput for a
-/// negative or non-finite noise.
+/// dropped in silence. Before the model sees them, as the recording reader does, the derived
+/// inputs are set from the whole sequence: loading directions, with the dead band from its
+/// misalignment noise (core/loading_direction.h), and the rotation phase where every input has a
+/// speed (core/rotation_phase.h). Throws InvalidInput for a negative or non-finite noise.
 SynthesizedRecording synthesize(const CouplingModel& model,
                                 std::span<const MeasurementSample> inputs,
                                 const SynthesisOptions& options);

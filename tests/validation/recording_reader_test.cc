@@ -1,12 +1,16 @@
 // Recordings (docs/recordings.md): every documented error with its line and column, units
-// converted to SI, loading direction derived, and a bounded chunk size.
+// converted to SI, loading direction and rotation phase derived, and a bounded chunk size.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "clients/cli/recording_csv.h"
+#include "core/loading_direction.h"
 #include "core/model_error.h"
+#include "core/synthesis/synthesize.h"
 #include "run_process.h"
 
 namespace gc::cli {
@@ -119,6 +123,66 @@ TEST(RecordingReader, DerivesLoadingDirectionFromTheAmplitude) {
   std::vector<int> directions;
   for (const auto& s : recording.samples) directions.push_back(s.input.loading_direction);
   EXPECT_EQ(directions, (std::vector<int>{0, 1, 1, -1, -1, -1, 0}));
+}
+
+TEST(RecordingReader, DeadBandFollowsTheWholeRecordingsMisalignmentNoise) {
+  // 3,000 rows every 0.05 s (three chunks of 1,000): a hold at 0.1 deg for 50 s, a ramp to
+  // 0.5 deg in 5 s (1.4 mrad/s), a hold for 95 s; 6e-5 rad of noise; and one bad row, still
+  // reported, whose row does not enter the noise.
+  std::string text = kHeader;
+  for (int i = 0; i < 3000; ++i) {
+    const double ramp = std::clamp((i - 1000) / 100.0, 0.0, 1.0);
+    const double noise_deg = 6e-5 * 180 / std::numbers::pi * standard_normal(7, i, 0);
+    text += i == 1500 ? "75,1e6,,0,1,2\n"
+                      : fmt::format("{},1e6,{},0,1,2\n", i * 0.05, 0.1 + 0.4 * ramp + noise_deg);
+  }
+  const std::string path = temp_path("noisy") + ".csv";
+  write_file(path, text);
+  RecordingReader reader(path);
+  std::vector<RecordedSample> chunk;
+  std::vector<MeasurementSample> streamed;
+  while (reader.next_chunk(chunk, 1000)) {
+    for (const RecordedSample& s : chunk) streamed.push_back(s.input);
+  }
+  ASSERT_EQ(reader.excluded_rows(), 1u);
+  EXPECT_EQ(reader.problems()[0].line, 1502);
+  EXPECT_EQ(reader.problems()[0].column, 3);
+  ASSERT_EQ(streamed.size(), 2999u);
+  // The band is 6 sigma of the whole recording's noise, known before the first chunk.
+  EXPECT_NEAR(reader.loading_dead_band_rad(), 6.0 * 6e-5, 0.1 * 6.0 * 6e-5);
+  // The labels are those of the whole-recording core function over the kept rows.
+  std::vector<MeasurementSample> whole = streamed;
+  derive_loading_directions(whole);
+  int holds = 0, still = 0, ramp = 0, rising = 0;
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(streamed[i].loading_direction, whole[i].loading_direction) << i;
+    const double t = streamed[i].time_s;
+    const bool in_hold = t < 50.0 || t >= 55.0;
+    (in_hold ? holds : ramp) += 1;
+    if (in_hold && streamed[i].loading_direction == 0) ++still;
+    if (!in_hold && streamed[i].loading_direction == 1) ++rising;
+  }
+  EXPECT_GT(still, 0.9 * holds);  // measured: 2,889 of 2,899
+  EXPECT_GT(rising, 0.9 * ramp);   // measured: 94 of 100
+}
+
+TEST(RecordingReader, IntegratesTheRotationPhaseFromTheSpeedColumn) {
+  // 30 rpm = pi rad/s for 1 s, then 90 rpm = 3 pi rad/s from t = 2 s: trapezoids of
+  // pi, (pi + 3 pi) / 2 = 2 pi, 3 pi; given in rad/s to check the unit too.
+  const Recording recording = read_text(
+      "time_s,torque_nm,misalignment_deg,direction_deg,msy_nm,msz_nm,speed_rad_s\n"
+      "0,1e6,0.1,0,1,2,3.141592653589793\n1,1e6,0.1,0,1,2,3.141592653589793\n"
+      "1.5,1e6,0.1,0,1,2,north\n"
+      "2,1e6,0.1,0,1,2,9.42477796076938\n3,1e6,0.1,0,1,2,9.42477796076938\n");
+  ASSERT_EQ(recording.samples.size(), 4u);
+  EXPECT_EQ(recording.excluded_rows, 1u);  // the bad speed cell is reported, then skipped
+  const double expected[] = {0.0, 1.0, 3.0, 6.0};
+  for (std::size_t i = 0; i < 4; ++i) {
+    ASSERT_TRUE(recording.samples[i].input.rotation_phase_rad.has_value());
+    EXPECT_NEAR(*recording.samples[i].input.rotation_phase_rad, expected[i] * std::numbers::pi,
+                1e-12) << i;
+  }
+  EXPECT_FALSE(read_text(kHeader + "0,1e6,0.1,0,1,2\n").samples[0].input.rotation_phase_rad);
 }
 
 TEST(RecordingReader, KeepsAtMostTheRequestedChunk) {
