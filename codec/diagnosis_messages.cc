@@ -14,6 +14,7 @@ void fill(const EffectFit& fit, google::protobuf::RepeatedPtrField<v1::Parameter
     if (p.standard_error) r.set_standard_error(*p.standard_error);
     r.set_held(p.held);
     r.set_note(p.note);
+    r.set_plausible(p.plausible);
   }
 }
 
@@ -25,6 +26,7 @@ v1::CandidateRecord to_message(const CandidateScore& c) {
   r.set_t(c.against_base.t);
   if (c.fit) fill(*c.fit, *r.mutable_parameters());
   r.set_failure(c.failure);
+  r.set_kind(c.kind == CandidateKind::addition ? "addition" : c.kind == CandidateKind::refinement ? "refinement" : "formula");
   return r;
 }
 
@@ -73,6 +75,11 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
   }
   for (const InputSignature& s : round.signature.inputs) *r.add_signature() = to_message(s);
   r.set_verdict(round.verdict);
+  r.set_noise_phi_y(round.noise.phi(0));
+  r.set_noise_phi_z(round.noise.phi(1));
+  if (round.formula) *r.mutable_formula() = to_message(*round.formula);
+  r.set_formula_chosen(round.formula_chosen);
+  for (const std::string& d : round.dropped) r.add_dropped(d);
   return r;
 }
 
@@ -99,6 +106,7 @@ v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
   r.set_refit_rows(diagnosis.refit_rows);
   for (const DiagnosisRound& round : diagnosis.rounds) *r.add_rounds() = to_message(round);
   r.set_summary(diagnosis.summary);
+  r.set_outlier_rows(diagnosis.outlier_rows.size());
   return r;
 }
 

@@ -37,7 +37,7 @@ void write_model(const std::string& path, const codec::ModelFile& file, const Di
   std::string description = file.description;
   if (!added.empty()) {
     if (!description.empty() && !description.ends_with('.')) description += '.';
-    description += (description.empty() ? "" : " ") + std::string("Added by diagnose: ") + added + ".";
+    description += (description.empty() ? "" : " ") + std::string("Added or refined by diagnose: ") + added + ".";
   }
   out << codec::write_model_text(file.name + (added.empty() ? "" : "_diagnosed"), description, file.coupling, model);
   if (!out.flush()) throw std::runtime_error("cannot write --write-model " + path);

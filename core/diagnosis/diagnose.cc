@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/diagnosis/claim_review.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/diagnosis/verdict_text.h"
@@ -227,34 +228,22 @@ std::optional<EffectFit> refit_claim(const CouplingModel& model, const Diagnosis
   if (round.formula_chosen) {
     std::vector<std::string> terms;
     for (const ParameterEstimate& p : chosen.fit->parameters) terms.push_back(p.name);
-    return fit_formula(observations, refit, select_rows(residual, rows, refit), terms, round.noise.variance_inflation());
+    const std::shared_ptr<const Effect> earlier = model.effect(kExpressionEffect);
+    if (!earlier) return fit_formula(observations, refit, select_rows(residual, rows, refit), terms, round.noise.variance_inflation());
+    // A model with a formula already gets one formula over both sets of terms, refitted together on
+    // what the model leaves without it: a second expression would replace the first.
+    for (const ParameterSpec& p : earlier->info().parameters) {
+      if (std::find(terms.begin(), terms.end(), p.name) == terms.end()) terms.push_back(p.name);
+    }
+    const ModelResiduals without = model_residuals(model.without_effect(kExpressionEffect), observations, refit, parallel);
+    if (!without.failed_rows.empty()) return std::nullopt;
+    return fit_formula(observations, refit, without.residual, terms, round.noise.variance_inflation());
   }
   const std::shared_ptr<const Effect> current = model.effect(chosen.info->name);
   const std::optional<EffectRegistration> registration =
       current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
   if (!registration) return std::nullopt;
   return refit_effect(model, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
-}
-
-/// Earlier claims that the model no longer needs once this round's claim is in: the model without
-/// one is not worse on the search rows' held-out blocks than this round's held-out residual with
-/// it (a paired t below keep_t, without refitting anything to make up for it).
-std::vector<std::string> claims_to_drop(const CouplingModel& model, const Diagnosis& diagnosis,
-                                        const CouplingModel& base_model, const DiagnosisRound& round,
-                                        std::span<const RecordedSample> observations,
-                                        const std::vector<std::size_t>& search, const Folds& folds,
-                                        const ParallelFor& parallel, const DiagnosisSettings& settings) {
-  std::vector<std::string> drop;
-  for (const auto& earlier : diagnosis.added) {
-    // A refinement replaced an effect of the base model: it is refined again, never removed.
-    if (base_model.has_effect(earlier->name()) || earlier->name() == round.claimed->effect->name()) continue;
-    const ModelResiduals without = model_residuals(model.without_effect(earlier->name()), observations, search, parallel);
-    if (!without.failed_rows.empty()) continue;
-    const PairedBlockTest t = paired_block_test(without.residual, round.chosen().held_out_residual, folds.block_of,
-                                                folds.blocks);
-    if (t.t < settings.keep_t) drop.push_back(earlier->name());
-  }
-  return drop;
 }
 
 }  // namespace
@@ -321,7 +310,15 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     const bool continues = round.claimed.has_value();
     if (!continues && claims) round.claimed = round.chosen().fit;
     if (continues) {
-      round.dropped = claims_to_drop(candidate, out, model, round, observations, search, folds, parallel, settings);
+      std::vector<std::string> revisit;
+      for (const auto& earlier : out.added) {
+        // A refinement replaced an effect of the given model: it is refined again, never removed.
+        if (!model.has_effect(earlier->name()) && earlier->name() != round.claimed->effect->name()) {
+          revisit.push_back(earlier->name());
+        }
+      }
+      round.dropped = redundant_claims(candidate, revisit, round.chosen().held_out_residual, observations, search,
+                                       folds, parallel, settings.keep_t);
       for (const std::string& name : round.dropped) {
         candidate = candidate.without_effect(name);
         std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });

@@ -41,9 +41,9 @@ struct DiagnosisSettings {
   /// A formula is claimed over a claimable, plausible effect only when its held-out gain over that
   /// effect has a block-paired t of at least this, and it removes at least formula_over_effect_gain
   /// times the mean square the effect removes: physics first, unless the effect explains less than
-  /// half of what the formula shows is there (an offset taking the mean of a drift).
+  /// two thirds of what the formula shows is there (an offset taking the mean of a drift).
   double formula_over_effect_t = 3.0;
-  double formula_over_effect_gain = 2.0;
+  double formula_over_effect_gain = 1.5;
   /// Samples more than this many robust deviations from their running median are outliers,
   /// excluded and counted (core/diagnosis/noise_estimate.h).
   double outlier_deviations = 7.0;

@@ -105,9 +105,11 @@ std::string number(double v) {
 /// Within 1 % of the box's width from an edge: the polish stops short of a bound by about its step.
 bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
 
-/// Empty when the value is inside the box, else which physical bound it sits on.
+/// Empty when the value is inside the box, else which physical bound it sits on. A bound that is the
+/// neutral value (no low-torque rise of friction, no lag) is where the data says "none": no note.
 std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, int i, double unit) {
   if (!on_edge(unit) || !box.at_physical_bound(i, unit)) return "";
+  if ((unit <= 0.5 ? spec.lower : spec.upper) == spec.neutral) return "";
   return unit <= 0.5 ? "at its lower bound " + number(spec.lower) + " " + spec.unit
                      : "at its upper bound " + number(spec.upper) + " " + spec.unit;
 }

@@ -11,6 +11,10 @@
 namespace gc {
 namespace {
 
+/// Ridge on the normalised columns (each of mean square 1): 1e-4 shrinks a coefficient by 0.01 %,
+/// yet keeps near-collinear columns from cancelling each other with large opposite coefficients.
+constexpr double kRidge = 1e-4;
+
 /// Rows of the stacked design for the positions `at` (y rows, then z rows).
 Eigen::MatrixXd stacked_rows(const Eigen::MatrixXd& m, const std::vector<std::size_t>& at, Eigen::Index n) {
   Eigen::MatrixXd out(static_cast<Eigen::Index>(2 * at.size()), m.cols());
@@ -38,7 +42,7 @@ Eigen::VectorXd solve_on(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, con
   Eigen::MatrixXd a(x.rows(), static_cast<Eigen::Index>(columns.size()));
   for (std::size_t k = 0; k < columns.size(); ++k) a.col(static_cast<Eigen::Index>(k)) = x.col(columns[k]);
   Eigen::MatrixXd normal = a.transpose() * a;
-  normal.diagonal().array() += 1e-9 * static_cast<double>(x.rows());
+  normal.diagonal().array() += kRidge * static_cast<double>(x.rows());
   const Eigen::VectorXd s = normal.ldlt().solve(a.transpose() * y);
   for (std::size_t k = 0; k < columns.size(); ++k) c(columns[k]) = s(static_cast<Eigen::Index>(k));
   return c;
@@ -188,13 +192,20 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   }
   std::size_t best = 0;
   for (std::size_t k = 1; k < scores.size(); ++k) if (scores[k].first < scores[best].first) best = k;
-  std::size_t chosen = best;  // one-standard-error rule: the sparsest within 1 SE of the best
-  for (std::size_t k = 0; k < best; ++k) {
-    if (scores[k].first <= scores[best].first + scores[best].second) { chosen = k; break; }
+  // One-standard-error rule: the sparsest formula (on all rows) within one standard error of the
+  // best held-out score, and at most max_terms terms.
+  std::vector<bool> support;
+  for (std::size_t k = 0; k <= best && support.empty(); ++k) {
+    if (scores[k].first > scores[best].first + scores[best].second) continue;
+    std::vector<bool> candidate = stlsq_support(z, y, thresholds[k]);
+    if (count(candidate) > 0 && count(candidate) <= settings.max_terms) support = std::move(candidate);
   }
-  std::vector<bool> support = stlsq_support(z, y, thresholds[chosen]);
-  while (count(support) > settings.max_terms && chosen > 0) support = stlsq_support(z, y, thresholds[--chosen]);
-  if (count(support) == 0 || count(support) > settings.max_terms) return std::nullopt;
+  // When every formula within one standard error needs more terms, the best one of max_terms terms.
+  for (std::size_t k = best + 1; k-- > 0 && support.empty();) {
+    std::vector<bool> candidate = stlsq_support(z, y, thresholds[k]);
+    if (count(candidate) > 0 && count(candidate) <= settings.max_terms) support = std::move(candidate);
+  }
+  if (support.empty()) return std::nullopt;
 
   std::vector<std::string> terms;
   for (std::size_t j = 0; j < support.size(); ++j) if (support[j]) terms.push_back(design.terms[j]);

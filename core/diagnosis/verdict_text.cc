@@ -39,6 +39,15 @@ std::string formula_text(const EffectFit& fit) {
   return "(M_sy', M_sz') += " + text + ". Such terms usually mean: " + mechanisms;
 }
 
+/// When the discrepancy stage's formula does as well as the claimed effect on held-out data (but
+/// not so much better that it is claimed instead), it is shown: another reading of the same residual.
+std::string rival_formula_text(const DiagnosisRound& round) {
+  if (!round.formula || round.formula_chosen || round.ranking.empty() || !round.formula->fit) return "";
+  if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm) return "";
+  return " A formula of physical terms does as well on held-out data (RMSE " + short_number(round.formula->held_out_rmse_nm) +
+         " N·m), another reading of the same residual: " + formula_text(*round.formula->fit) + ".";
+}
+
 std::string dropped_text(const DiagnosisRound& round) {
   std::string text;
   for (const std::string& name : round.dropped) {
@@ -113,11 +122,11 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
       if (c.kind == CandidateKind::refinement) {
         return head + "refine " + c.info->name + ": the model has it, and with its parameters freed it explains the residual in " +
                channels(round.channel_reduction) + " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) +
-               "; " + gain_text(round, c) + "." + dropped_text(round);
+               "; " + gain_text(round, c) + "." + rival_formula_text(round) + dropped_text(round);
       }
       return head + "the residual in " + channels(round.channel_reduction) + " is explained by " + c.info->name +
              " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " + gain_text(round, c) + "." +
-             dropped_text(round);
+             rival_formula_text(round) + dropped_text(round);
     }
     case RoundOutcome::partly_explained: {
       const CandidateScore& c = round.ranking.front();

@@ -47,6 +47,14 @@ const Scalar kScalars[] = {
      "a moment that changes with time alone: zero drift of the strain-gauge bridge (its temperature), or "
      "a slow change of the rig during the test",
      [](const MeasurementSample& s) { return std::optional(s.time_s); }},
+    {"time_squared", "t^2", "s^2", 1e4,
+     "a moment that changes smoothly with time alone, bending: zero drift of the strain-gauge bridge as it "
+     "warms, or a slow change of the rig during the test",
+     [](const MeasurementSample& s) { return std::optional(s.time_s * s.time_s); }},
+    {"time_cubed", "t^3", "s^3", 1e4,
+     "a moment that changes smoothly with time alone, turning: zero drift of the strain-gauge bridge, or a "
+     "slow change of the rig during the test",
+     [](const MeasurementSample& s) { return std::optional(s.time_s * s.time_s * s.time_s); }},
     {"speed", "n", "rpm", 1e6,
      "a moment in proportion to shaft speed: viscous drag (oil shear in the spline, windage), or bearing "
      "drag",
@@ -73,10 +81,15 @@ const Frame kFrames[] = {
      "rotated against the model's"},
     {"along_misalignment", "(cos beta, sin beta)", "along the misalignment direction, in the coupling's frame"},
     {"normal_to_misalignment", "(-sin beta, cos beta)", "normal to the misalignment direction, in the coupling's frame"},
+    {"times_moment", "M (the model's moment)",
+     "in proportion to the model's own moment, i.e. the moment scaled: a misalignment scale error (the coupling "
+     "sees a share more or less misalignment than measured), a friction coefficient or mesh stiffness different "
+     "from the model's, or a gain error of both bridges"},
 };
 
 constexpr int kScalarCount = static_cast<int>(std::size(kScalars));
 constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
+constexpr int kTimesMoment = kFrameCount - 1;
 // Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
 constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
 
@@ -90,7 +103,8 @@ Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMom
     case 2: return along;
     case 3: return {-along.y(), along.x()};
     case 4: return {std::cos(s.direction_rad), std::sin(s.direction_rad)};
-    default: return {-std::sin(s.direction_rad), std::cos(s.direction_rad)};
+    case 5: return {-std::sin(s.direction_rad), std::cos(s.direction_rad)};
+    default: return moment;  // times_moment: not a unit vector, the coefficient is per unit of M
   }
 }
 
@@ -99,9 +113,13 @@ std::vector<ExpressionTerm> make_terms() {
   for (int i = 0; i < kScalarCount; ++i) {
     for (int f = 0; f < kFrameCount; ++f) {
       const Scalar& s = kScalars[i];
-      const std::string unit = *s.unit ? std::string("N·m/") + s.unit : std::string("N·m");
+      // Along a unit direction the coefficient is N·m per unit of the scalar; times the model's
+      // moment it is a share of that moment per unit of the scalar (bounded for moments to 1e7 N·m).
+      const bool scaled = f == kTimesMoment;
+      const std::string unit = scaled ? (*s.unit ? std::string("1/") + s.unit : std::string("-"))
+                                      : (*s.unit ? std::string("N·m/") + s.unit : std::string("N·m"));
       terms.push_back({std::string(s.name) + "_" + kFrames[f].name, std::string(s.formula) + " " + kFrames[f].formula,
-                       unit, s.bound, std::string(s.mechanisms) + "; " + kFrames[f].mechanisms, i, f});
+                       unit, scaled ? s.bound / 1e7 : s.bound, std::string(s.mechanisms) + "; " + kFrames[f].mechanisms, i, f});
     }
   }
   const char* gain = "a gain (calibration slope) error of that channel, or a coupling stiffer or softer than modelled";

@@ -171,7 +171,7 @@ std::vector<Recipe> recipes() {
                  s.misalignment_rad *= 1.15;
                  return s;
                }),
-               coloured(), {{"compliance"}, {"misalignment scale", "scale of the misalignment", "scale error"}, false, 1}});
+               coloured(), {{"compliance", "misalignment_scale"}, {"misalignment scale", "scale of the misalignment", "scale error"}, false, 1}});
 
   // The load-application device lags the measurement by more at higher torque.
   r.push_back({"hysteresis_torque_lag", "zeta lags by (0.5 + 0.4 T / 1.5 MN·m) mrad against the direction of travel", "",
@@ -222,6 +222,7 @@ std::vector<Recipe> recipes() {
                }),
                coloured(),
                {{}, {"t*zeta", "t * zeta", "torque x misalignment", "torque * misalignment", "torque·misalignment",
+                     "torque times misalignment",
                      "along the moment"}, false, 1}});
 
   // Outside the library, by sign: a constant 8 kN·m along the misalignment direction whose sign

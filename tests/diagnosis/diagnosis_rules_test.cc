@@ -1,0 +1,164 @@
+// The rules of issue 8's diagnosis, one test each: refine what the model has, widen a bound the
+// truth exceeds, propose a formula, drop a claim that no longer earns its place, and give one
+// "indistinguishable" verdict whatever the fold cut.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/coupling_geometry.h"
+#include "core/diagnosis/claim_review.h"
+#include "core/diagnosis/formula_search.h"
+#include "core/diagnosis/model_residuals.h"
+#include "core/synthesis/load_sequence.h"
+#include "core/synthesis/synthesize.h"
+#include "parallel/thread_parallel_for.h"
+#include "tests/core/nrel_couplings.h"
+#include "tests/diagnosis/hidden_effect_scenarios.h"
+
+namespace gc {
+namespace {
+
+using testing::deg;
+
+constexpr double kNoiseNm = 2000.0;
+
+std::vector<MeasurementSample> sweeps(const CouplingDefinition& coupling) {
+  LoadSequenceOptions options;
+  options.samples = 960;
+  options.sample_period_s = 0.1;
+  options.jam_angle_rad = CouplingGeometry(coupling).jam_angle().angle_rad;
+  options.direction_rad = deg(10);
+  std::vector<MeasurementSample> samples = load_sequence(options);
+  options.direction_rad = deg(100);
+  for (MeasurementSample s : load_sequence(options)) {
+    s.time_s += options.samples * options.sample_period_s;
+    samples.push_back(s);
+  }
+  return samples;
+}
+
+std::vector<RecordedSample> record(const CouplingModel& truth, const std::vector<MeasurementSample>& inputs,
+                                   std::uint64_t seed) {
+  return synthesize(truth, inputs, {kNoiseNm, seed}).samples;
+}
+
+// Issue 8, class 1: the model has friction { mu0 } and the truth's friction rises at low torque
+// and with misalignment. The refinement frees mu_low_torque and mu_misalignment.
+TEST(DiagnosisRules, RefinesAnEffectTheModelHasWithWrongParameters) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const CouplingModel truth = model.with_effect(
+      make_effect("friction", {{"mu0", 0.1}, {"mu_low_torque", 0.02}, {"mu_misalignment", 0.08}}));
+  const Diagnosis d = testing::diagnose_on_threads(model, record(truth, sweeps(testing::nrel_upwind()), 21));
+  SCOPED_TRACE(d.summary);
+  ASSERT_FALSE(d.rounds.empty());
+  EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::effect_found);
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  EXPECT_EQ(d.rounds[0].chosen().kind, CandidateKind::refinement);
+  EXPECT_EQ(d.rounds[0].claimed->info->name, "friction");
+  EXPECT_NEAR(d.rounds[0].claimed->effect->value("mu_misalignment"), 0.08, 0.01);
+  EXPECT_NEAR(d.rounds[0].claimed->effect->value("mu_low_torque"), 0.02, 0.004);
+  EXPECT_EQ(d.summary.rfind("Round 1 (model: friction, pressure_angle_rotation, self_weight): refine friction", 0), 0u);
+  ASSERT_EQ(d.added.size(), 1u);
+  EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
+}
+
+// Issue 8, class 3: an assembly misalignment of 0.0058 rad on the downwind coupling, 19 % of its
+// jam angle and beyond the old fixed bound of 0.005 rad, is fitted whole, not clipped.
+TEST(DiagnosisRules, FitsAnAssemblyMisalignmentBeyondTheOldFixedBound) {
+  const CouplingModel model(testing::nrel_downwind(), testing::paper_effects());
+  const CouplingModel truth =
+      model.with_effect(make_effect("assembly_misalignment", {{"zeta0_rad", 0.0058}, {"beta0_rad", 1.0}}));
+  const Diagnosis d = testing::diagnose_on_threads(model, record(truth, sweeps(testing::nrel_downwind()), 23));
+  SCOPED_TRACE(d.summary);
+  ASSERT_FALSE(d.rounds.empty());
+  EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::effect_found);
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  EXPECT_EQ(d.rounds[0].claimed->info->name, "assembly_misalignment");
+  EXPECT_NEAR(d.rounds[0].claimed->effect->value("zeta0_rad"), 0.0058, 0.0002);
+  EXPECT_TRUE(d.rounds[0].claimed->plausible());
+  // Nothing spurious absorbs a remainder.
+  EXPECT_EQ(d.added.size(), 1u);
+}
+
+// A truth far beyond the plausible range (an assembly misalignment of half the jam angle): the
+// search box widens to the physical bound and the fit reaches it, and the verdict says "partly".
+TEST(DiagnosisRules, WidensTheSearchBeyondThePlausibleRangeAndSaysSo) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const double jam = model.geometry().jam_angle().angle_rad;
+  const CouplingModel truth =
+      model.with_effect(make_effect("assembly_misalignment", {{"zeta0_rad", 0.45 * jam}, {"beta0_rad", 0.5}}));
+  std::vector<MeasurementSample> inputs = sweeps(testing::nrel_upwind());
+  std::erase_if(inputs, [&](const MeasurementSample& s) { return s.misalignment_rad > 0.4 * jam; });  // no jam
+  const Diagnosis d = testing::diagnose_on_threads(model, record(truth, inputs, 29));
+  SCOPED_TRACE(d.summary);
+  ASSERT_FALSE(d.rounds.empty());
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  if (d.rounds[0].outcome != RoundOutcome::formula_proposed) {
+    EXPECT_EQ(d.rounds[0].claimed->info->name, "assembly_misalignment");
+    EXPECT_NEAR(d.rounds[0].claimed->effect->value("zeta0_rad"), 0.45 * jam, 0.05 * jam);
+    EXPECT_FALSE(d.rounds[0].claimed->plausible());
+    EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::partly_explained);
+    EXPECT_NE(d.summary.find("outside its plausible range"), std::string::npos);
+  } else {
+    EXPECT_NE(d.summary.find("assembly_misalignment"), std::string::npos) << "names the implausible effect it beat";
+  }
+}
+
+// The sparse regression finds the formula and its coefficient within its uncertainty.
+TEST(DiagnosisRules, TheFormulaSearchFindsASpeedDragAndNothingInNoise) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<MeasurementSample> inputs = sweeps(testing::nrel_upwind());
+  for (MeasurementSample& s : inputs) s.speed_rpm = 12.0 + 2.0 * std::sin(2.0 * M_PI * s.time_s / 9.0);
+  std::vector<RecordedSample> observations = record(model, inputs, 31);
+  const std::vector<std::size_t> rows = all_rows(observations.size());
+  const Folds folds = blocked_folds(rows.size(), 5, 20);
+  const Eigen::MatrixX2d noise_only = model_residuals(model, observations, rows, serial_for()).residual;
+  const auto none = formula_candidate(observations, rows, noise_only, folds, {});
+  EXPECT_TRUE(!none || none->against_base.t < 3.5) << "a formula in pure noise";
+
+  for (RecordedSample& o : observations) o.measured.z_nm += 2500.0 * (*o.input.speed_rpm - 12.0);
+  const Eigen::MatrixX2d residual = model_residuals(model, observations, rows, serial_for()).residual;
+  const auto found = formula_candidate(observations, rows, residual, folds, {});
+  ASSERT_TRUE(found.has_value());
+  EXPECT_GT(found->against_base.t, 10.0);
+  EXPECT_LT(found->held_out_rmse_nm, 1.05 * kNoiseNm);
+  const ParameterEstimate* speed = nullptr;
+  for (const ParameterEstimate& p : found->fit->parameters) if (p.name == "speed_on_z") speed = &p;
+  ASSERT_NE(speed, nullptr);
+  ASSERT_TRUE(speed->standard_error.has_value());
+  EXPECT_NEAR(speed->value, 2500.0, 4.0 * *speed->standard_error + 25.0);
+  EXPECT_EQ(speed->unit, "N·m/rpm");
+}
+
+// An earlier claim that the model no longer needs is dropped; one it needs is kept.
+TEST(DiagnosisRules, DropsAnIdleClaimAndKeepsAUsefulOne) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const CouplingModel truth = model.with_effect(make_effect("hysteresis", {{"lag_rad", 0.0008}}));
+  const std::vector<RecordedSample> observations = record(truth, sweeps(testing::nrel_upwind()), 37);
+  const CouplingModel current = truth.with_effect(make_effect("channel_gain_offset", {{"offset_y_nm", 20.0}}));
+  const std::vector<std::size_t> rows = all_rows(observations.size());
+  const Folds folds = blocked_folds(rows.size(), 5, 20);
+  const Eigen::MatrixX2d held_out = model_residuals(current, observations, rows, serial_for()).residual;
+  EXPECT_EQ(redundant_claims(current, {"hysteresis", "channel_gain_offset"}, held_out, observations, rows, folds,
+                             serial_for(), 2.0),
+            std::vector<std::string>{"channel_gain_offset"});
+}
+
+// Issue 8, class 5: self-weight and a channel offset are the same on one tilt; the verdict is
+// "indistinguishable" for every fold cut, not for one cut in four.
+TEST(DiagnosisRules, GivesOneIndistinguishableVerdictAcrossFiveFoldSeeds) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects("self_weight"));
+  const CouplingModel truth = model.with_effect(make_effect("self_weight", {{"weight_scale", 1.3}}));
+  const std::vector<RecordedSample> observations = record(truth, sweeps(testing::nrel_upwind()), 41);
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    DiagnosisSettings settings;
+    settings.cross_validation.fold_seed = seed;
+    const Diagnosis d = diagnose(model, observations, thread_parallel_for(2), settings);
+    SCOPED_TRACE("fold seed " + std::to_string(seed) + ": " + d.summary);
+    ASSERT_FALSE(d.rounds.empty());
+    EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::indistinguishable);
+  }
+}
+
+}  // namespace
+}  // namespace gc

@@ -1,0 +1,96 @@
+// The expression effect (core/effects/expression.h): a formula of catalogue terms in a model,
+// checked like any effect's parameters.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/coupling_model.h"
+#include "core/effects/effect_registry.h"
+#include "core/effects/expression.h"
+#include "core/effects/expression_terms.h"
+#include "core/model_error.h"
+#include "tests/core/nrel_couplings.h"
+
+namespace gc {
+namespace {
+
+std::string field_of(const ParameterValues& values) {
+  try {
+    make_effect(kExpressionEffect, values);
+  } catch (const InvalidInput& e) {
+    return e.field() + ": " + e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(ExpressionEffect, RefusesUnknownTermsOutOfBoundCoefficientsAndNothing) {
+  EXPECT_EQ(field_of({}).rfind("effects.expression:", 0), 0u) << field_of({});
+  const std::string unknown = field_of({{"speed_on_w", 1.0}});
+  EXPECT_EQ(unknown.rfind("effects.expression.speed_on_w:", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("speed_on_z"), std::string::npos) << "lists the terms: " << unknown;
+  const std::string big = field_of({{"model_z_on_y", 3.0}});  // a cross-talk of 300 %
+  EXPECT_EQ(big.rfind("effects.expression.model_z_on_y:", 0), 0u) << big;
+  EXPECT_NE(big.find("3"), std::string::npos);
+  EXPECT_EQ(field_of({{"constant_on_y", std::nan("")}}).rfind("effects.expression.constant_on_y", 0), 0u);
+}
+
+TEST(ExpressionEffect, AddsItsTermsToTheModelsMomentsAfterEveryOtherEffect) {
+  const CouplingModel plain(testing::nrel_upwind(), {make_effect("friction")});
+  const auto formula = make_expression({{"travel_sign_along_misalignment", 4000.0},
+                                        {"model_z_on_y", 0.05},
+                                        {"speed_on_z", 300.0}});
+  // The formula is added before another effect, and still acts last.
+  const CouplingModel with = plain.with_effect(formula).with_effect(make_effect("channel_gain_offset", {{"offset_y_nm", 100.0}}));
+  ASSERT_EQ(with.effects().back()->name(), "expression");
+  MeasurementSample s;
+  s.torque_nm = 1.2e6;
+  s.misalignment_rad = 0.004;
+  s.direction_rad = 0.3;
+  s.loading_direction = -1;
+  s.speed_rpm = 14.0;
+  const SensorMoments m = plain.predict(s).moments;
+  const SensorMoments f = with.predict(s).moments;
+  EXPECT_NEAR(f.y_nm, m.y_nm + 100.0 + 0.05 * m.z_nm - 4000.0 * std::cos(0.3), 1e-6);
+  EXPECT_NEAR(f.z_nm, m.z_nm + 300.0 * 14.0 - 4000.0 * std::sin(0.3), 1e-6);
+  // A term that reads an input the sample lacks refuses it by name.
+  s.speed_rpm.reset();
+  try {
+    with.predict(s);
+    ADD_FAILURE() << "predicted without a speed";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "effects.expression.speed_on_z");
+  }
+}
+
+TEST(ExpressionEffect, OneTermSetIsOneInfoWhateverTheOrder) {
+  const EffectInfo& a = expression_info({"speed_on_z", "constant_on_y"});
+  const EffectInfo& b = expression_info({"constant_on_y", "speed_on_z"});
+  EXPECT_EQ(&a, &b);
+  ASSERT_EQ(a.parameters.size(), 2u);
+  EXPECT_EQ(a.parameters[0].name, "constant_on_y");
+  EXPECT_EQ(a.parameters[1].unit, "N·m/rpm");
+}
+
+TEST(ExpressionTerms, EveryTermHasAUnitABoundAndMechanisms) {
+  for (const ExpressionTerm& t : expression_terms()) {
+    EXPECT_FALSE(t.coefficient_unit.empty()) << t.name;
+    EXPECT_GT(t.bound, 0.0) << t.name;
+    EXPECT_GT(t.mechanisms.size(), 40u) << t.name;
+    EXPECT_EQ(find_expression_term(t.name), &t);
+  }
+  // The revolution terms need the rotation phase; the frame terms only the basic inputs.
+  MeasurementSample s;
+  s.direction_rad = 1.0;
+  EXPECT_FALSE(find_expression_term("revolution_sin_on_y")->value(s, {1.0, 2.0}).has_value());
+  s.rotation_phase_rad = M_PI / 2;
+  EXPECT_NEAR(find_expression_term("revolution_sin_on_y")->value(s, {1.0, 2.0})->x(), 1.0, 1e-12);
+  const Eigen::Vector2d normal = *find_expression_term("constant_normal_to_moment")->value(s, {3.0, 4.0});
+  EXPECT_NEAR(normal.x(), -0.8, 1e-12);
+  EXPECT_NEAR(normal.y(), 0.6, 1e-12);
+  const Eigen::Vector2d scaled = *find_expression_term("constant_times_moment")->value(s, {3.0, 4.0});
+  EXPECT_NEAR(scaled.x(), 3.0, 1e-12);
+  EXPECT_NEAR(scaled.y(), 4.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace gc

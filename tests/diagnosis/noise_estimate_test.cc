@@ -1,0 +1,77 @@
+// The noise of a residual as test cells have it (core/diagnosis/noise_estimate.h): sigma and the
+// lag-1 autocorrelation from the variogram fit, and spikes found by the running median.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/diagnosis/noise_estimate.h"
+#include "core/synthesis/synthesize.h"
+
+namespace gc {
+namespace {
+
+constexpr int kRows = 4000;
+
+/// AR(1) with marginal standard deviation sigma on both channels (phi 0: white).
+Eigen::MatrixX2d ar1(double sigma, double phi, std::uint64_t seed) {
+  Eigen::MatrixX2d r(kRows, 2);
+  const double innovation = sigma * std::sqrt(1.0 - phi * phi);
+  for (int c = 0; c < 2; ++c) {
+    double x = sigma * standard_normal(seed, 0, static_cast<std::uint64_t>(c));
+    for (int i = 0; i < kRows; ++i) {
+      if (i > 0) x = phi * x + innovation * standard_normal(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(c));
+      r(i, c) = x;
+    }
+  }
+  return r;
+}
+
+TEST(NoiseEstimate, FindsSigmaOfWhiteNoiseAndNoCorrelation) {
+  const NoiseEstimate n = estimate_noise(ar1(2000.0, 0.0, 3));
+  EXPECT_NEAR(n.sigma_nm(0), 2000.0, 100.0);
+  EXPECT_NEAR(n.sigma_nm(1), 2000.0, 100.0);
+  EXPECT_LT(n.phi.maxCoeff(), 0.1);
+  EXPECT_LT(n.variance_inflation(), 1.25);
+}
+
+// Successive differences alone would see sigma sqrt(1 - phi) = 0.45 sigma here: the fit of the
+// variogram over ten lags sees the whole marginal sigma and the correlation.
+TEST(NoiseEstimate, FindsSigmaAndCorrelationOfColouredNoise) {
+  const NoiseEstimate n = estimate_noise(ar1(2000.0, 0.8, 5));
+  EXPECT_NEAR(n.sigma_nm(0), 2000.0, 250.0);
+  EXPECT_NEAR(n.sigma_nm(1), 2000.0, 250.0);
+  EXPECT_NEAR(n.phi(0), 0.8, 0.08);
+  EXPECT_NEAR(n.phi(1), 0.8, 0.08);
+  EXPECT_GT(n.variance_inflation(), 6.0);
+}
+
+// A slow structure (a ramp and a slow sine of 20 kN·m) adds b h + c h^2 to the variogram, not
+// to sigma.
+TEST(NoiseEstimate, IsNotInflatedBySlowStructure) {
+  Eigen::MatrixX2d r = ar1(2000.0, 0.0, 7);
+  for (int i = 0; i < kRows; ++i) {
+    r(i, 0) += 10.0 * i;
+    r(i, 1) += 20000.0 * std::sin(2.0 * M_PI * i / 1000.0);
+  }
+  const NoiseEstimate n = estimate_noise(r);
+  EXPECT_NEAR(n.sigma_nm(0), 2000.0, 150.0);
+  EXPECT_NEAR(n.sigma_nm(1), 2000.0, 150.0);
+}
+
+TEST(NoiseEstimate, FlagsSpikesButNotStepsOrColouredNoise) {
+  Eigen::MatrixX2d r = ar1(2000.0, 0.8, 11);
+  // A step of 16 kN·m every 200 rows (an effect that flips with the direction of travel).
+  for (int i = 0; i < kRows; ++i) r(i, 0) += (i / 200) % 2 ? 8000.0 : -8000.0;
+  EXPECT_TRUE(outlier_positions(r).empty());
+  // 1 % spikes at 10 sigma.
+  std::vector<std::size_t> spikes;
+  for (int i = 50; i < kRows; i += 100) {
+    r(i, i % 200 < 100 ? 0 : 1) += (i % 300 < 150 ? 1.0 : -1.0) * 20000.0;
+    spikes.push_back(static_cast<std::size_t>(i));
+  }
+  const std::vector<std::size_t> found = outlier_positions(r);
+  EXPECT_EQ(found, spikes);
+}
+
+}  // namespace
+}  // namespace gc
