@@ -39,6 +39,8 @@ v1::InputSignatureRecord to_message(const InputSignature& s) {
   r.set_systematic(s.systematic);
   r.set_slope_y(s.slope_y);
   r.set_slope_z(s.slope_z);
+  r.set_marginal_share(s.marginal_share);
+  for (const std::string& c : s.confounded_with) r.add_confounded_with(c);
   for (const SignatureBin& b : s.bins) {
     v1::SignatureBinRecord& bin = *r.add_bins();
     bin.set_lower(b.lower);

@@ -172,7 +172,10 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   const double all_ms = pooled_mean_square(residual);
   round.noise_rmse_nm = std::sqrt(noise_ms);
   round.rmse_nm = std::sqrt(all_ms);
-  round.signature = residual_signature(observations, rows, residual, round.noise.variance_inflation());
+  // On at most the refit rows, evenly spaced: the partial-dependence backfits are per input.
+  const std::vector<std::size_t> signature_rows = evenly_spaced(rows, settings.refit_rows);
+  round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
+                                       round.noise.variance_inflation());
   round.systematic = is_systematic(all_ms, noise_ms, rows.size(), round.noise, round.signature);
   const Eigen::MatrixX2d base = select_rows(residual, rows, search);
   const double base_ms = pooled_mean_square(base);

@@ -132,13 +132,31 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
                                      const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
                                      double variance_inflation) {
   const TermDesign all = term_design(observations, rows, residual);
-  const EffectInfo& info = expression_info(terms);
-  Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(info.parameters.size()));
-  for (std::size_t j = 0; j < info.parameters.size(); ++j) {
-    const auto at = std::find(all.terms.begin(), all.terms.end(), info.parameters[j].name);
-    if (at == all.terms.end()) return std::nullopt;  // not available on these rows
-    x.col(static_cast<Eigen::Index>(j)) = all.columns.col(at - all.terms.begin());
+  const auto design_for = [&all](const EffectInfo& info) -> std::optional<Eigen::MatrixXd> {
+    Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(info.parameters.size()));
+    for (std::size_t j = 0; j < info.parameters.size(); ++j) {
+      const auto at = std::find(all.terms.begin(), all.terms.end(), info.parameters[j].name);
+      if (at == all.terms.end()) return std::nullopt;  // not available on these rows
+      x.col(static_cast<Eigen::Index>(j)) = all.columns.col(at - all.terms.begin());
+    }
+    return x;
+  };
+  const EffectInfo* info_of = &expression_info(terms);
+  std::optional<Eigen::MatrixXd> design = design_for(*info_of);
+  if (!design) return std::nullopt;
+  // A term that is a sum of others on this recording (M itself is the two channel gains together)
+  // says nothing they do not: keep the independent ones, in the pivoting order of the QR.
+  const auto pivoted = design->colPivHouseholderQr();
+  if (pivoted.rank() < design->cols()) {
+    std::vector<std::string> independent;
+    for (Eigen::Index k = 0; k < pivoted.rank(); ++k) {
+      independent.push_back(info_of->parameters[static_cast<std::size_t>(pivoted.colsPermutation().indices()(k))].name);
+    }
+    info_of = &expression_info(independent);
+    design = design_for(*info_of);
   }
+  const EffectInfo& info = *info_of;
+  const Eigen::MatrixXd& x = *design;
   const Eigen::VectorXd y = stacked(residual);
   const auto qr = x.colPivHouseholderQr();
   const Eigen::VectorXd c = qr.solve(y);

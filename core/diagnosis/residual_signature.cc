@@ -81,45 +81,98 @@ double chi_square_per_dof(int dof, double z) {
   return std::pow(1.0 - a + z * std::sqrt(a), 3.0);
 }
 
-InputSignature signature_for(const InputAxis& axis, const Eigen::VectorXd& x, const Eigen::MatrixX2d& r,
-                             double inflation) {
-  InputSignature s{axis.name, axis.unit, {}, 0.0, 0.0, false, 0.0, 0.0};
+/// One input of the signature: its values, bins and the bin of every row.
+struct BinnedInput {
+  const InputAxis* axis;
+  Eigen::VectorXd x;
+  std::vector<int> bin;
   std::vector<std::pair<double, double>> edges;
-  const std::vector<int> bin = assign_bins(x, axis.binning, edges);
-  s.bins.resize(edges.size());
-  for (std::size_t b = 0; b < edges.size(); ++b) { s.bins[b].lower = edges[b].first; s.bins[b].upper = edges[b].second; }
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    SignatureBin& b = s.bins[static_cast<std::size_t>(bin[static_cast<std::size_t>(i)])];
-    ++b.count;
-    b.mean_y_nm += r(i, 0);
-    b.mean_z_nm += r(i, 1);
+  std::vector<std::size_t> count;
+  Eigen::MatrixX2d term;  ///< f_j per bin [N·m]
+};
+
+BinnedInput bin_input(const InputAxis& axis, Eigen::VectorXd x) {
+  BinnedInput b{&axis, std::move(x), {}, {}, {}, {}};
+  b.bin = assign_bins(b.x, axis.binning, b.edges);
+  b.count.assign(b.edges.size(), 0);
+  for (int k : b.bin) ++b.count[static_cast<std::size_t>(k)];
+  b.term = Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(b.edges.size()), 2);
+  return b;
+}
+
+/// Bin means of `r` (count-weighted centred).
+Eigen::MatrixX2d bin_means(const BinnedInput& b, const Eigen::MatrixX2d& r) {
+  Eigen::MatrixX2d sum = Eigen::MatrixX2d::Zero(b.term.rows(), 2);
+  for (Eigen::Index i = 0; i < r.rows(); ++i) sum.row(b.bin[static_cast<std::size_t>(i)]) += r.row(i);
+  Eigen::Vector2d weighted = Eigen::Vector2d::Zero();
+  for (Eigen::Index k = 0; k < sum.rows(); ++k) {
+    if (b.count[static_cast<std::size_t>(k)] > 0) sum.row(k) /= static_cast<double>(b.count[static_cast<std::size_t>(k)]);
+    weighted += static_cast<double>(b.count[static_cast<std::size_t>(k)]) * sum.row(k).transpose();
   }
-  std::erase_if(s.bins, [](const SignatureBin& b) { return b.count == 0; });
-  const Eigen::Vector2d mean = r.colwise().mean();
+  const Eigen::Vector2d mean = weighted / static_cast<double>(r.rows());
+  for (Eigen::Index k = 0; k < sum.rows(); ++k) if (b.count[static_cast<std::size_t>(k)] > 0) sum.row(k) -= mean.transpose();
+  return sum;
+}
+
+Eigen::MatrixX2d fitted(const BinnedInput& b, Eigen::Index rows) {
+  Eigen::MatrixX2d f(rows, 2);
+  for (Eigen::Index i = 0; i < rows; ++i) f.row(i) = b.term.row(b.bin[static_cast<std::size_t>(i)]);
+  return f;
+}
+
+/// Backfitting of the additive model: each input's term from the residual less the others'.
+Eigen::MatrixX2d backfit(std::vector<BinnedInput>& inputs, const Eigen::MatrixX2d& centred) {
+  Eigen::MatrixX2d total = Eigen::MatrixX2d::Zero(centred.rows(), 2);
+  for (int sweep = 0; sweep < 30; ++sweep) {
+    double change = 0.0;
+    for (BinnedInput& b : inputs) {
+      const Eigen::MatrixX2d own = fitted(b, centred.rows());
+      const Eigen::MatrixX2d next = bin_means(b, centred - (total - own));
+      change = std::max(change, (next - b.term).cwiseAbs().maxCoeff());
+      b.term = next;
+      total += fitted(b, centred.rows()) - own;
+    }
+    if (change <= 1e-9 * std::max(1.0, centred.cwiseAbs().maxCoeff())) break;
+  }
+  return total;
+}
+
+double correlation(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const Eigen::VectorXd ca = a.array() - a.mean(), cb = b.array() - b.mean();
+  const double d = ca.norm() * cb.norm();
+  return d > 0.0 ? ca.dot(cb) / d : 0.0;
+}
+
+/// `without`: the residual of the additive model fitted without this input; its extra sum of
+/// squares over `leftover` is what this input adds given the others (an input that only moves with
+/// another adds nothing, however its backfitted term splits with the other's).
+InputSignature signature_for(const BinnedInput& b, const Eigen::MatrixX2d& centred, const Eigen::MatrixX2d& leftover,
+                             const Eigen::MatrixX2d& without, int leftover_dof, double inflation) {
+  InputSignature s{b.axis->name, b.axis->unit, {}, 0.0, 0.0, 0.0, false, 0.0, 0.0, {}};
+  const Eigen::MatrixX2d marginal = bin_means(b, centred);
   Eigen::Vector2d between = Eigen::Vector2d::Zero();
-  for (SignatureBin& b : s.bins) {
-    b.mean_y_nm /= static_cast<double>(b.count);
-    b.mean_z_nm /= static_cast<double>(b.count);
-    between(0) += b.count * std::pow(b.mean_y_nm - mean(0), 2);
-    between(1) += b.count * std::pow(b.mean_z_nm - mean(1), 2);
+  double marginal_between = 0.0;
+  for (std::size_t k = 0; k < b.edges.size(); ++k) {
+    if (b.count[k] == 0) continue;
+    const Eigen::Index row = static_cast<Eigen::Index>(k);
+    s.bins.push_back({b.edges[k].first, b.edges[k].second, b.count[k], b.term(row, 0), b.term(row, 1)});
+    between += static_cast<double>(b.count[k]) * b.term.row(row).transpose().cwiseAbs2();
+    marginal_between += static_cast<double>(b.count[k]) * marginal.row(row).squaredNorm();
   }
-  const double total = (r.rowwise() - mean.transpose()).squaredNorm();
-  s.explained_share = total > 0.0 ? between.sum() / total : 0.0;
-  // One-way analysis of variance per channel: the bin means' scatter against the scatter
-  // within the bins, so that a residual driven by another input (spread evenly over these
-  // bins) does not make this input look systematic.
+  const double total = centred.squaredNorm();
+  s.explained_share = total > 0.0 ? std::min(1.0, between.sum() / total) : 0.0;
+  s.marginal_share = total > 0.0 ? marginal_between / total : 0.0;
   const int dof = static_cast<int>(s.bins.size()) - 1;
-  const double within_dof = static_cast<double>(x.size()) - static_cast<double>(s.bins.size());
-  if (dof >= 1 && within_dof >= 1.0) {
-    const Eigen::Vector2d total_per_channel = (r.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
-    const Eigen::Array2d within = (total_per_channel - between).array().max(1e-300);
-    s.dispersion = ((between.array() / dof) / (within / within_dof)).maxCoeff() / std::max(1.0, inflation);
+  if (dof >= 1 && leftover_dof >= 1) {
+    const Eigen::Array2d within = (leftover.colwise().squaredNorm().transpose().array() / leftover_dof).max(1e-300);
+    const Eigen::Array2d extra = (without.colwise().squaredNorm() - leftover.colwise().squaredNorm()).transpose().array().max(0.0);
+    s.dispersion = ((extra / dof) / within).maxCoeff() / std::max(1.0, inflation);
     // z = 3.7: a one-sided 1e-4 level, strict because many inputs and two channels are tested.
     s.systematic = s.dispersion > chi_square_per_dof(dof, 3.7);
   }
-  const Eigen::VectorXd centred = x.array() - x.mean();
-  const double sxx = centred.squaredNorm();
-  if (sxx > 0.0) { s.slope_y = centred.dot(r.col(0)) / sxx; s.slope_z = centred.dot(r.col(1)) / sxx; }
+  const Eigen::VectorXd x = b.x.array() - b.x.mean();
+  const double sxx = x.squaredNorm();
+  if (sxx > 0.0) { s.slope_y = x.dot(centred.col(0)) / sxx; s.slope_z = x.dot(centred.col(1)) / sxx; }
   return s;
 }
 
@@ -134,7 +187,9 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
                                      const Eigen::MatrixX2d& residual, double variance_inflation) {
   ResidualSignature out;
   if (rows.size() < 2) return out;
-  for (const InputAxis& axis : axes()) {
+  const std::vector<InputAxis> all = axes();
+  std::vector<BinnedInput> inputs;
+  for (const InputAxis& axis : all) {
     Eigen::VectorXd x(static_cast<Eigen::Index>(rows.size()));
     bool complete = true;
     for (std::size_t k = 0; k < rows.size() && complete; ++k) {
@@ -142,7 +197,27 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
       complete = v.has_value();
       if (complete) x(static_cast<Eigen::Index>(k)) = *v;
     }
-    if (complete) out.inputs.push_back(signature_for(axis, x, residual, variance_inflation));
+    if (complete) inputs.push_back(bin_input(axis, std::move(x)));
+  }
+  const Eigen::MatrixX2d centred = residual.rowwise() - residual.colwise().mean();
+  const Eigen::MatrixX2d leftover = centred - backfit(inputs, centred);
+  int used = 1;
+  for (const BinnedInput& b : inputs) used += static_cast<int>(std::count_if(b.count.begin(), b.count.end(), [](auto c) { return c > 0; })) - 1;
+  const int leftover_dof = static_cast<int>(rows.size()) - used;
+  for (std::size_t j = 0; j < inputs.size(); ++j) {
+    const BinnedInput& b = inputs[j];
+    std::vector<BinnedInput> others;
+    for (std::size_t k = 0; k < inputs.size(); ++k) if (k != j) others.push_back(inputs[k]);
+    const Eigen::MatrixX2d without = centred - backfit(others, centred);
+    InputSignature s = signature_for(b, centred, leftover, without, leftover_dof, variance_inflation);
+    if (b.axis->binning == InputAxis::Binning::quantile) {
+      for (const BinnedInput& other : inputs) {
+        if (&other != &b && other.axis->binning == InputAxis::Binning::quantile && std::abs(correlation(b.x, other.x)) >= 0.9) {
+          s.confounded_with.push_back(other.axis->name);
+        }
+      }
+    }
+    out.inputs.push_back(std::move(s));
   }
   std::stable_sort(out.inputs.begin(), out.inputs.end(),
                    [](const InputSignature& a, const InputSignature& b) { return a.explained_share > b.explained_share; });

@@ -66,10 +66,14 @@ std::string signature_text(const ResidualSignature& signature) {
       low_y = std::min(low_y, b.mean_y_nm); high_y = std::max(high_y, b.mean_y_nm);
       low_z = std::min(low_z, b.mean_z_nm); high_z = std::max(high_z, b.mean_z_nm);
     }
-    text << (shown++ ? "; then " : "") << s.input << " (bin means carry " << percent(s.explained_share)
-         << " of the residual; Msy' bin means " << short_number(low_y) << " to " << short_number(high_y)
+    text << (shown++ ? "; then " : "") << s.input << " (given the other inputs, its bin means carry "
+         << percent(s.explained_share) << " of the residual; Msy' " << short_number(low_y) << " to " << short_number(high_y)
          << " N·m, Msz' " << short_number(low_z) << " to " << short_number(high_z) << " N·m; trend "
-         << short_number(s.slope_y) << " and " << short_number(s.slope_z) << " N·m per " << s.unit << ")";
+         << short_number(s.slope_y) << " and " << short_number(s.slope_z) << " N·m per " << s.unit;
+    for (const std::string& other : s.confounded_with) {
+      text << "; it moves with " << other << " on this recording, which cannot tell the two apart";
+    }
+    text << ")";
   }
   return shown ? "systematic against " + text.str() : "no single input shows it";
 }

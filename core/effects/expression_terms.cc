@@ -26,6 +26,10 @@ const Scalar kScalars[] = {
      "a moment in proportion to torque: torque cross-talk into the bending bridge, or a torque-dependent "
      "offset of the shaft",
      [](const MeasurementSample& s) { return std::optional(s.torque_nm); }},
+    {"inverse_torque", "1/T", "1/(N·m)", 1e13,
+     "a moment that grows as torque falls: friction rising at low torque (eq 37 with mu ~ 1/T), or the hub "
+     "resting eccentric on the sleeve below the restoring torque (eqs 49-53)",
+     [](const MeasurementSample& s) { return s.torque_nm != 0.0 ? std::optional(1.0 / s.torque_nm) : std::nullopt; }},
     {"misalignment", "zeta", "rad", 1e9,
      "a moment in proportion to misalignment: a misalignment the sensors mis-scale (scale error of the "
      "displacement sensors), or a coupling stiffer or softer in bending than modelled (compliance)",
@@ -85,11 +89,15 @@ const Frame kFrames[] = {
      "in proportion to the model's own moment, i.e. the moment scaled: a misalignment scale error (the coupling "
      "sees a share more or less misalignment than measured), a friction coefficient or mesh stiffness different "
      "from the model's, or a gain error of both bridges"},
+    {"times_moment_turned", "M turned by +90 deg",
+     "in proportion to the model's own moment turned by 90 deg, i.e. the moment rotated by a small angle: a "
+     "pressure-angle shift of the moment direction (eqs 44-45) that differs from the model's, or bridges whose "
+     "frame is rotated against the model's"},
 };
 
 constexpr int kScalarCount = static_cast<int>(std::size(kScalars));
 constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
-constexpr int kTimesMoment = kFrameCount - 1;
+constexpr int kTimesMoment = kFrameCount - 2;  ///< this and the next scale with the model's moment
 // Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
 constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
 
@@ -104,7 +112,8 @@ Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMom
     case 3: return {-along.y(), along.x()};
     case 4: return {std::cos(s.direction_rad), std::sin(s.direction_rad)};
     case 5: return {-std::sin(s.direction_rad), std::cos(s.direction_rad)};
-    default: return moment;  // times_moment: not a unit vector, the coefficient is per unit of M
+    case 6: return moment;  // not a unit vector: the coefficient is per unit of M
+    default: return {-moment.y(), moment.x()};
   }
 }
 
@@ -115,7 +124,7 @@ std::vector<ExpressionTerm> make_terms() {
       const Scalar& s = kScalars[i];
       // Along a unit direction the coefficient is N·m per unit of the scalar; times the model's
       // moment it is a share of that moment per unit of the scalar (bounded for moments to 1e7 N·m).
-      const bool scaled = f == kTimesMoment;
+      const bool scaled = f >= kTimesMoment;
       const std::string unit = scaled ? (*s.unit ? std::string("1/") + s.unit : std::string("-"))
                                       : (*s.unit ? std::string("N·m/") + s.unit : std::string("N·m"));
       terms.push_back({std::string(s.name) + "_" + kFrames[f].name, std::string(s.formula) + " " + kFrames[f].formula,

@@ -3,6 +3,7 @@
 
 #include "core/coupling_model.h"
 #include "core/effects/effect_registry.h"
+#include "core/effects/expression.h"
 #include "core/induced_moments.h"
 #include "core/model_error.h"
 #include "core/restoring_torque.h"
@@ -51,6 +52,8 @@ TEST(Effects, EveryEffectAtItsNeutralValuesChangesNothing) {
   for (const EffectRegistration& r : effect_registry()) {
     ParameterValues neutral;
     for (const ParameterSpec& p : r.info->parameters) neutral[p.name] = p.neutral;
+    // The formula's parameters are the terms it is given: two of them, at zero.
+    if (r.info->name == kExpressionEffect) neutral = {{"constant_on_y", 0.0}, {"travel_sign_along_moment", 0.0}};
     const auto effect = r.make(neutral);
     EXPECT_TRUE(effect->neutral()) << r.info->name;
     const CouplingModel with = base.with_effect(effect);
@@ -182,6 +185,15 @@ TEST(Effects, HysteresisLagsTheMisalignmentInTheLoadingDirection) {
   const SensorMoments lagged = predict(paper_model(), sample(1.5e6, 0.42, 0, 0));
   EXPECT_NEAR(falling.y_nm, lagged.y_nm, 1e-6);
   EXPECT_NEAR(falling.z_nm, lagged.z_nm, 1e-6);
+}
+
+TEST(Effects, MisalignmentScaleShowsTheCouplingMoreMisalignmentThanMeasured) {
+  const CouplingModel with = paper_model().with_effect(make_effect("misalignment_scale", {{"scale_error", 0.15}}));
+  EXPECT_NEAR(with.predict(sample(1.2e6, 0.4)).state.point.misalignment_rad, deg(0.46), 1e-12);
+  const SensorMoments scaled = predict(with, sample(1.2e6, 0.4));
+  const SensorMoments seen = predict(paper_model(), sample(1.2e6, 0.46));
+  EXPECT_NEAR(scaled.y_nm, seen.y_nm, 1e-6);
+  EXPECT_NEAR(scaled.z_nm, seen.z_nm, 1e-6);
 }
 
 TEST(Effects, BadConfigurationsNameTheField) {

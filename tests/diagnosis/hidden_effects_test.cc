@@ -220,7 +220,7 @@ TEST(Diagnosis, FindsAUserWrittenEffectRegisteredInItsLibrary) {
   EXPECT_NEAR(d.rounds[0].claimed->effect->value("dmu_dT_per_k"), -0.0015, 0.0003);
   EXPECT_GE(testing::best_reduction(d.rounds[0]), 0.5);
   // Without it in the library no effect explains it; the formula does, with a temperature term
-  // along the model's moment: a friction change moves the moment along its own direction (which
+  // along (or in proportion to) the model's moment: a friction change moves the moment along its own direction (which
   // flips with the misalignment direction, so the marginal bins by temperature cancel and only a
   // term in the model's frame shows it).
   const Diagnosis without = testing::diagnose_on_threads(model, observations);
@@ -229,7 +229,7 @@ TEST(Diagnosis, FindsAUserWrittenEffectRegisteredInItsLibrary) {
   ASSERT_TRUE(without.rounds[0].claimed.has_value());
   bool temperature_term = false;
   for (const ParameterEstimate& p : without.rounds[0].claimed->parameters) {
-    temperature_term = temperature_term || p.name == "temperature_along_moment";
+    temperature_term = temperature_term || p.name == "temperature_along_moment" || p.name == "temperature_times_moment";
   }
   EXPECT_TRUE(temperature_term) << without.summary;
   // A first-order term: the friction moment is not a constant magnitude, so a later round or a
