@@ -48,17 +48,39 @@ Eigen::VectorXd solve_on(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, con
   return c;
 }
 
-/// Sequentially thresholded least squares: drop |c| < threshold, refit the rest, until stable.
-std::vector<bool> stlsq_support(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, double threshold) {
-  std::vector<bool> keep(static_cast<std::size_t>(x.cols()), true);
-  for (int pass = 0; pass < 10; ++pass) {
-    const Eigen::VectorXd c = solve_on(x, y, keep);
-    bool changed = false;
-    for (std::size_t j = 0; j < keep.size(); ++j) {
-      if (keep[j] && std::abs(c(static_cast<Eigen::Index>(j))) < threshold) { keep[j] = false; changed = true; }
+/// Forward selection (orthogonal matching pursuit): at each step the column whose part orthogonal
+/// to the columns chosen so far explains most of what is left. Columns that the chosen ones
+/// already span are never taken.
+std::vector<Eigen::Index> forward_order(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, int steps) {
+  std::vector<Eigen::Index> order;
+  Eigen::MatrixXd q = x;
+  Eigen::VectorXd r = y;
+  std::vector<bool> used(static_cast<std::size_t>(x.cols()), false);
+  for (int step = 0; step < steps; ++step) {
+    Eigen::Index best = -1;
+    double best_gain = 0.0;
+    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+      const double n2 = q.col(j).squaredNorm();
+      if (used[static_cast<std::size_t>(j)] || n2 <= 1e-8 * x.col(j).squaredNorm()) continue;
+      const double gain = std::pow(q.col(j).dot(r), 2) / n2;
+      if (gain > best_gain) { best_gain = gain; best = j; }
     }
-    if (!changed) break;
+    if (best < 0) break;
+    order.push_back(best);
+    used[static_cast<std::size_t>(best)] = true;
+    const Eigen::VectorXd u = q.col(best).normalized();
+    r -= u * u.dot(r);
+    for (Eigen::Index j = 0; j < x.cols(); ++j) {
+      if (!used[static_cast<std::size_t>(j)]) q.col(j) -= u * u.dot(q.col(j));
+    }
   }
+  return order;
+}
+
+/// The first `m` columns of `order` as a mask.
+std::vector<bool> first_terms(const std::vector<Eigen::Index>& order, std::size_t m, Eigen::Index columns) {
+  std::vector<bool> keep(static_cast<std::size_t>(columns), false);
+  for (std::size_t k = 0; k < std::min(m, order.size()); ++k) keep[static_cast<std::size_t>(order[k])] = true;
   return keep;
 }
 
@@ -196,34 +218,25 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
       (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();
   const Eigen::MatrixXd z = design.columns * scale.cwiseInverse().asDiagonal();
   const Eigen::VectorXd y = stacked(residual);
-  const double largest = solve_on(z, y, std::vector<bool>(static_cast<std::size_t>(z.cols()), true)).cwiseAbs().maxCoeff();
-  if (!(largest > 0.0)) return std::nullopt;
-  // The threshold path, sparsest first; each scored on held-out blocks.
-  std::vector<double> thresholds;
-  for (int k = 0; k < settings.thresholds; ++k) thresholds.push_back(largest * std::pow(1e-3, k / (settings.thresholds - 1.0)));
+  // The path: formulas of 0, 1, ... max_terms terms, each fold choosing its own terms on its
+  // training rows, scored on its held-out rows.
   std::vector<std::pair<double, double>> scores;
-  for (double threshold : thresholds) {
+  for (int m = 0; m <= settings.max_terms; ++m) {
     const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
-      return stlsq_support(xt, yt, threshold);
+      return first_terms(forward_order(xt, yt, m), static_cast<std::size_t>(m), z.cols());
     });
     scores.push_back(block_mean_square(r, folds));
   }
   std::size_t best = 0;
-  for (std::size_t k = 1; k < scores.size(); ++k) if (scores[k].first < scores[best].first) best = k;
-  // One-standard-error rule: the sparsest formula (on all rows) within one standard error of the
-  // best held-out score, and at most max_terms terms.
-  std::vector<bool> support;
-  for (std::size_t k = 0; k <= best && support.empty(); ++k) {
-    if (scores[k].first > scores[best].first + scores[best].second) continue;
-    std::vector<bool> candidate = stlsq_support(z, y, thresholds[k]);
-    if (count(candidate) > 0 && count(candidate) <= settings.max_terms) support = std::move(candidate);
+  for (std::size_t m = 1; m < scores.size(); ++m) if (scores[m].first < scores[best].first) best = m;
+  if (best == 0) return std::nullopt;  // no formula beats none on held-out rows
+  // One-standard-error rule: the fewest terms within one standard error of the best.
+  std::size_t chosen = best;
+  for (std::size_t m = 1; m < best; ++m) {
+    if (scores[m].first <= scores[best].first + scores[best].second) { chosen = m; break; }
   }
-  // When every formula within one standard error needs more terms, the best one of max_terms terms.
-  for (std::size_t k = best + 1; k-- > 0 && support.empty();) {
-    std::vector<bool> candidate = stlsq_support(z, y, thresholds[k]);
-    if (count(candidate) > 0 && count(candidate) <= settings.max_terms) support = std::move(candidate);
-  }
-  if (support.empty()) return std::nullopt;
+  const std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen)), chosen, z.cols());
+  if (count(support) == 0) return std::nullopt;
 
   std::vector<std::string> terms;
   for (std::size_t j = 0; j < support.size(); ++j) if (support[j]) terms.push_back(design.terms[j]);

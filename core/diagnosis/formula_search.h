@@ -1,9 +1,12 @@
 // The discrepancy stage: when no effect of the library explains the residual, a formula may
 // (Kennedy and O'Hagan's model discrepancy, in a parametric form). The residual is regressed on the
-// catalogue of physical terms (core/effects/expression_terms.h) by sequentially thresholded least
-// squares (the SINDy family) on normalised columns; the threshold is chosen by the blocked
-// cross-validation of the diagnosis with the one-standard-error rule (the sparsest formula within
-// one standard error of the best). The chosen terms are then scored like any candidate: refitted
+// catalogue of physical terms (core/effects/expression_terms.h) by forward selection (orthogonal
+// matching pursuit) on normalised columns: one term at a time, the one that explains most of what
+// the others leave. The number of terms is chosen by the blocked cross-validation of the diagnosis
+// (each fold selects on its own training rows) with the one-standard-error rule (the fewest terms
+// within one standard error of the best). Forward selection rather than thresholded least squares
+// (SINDy's STLSQ): the catalogue writes one mechanism in several frames that correlate on a
+// recording of a few directions, and thresholding kept combinations of them where one term did. The chosen terms are then scored like any candidate: refitted
 // on each fold's training rows, their held-out residual tested against the base model's.
 #pragma once
 
@@ -21,7 +24,6 @@ namespace gc {
 
 struct FormulaSettings {
   int max_terms = 6;          ///< a formula a reader can take in
-  int thresholds = 24;        ///< on a geometric grid down to 1e-3 of the largest coefficient
   /// Variance inflation of the noise's autocorrelation (NoiseEstimate::variance_inflation) for the
   /// coefficients' standard errors.
   double variance_inflation = 1.0;
