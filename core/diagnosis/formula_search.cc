@@ -124,6 +124,41 @@ std::pair<double, double> block_mean_square(const Eigen::MatrixX2d& r, const Fol
   return {mean, sd / std::sqrt(std::max<double>(1.0, static_cast<double>(m.size())))};
 }
 
+/// Folds of `count` rows in time order that are contiguous stretches (fold f: the f-th fifth), with
+/// paired-test blocks of a twentieth: a term fitted on four fifths must predict the fifth it
+/// never saw, before or after them.
+Folds contiguous_folds(std::size_t count, int folds, int blocks) {
+  Folds out;
+  out.training.resize(static_cast<std::size_t>(folds));
+  out.held_out.resize(static_cast<std::size_t>(folds));
+  out.blocks = blocks;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int fold = static_cast<int>(i * static_cast<std::size_t>(folds) / count);
+    out.block_of.push_back(static_cast<int>(i * static_cast<std::size_t>(blocks) / count));
+    for (int f = 0; f < folds; ++f) (f == fold ? out.held_out : out.training)[static_cast<std::size_t>(f)].push_back(i);
+  }
+  return out;
+}
+
+/// A term in time alone (t, t^2, t^3) is a drift. The interleaved folds let it interpolate any slow
+/// wander of the noise, so it must also predict whole stretches of time it was not fitted on:
+/// a drift term whose removal does not worsen those predictions (paired t below 2) is dropped.
+void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
+                                          const std::vector<std::string>& names, std::vector<bool>& support) {
+  const Folds stretches = contiguous_folds(static_cast<std::size_t>(residual.rows()), 5, 20);
+  for (std::size_t j = 0; j < support.size(); ++j) {
+    if (!support[j] || names[j].rfind("time", 0) != 0) continue;
+    std::vector<bool> without = support;
+    without[j] = false;
+    const auto fixed = [](const std::vector<bool>& keep) {
+      return [keep](const Eigen::MatrixXd&, const Eigen::VectorXd&) { return keep; };
+    };
+    const Eigen::MatrixX2d with_it = held_out(z, residual, stretches, fixed(support));
+    const Eigen::MatrixX2d without_it = held_out(z, residual, stretches, fixed(without));
+    if (paired_block_test(without_it, with_it, stretches.block_of, stretches.blocks).t < 2.0) support[j] = false;
+  }
+}
+
 }  // namespace
 
 TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
@@ -184,8 +219,13 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
   const Eigen::VectorXd c = qr.solve(y);
   const Eigen::VectorXd r = y - x * c;
   const double dof = std::max(1.0, static_cast<double>(x.rows() - x.cols()));
-  const Eigen::MatrixXd covariance = (r.squaredNorm() / dof) * variance_inflation *
-                                     (x.transpose() * x).completeOrthogonalDecomposition().pseudoInverse();
+  // In normalised columns: the terms' scales span 1e-7 (1/T) to 1e7 (t^3), and X'X in physical
+  // units loses the small variances to rounding.
+  const Eigen::VectorXd scale = x.colwise().norm().transpose().cwiseMax(1e-300);
+  const Eigen::MatrixXd xn = x * scale.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd covariance = (r.squaredNorm() / dof) * variance_inflation * scale.cwiseInverse().asDiagonal() *
+                                     (xn.transpose() * xn).completeOrthogonalDecomposition().pseudoInverse() *
+                                     scale.cwiseInverse().asDiagonal();
   EffectFit fit;
   fit.info = &info;
   ParameterValues values;
@@ -235,7 +275,8 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   for (std::size_t m = 1; m < best; ++m) {
     if (scores[m].first <= scores[best].first + scores[best].second) { chosen = m; break; }
   }
-  const std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen)), chosen, z.cols());
+  std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen)), chosen, z.cols());
+  drop_drift_that_does_not_extrapolate(z, residual, design.terms, support);
   if (count(support) == 0) return std::nullopt;
 
   std::vector<std::string> terms;

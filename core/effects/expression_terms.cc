@@ -10,60 +10,61 @@ namespace {
 struct Scalar {
   const char* name;
   const char* formula;
-  const char* unit;   ///< of the scalar
-  double bound;       ///< |coefficient| [N·m per unit]
+  const char* along_unit;  ///< of a coefficient times a unit direction: N·m per unit of the scalar
+  const char* times_unit;  ///< of a coefficient times the model's moment: per unit of the scalar
+  double bound;            ///< |coefficient| times a unit direction [along_unit]
   const char* mechanisms;
   std::optional<double> (*read)(const MeasurementSample&);
 };
 
 const Scalar kScalars[] = {
-    {"constant", "1", "", 1e7,
+    {"constant", "1", "N·m", "-", 1e7,
      "a constant moment: a bridge zero offset, the weight of a part the model leaves out, or (along the "
      "model's moment) a friction moment that does not grow with torque, i.e. friction rising at low torque "
      "(eq 37's mu T with mu ~ 1/T)",
      [](const MeasurementSample&) { return std::optional(1.0); }},
-    {"torque", "T", "N·m", 1.0,
+    {"torque", "T", "N·m/N·m", "1/(N·m)", 1.0,
      "a moment in proportion to torque: torque cross-talk into the bending bridge, or a torque-dependent "
      "offset of the shaft",
      [](const MeasurementSample& s) { return std::optional(s.torque_nm); }},
-    {"inverse_torque", "1/T", "1/(N·m)", 1e13,
+    {"inverse_torque", "1/T", "N·m²", "N·m", 1e13,
      "a moment that grows as torque falls: friction rising at low torque (eq 37 with mu ~ 1/T), or the hub "
      "resting eccentric on the sleeve below the restoring torque (eqs 49-53)",
      [](const MeasurementSample& s) { return s.torque_nm != 0.0 ? std::optional(1.0 / s.torque_nm) : std::nullopt; }},
-    {"misalignment", "zeta", "rad", 1e9,
+    {"misalignment", "zeta", "N·m/rad", "1/rad", 1e9,
      "a moment in proportion to misalignment: a misalignment the sensors mis-scale (scale error of the "
      "displacement sensors), or a coupling stiffer or softer in bending than modelled (compliance)",
      [](const MeasurementSample& s) { return std::optional(s.misalignment_rad); }},
-    {"misalignment_squared", "zeta^2", "rad^2", 1e11,
+    {"misalignment_squared", "zeta^2", "N·m/rad²", "1/rad²", 1e11,
      "a moment growing with the square of misalignment: a contact zone or crowning that differs from the "
      "model's, or a misalignment the coupling sees more of than measured",
      [](const MeasurementSample& s) { return std::optional(s.misalignment_rad * s.misalignment_rad); }},
-    {"torque_misalignment", "T zeta", "N·m·rad", 1e3,
+    {"torque_misalignment", "T zeta", "1/rad", "1/(N·m·rad)", 1e3,
      "a moment in proportion to torque times misalignment, the scale of the induced moment itself: a "
      "friction coefficient or mesh stiffness different from the model's, or a misalignment scale error",
      [](const MeasurementSample& s) { return std::optional(s.torque_nm * s.misalignment_rad); }},
-    {"travel_sign", "sign(dzeta/dt)", "", 1e7,
+    {"travel_sign", "sign(dzeta/dt)", "N·m", "-", 1e7,
      "a moment whose sign follows the direction of travel of the misalignment: Coulomb friction in the "
      "loading mechanism or the spline, or hysteresis (a lag of the coupling behind the measured "
      "misalignment)",
      [](const MeasurementSample& s) { return std::optional<double>(s.loading_direction); }},
-    {"time", "t", "s", 1e4,
+    {"time", "t", "N·m/s", "1/s", 1e4,
      "a moment that changes with time alone: zero drift of the strain-gauge bridge (its temperature), or "
      "a slow change of the rig during the test",
      [](const MeasurementSample& s) { return std::optional(s.time_s); }},
-    {"time_squared", "t^2", "s^2", 1e4,
+    {"time_squared", "t^2", "N·m/s²", "1/s²", 1e4,
      "a moment that changes smoothly with time alone, bending: zero drift of the strain-gauge bridge as it "
      "warms, or a slow change of the rig during the test",
      [](const MeasurementSample& s) { return std::optional(s.time_s * s.time_s); }},
-    {"time_cubed", "t^3", "s^3", 1e4,
+    {"time_cubed", "t^3", "N·m/s³", "1/s³", 1e4,
      "a moment that changes smoothly with time alone, turning: zero drift of the strain-gauge bridge, or a "
      "slow change of the rig during the test",
      [](const MeasurementSample& s) { return std::optional(s.time_s * s.time_s * s.time_s); }},
-    {"speed", "n", "rpm", 1e6,
+    {"speed", "n", "N·m/rpm", "1/rpm", 1e6,
      "a moment in proportion to shaft speed: viscous drag (oil shear in the spline, windage), or bearing "
      "drag",
      [](const MeasurementSample& s) { return s.speed_rpm; }},
-    {"temperature", "theta", "deg C", 1e6,
+    {"temperature", "theta", "N·m/deg C", "1/deg C", 1e6,
      "a moment that changes with oil temperature: viscosity changing friction, or thermal drift of the "
      "bridge",
      [](const MeasurementSample& s) { return s.temperature_c; }},
@@ -125,8 +126,7 @@ std::vector<ExpressionTerm> make_terms() {
       // Along a unit direction the coefficient is N·m per unit of the scalar; times the model's
       // moment it is a share of that moment per unit of the scalar (bounded for moments to 1e7 N·m).
       const bool scaled = f >= kTimesMoment;
-      const std::string unit = scaled ? (*s.unit ? std::string("1/") + s.unit : std::string("-"))
-                                      : (*s.unit ? std::string("N·m/") + s.unit : std::string("N·m"));
+      const std::string unit = scaled ? s.times_unit : s.along_unit;
       terms.push_back({std::string(s.name) + "_" + kFrames[f].name, std::string(s.formula) + " " + kFrames[f].formula,
                        unit, scaled ? s.bound / 1e7 : s.bound, std::string(s.mechanisms) + "; " + kFrames[f].mechanisms, i, f});
     }
