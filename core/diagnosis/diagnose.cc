@@ -158,6 +158,23 @@ void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, doubl
   }
 }
 
+FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSettings& settings) {
+  FormulaSettings out = settings.formula_settings;
+  out.variance_inflation = round.noise.variance_inflation();
+  return out;
+}
+
+/// True when the formula alone does not beat the effect followed by a formula of what the effect
+/// leaves (paired t < 2): the formula's advantage is that it also takes a second mechanism, which
+/// the next round finds after the effect (physics first).
+bool effect_explains_part(const CandidateScore& effect, const CandidateScore& formula,
+                          std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
+                          const Folds& folds, const FormulaSettings& settings) {
+  const std::optional<CandidateScore> rest = formula_candidate(observations, search, effect.held_out_residual, folds, settings);
+  const Eigen::MatrixX2d& both = rest ? rest->held_out_residual : effect.held_out_residual;
+  return paired_block_test(both, formula.held_out_residual, folds.block_of, folds.blocks).t < 2.0;
+}
+
 /// One round: residual, noise, signature, candidates, outcome.
 /// `residual`: the model's on `rows`.
 DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
@@ -186,11 +203,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   }
   round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, settings);
   put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
-  if (settings.formula) {
-    FormulaSettings formula_settings = settings.formula_settings;
-    formula_settings.variance_inflation = round.noise.variance_inflation();
-    round.formula = formula_candidate(observations, search, base, folds, formula_settings);
-  }
+  if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
   const bool effect_ok = !round.ranking.empty() && claimable(round.ranking.front(), base_ms, noise_ms, settings);
   const bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
   if (formula_ok && effect_ok) {
@@ -201,6 +214,10 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
     round.formula_chosen = !plausible(effect) || (t.t >= settings.formula_over_effect_t &&
                                                   formula_gain >= settings.formula_over_effect_gain * effect_gain);
+    if (round.formula_chosen && plausible(effect) && effect_explains_part(effect, *round.formula, observations, search,
+                                                                            folds, formula_settings(round, settings))) {
+      round.formula_chosen = false;
+    }
   } else {
     round.formula_chosen = formula_ok;
   }
@@ -247,6 +264,29 @@ std::optional<EffectFit> refit_claim(const CouplingModel& model, const Diagnosis
       current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
   if (!registration) return std::nullopt;
   return refit_effect(model, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
+}
+
+/// A formula claimed this round may take over an earlier claim (an offset that took the mean of a
+/// drift in round 1): the formula searched afresh on what the model leaves without that claim and
+/// without its formula. When it does as well on held-out blocks as the model with both (paired t
+/// below keep_t), it is returned, refitted on the refit rows, to replace them.
+std::optional<EffectFit> formula_absorbing(const CouplingModel& model, const std::string& name,
+                                           const Eigen::MatrixX2d& held_out, std::span<const RecordedSample> observations,
+                                           const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit,
+                                           const Folds& folds, const ParallelFor& parallel, const FormulaSettings& settings,
+                                           double keep_t) {
+  const CouplingModel bare = model.without_effect(name).without_effect(kExpressionEffect);
+  const ModelResiduals on_search = model_residuals(bare, observations, search, parallel);
+  if (!on_search.failed_rows.empty()) return std::nullopt;
+  const std::optional<CandidateScore> fresh = formula_candidate(observations, search, on_search.residual, folds, settings);
+  if (!fresh || paired_block_test(fresh->held_out_residual, held_out, folds.block_of, folds.blocks).t >= keep_t) {
+    return std::nullopt;
+  }
+  const ModelResiduals on_refit = model_residuals(bare, observations, refit, parallel);
+  if (!on_refit.failed_rows.empty()) return std::nullopt;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : fresh->fit->parameters) terms.push_back(p.name);
+  return fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
 }
 
 }  // namespace
@@ -325,6 +365,24 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       for (const std::string& name : round.dropped) {
         candidate = candidate.without_effect(name);
         std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
+      }
+      for (const std::string& name : revisit) {
+        if (!round.formula_chosen || name == kExpressionEffect ||
+            std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
+          continue;
+        }
+        std::optional<EffectFit> absorbed = formula_absorbing(candidate, name, round.chosen().held_out_residual, observations,
+                                                              search, refit, folds, parallel,
+                                                              formula_settings(round, settings), settings.keep_t);
+        if (!absorbed) continue;
+        const CouplingModel taken = candidate.without_effect(name).with_effect(absorbed->effect);
+        ModelResiduals check = model_residuals(taken, observations, rows, parallel);
+        if (!check.failed_rows.empty()) continue;
+        candidate = taken;
+        round.claimed = std::move(absorbed);
+        round.dropped.push_back(name);
+        std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
+        next = std::move(check);
       }
       if (!round.dropped.empty()) next = model_residuals(candidate, observations, rows, parallel);
       std::erase_if(out.added, [&](const auto& e) { return e->name() == round.claimed->effect->name(); });

@@ -217,6 +217,12 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
   problem.full = problem.box.defaults();
   std::vector<std::string> notes(static_cast<std::size_t>(problem.box.size()));
   int evaluations = 0;
+  if (problem.box.size() == 0) {  // a switch (e.g. continuous_quarter_sums): nothing to fit
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    return make_fit(problem, LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true},
+                    notes, true, 1);
+  }
   const std::vector<Eigen::VectorXd> starts = best_starts(problem, settings, current, evaluations);
   if (starts.empty()) return std::nullopt;
   std::optional<LeastSquaresResult> best;

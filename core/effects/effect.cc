@@ -34,6 +34,7 @@ double Effect::value(const std::string& parameter) const {
 }
 
 bool Effect::neutral() const {
+  if (values_.empty()) return false;  // a switch (no parameters) changes the model by being there
   for (std::size_t i = 0; i < values_.size(); ++i) {
     if (values_[i] != info_.parameters[i].neutral) return false;
   }

@@ -84,7 +84,8 @@ class Effect {
   /// Parameter values in the order of info().parameters.
   const std::vector<double>& values() const { return values_; }
   double value(const std::string& parameter) const;
-  /// True when every parameter sits at its neutral value: the effect changes nothing.
+  /// True when every parameter sits at its neutral value: the effect changes nothing. False for
+  /// a switch without parameters (e.g. continuous_quarter_sums).
   bool neutral() const;
 
   /// Once, when the model is built (e.g. a stiffness factor).

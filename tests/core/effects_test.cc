@@ -50,6 +50,7 @@ TEST(Effects, PaperConfigurationReproducesEq48Exactly) {
 TEST(Effects, EveryEffectAtItsNeutralValuesChangesNothing) {
   const CouplingModel base = paper_model();
   for (const EffectRegistration& r : effect_registry()) {
+    if (r.info->parameters.empty() && r.info->name != kExpressionEffect) continue;  // a switch: no neutral value
     ParameterValues neutral;
     for (const ParameterSpec& p : r.info->parameters) neutral[p.name] = p.neutral;
     // The formula's parameters are the terms it is given: two of them, at zero.
@@ -194,6 +195,22 @@ TEST(Effects, MisalignmentScaleShowsTheCouplingMoreMisalignmentThanMeasured) {
   const SensorMoments seen = predict(paper_model(), sample(1.2e6, 0.46));
   EXPECT_NEAR(scaled.y_nm, seen.y_nm, 1e-6);
   EXPECT_NEAR(scaled.z_nm, seen.z_nm, 1e-6);
+}
+
+TEST(Effects, ContinuousQuarterSumsIsTheContactOptionAsAModelPart) {
+  const auto switched = make_effect("continuous_quarter_sums");
+  EXPECT_FALSE(switched->neutral());
+  ContactOptions continuous;
+  continuous.continuous_quarter_sums = true;
+  std::vector<std::shared_ptr<const Effect>> effects = paper_model().effects();
+  const CouplingModel with_option(nrel_upwind(), effects, continuous);
+  const CouplingModel with_effect = paper_model().with_effect(switched);
+  for (double torque : {0.3e6, 0.571e6, 1.2e6}) {
+    const MeasurementSample s = sample(torque, 0.3);
+    EXPECT_EQ(predict(with_effect, s).y_nm, predict(with_option, s).y_nm);
+    EXPECT_EQ(predict(with_effect, s).z_nm, predict(with_option, s).z_nm);
+  }
+  EXPECT_NE(predict(with_effect, sample(0.56e6, 0.3)).y_nm, predict(paper_model(), sample(0.56e6, 0.3)).y_nm);
 }
 
 TEST(Effects, BadConfigurationsNameTheField) {

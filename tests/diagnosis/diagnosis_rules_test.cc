@@ -160,5 +160,27 @@ TEST(DiagnosisRules, GivesOneIndistinguishableVerdictAcrossFiveFoldSeeds) {
   }
 }
 
+// A recording of a coupling without the sawtooth of eqs 42-43 (the continuous quarter sums),
+// diagnosed with the paper's form: the sawtooth left in the residual is named for what it is, the
+// continuous form, and no other effect is bent to follow the saw.
+TEST(DiagnosisRules, DoesNotTakeTheSawtoothForAnEffect) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  ContactOptions continuous;
+  continuous.continuous_quarter_sums = true;
+  const CouplingModel truth(testing::nrel_upwind(), testing::paper_effects(), continuous);
+  const Diagnosis d = testing::diagnose_on_threads(model, record(truth, sweeps(testing::nrel_upwind()), 43));
+  SCOPED_TRACE(d.summary);
+  ASSERT_GE(d.rounds.size(), 2u);
+  EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::effect_found);
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  EXPECT_EQ(d.rounds[0].claimed->info->name, "continuous_quarter_sums");
+  ASSERT_EQ(d.added.size(), 1u);
+  EXPECT_EQ(d.rounds[1].outcome, RoundOutcome::noise);
+  // And on a recording of the paper's form, the continuous form is not claimed.
+  const Diagnosis paper = testing::diagnose_on_threads(model, record(model.with_effect(make_effect("hysteresis", {{"lag_rad", 0.0008}})),
+                                                                     sweeps(testing::nrel_upwind()), 47));
+  for (const auto& e : paper.added) EXPECT_NE(e->name(), "continuous_quarter_sums") << paper.summary;
+}
+
 }  // namespace
 }  // namespace gc
