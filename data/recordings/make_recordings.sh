@@ -13,3 +13,5 @@ done
   --out "$here/paper_downwind_moment_sweep.csv"
 "$gearcoupling" synth --model "$here/hidden_eccentricity.truth.textproto" --sequence torque-ramp \
   "${common[@]}" --out "$here/hidden_eccentricity_torque_ramp.csv"
+"$gearcoupling" synth --model "$here/hidden_loading_friction.truth.textproto" --sequence moment-sweep \
+  "${common[@]}" --out "$here/hidden_loading_friction_moment_sweep.csv"

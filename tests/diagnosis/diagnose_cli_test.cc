@@ -101,5 +101,37 @@ TEST(ValidateAddCli, BadEffectSpecsAreBadInputNamingTheField) {
   EXPECT_NE(not_a_number.err.find("lag_rad=much"), std::string::npos) << not_a_number.err;
 }
 
+// docs/tutorial.md, part 2: a moment outside the library, a formula proposed, written to the
+// model file, read back, and added by --add; the error falls to the noise both ways.
+TEST(DiagnoseCli, ProposesTheFormulaForTheBundledLoadingFrictionAndItValidatesAtTheNoise) {
+  const std::string recording = kRecordings + "/hidden_loading_friction_moment_sweep.csv";
+  const std::string model = temp_path("formula") + ".textproto";
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(run_gearcoupling(
+      {"diagnose", "--data", recording, "--model", "paper", "--json", "--write-model", model}));
+  ASSERT_EQ(result.rounds_size(), 2) << result.summary();
+  EXPECT_EQ(result.rounds(0).outcome(), "formula_proposed");
+  EXPECT_TRUE(result.rounds(0).formula_chosen());
+  EXPECT_EQ(result.rounds(0).formula().kind(), "formula");
+  EXPECT_EQ(result.rounds(0).claimed().effect(), "expression");
+  // hidden_loading_friction.truth.textproto: 6000 N·m.
+  EXPECT_NEAR(parameter(result.rounds(0).claimed(), "travel_sign_along_misalignment"), 6000.0, 300.0);
+  EXPECT_NE(result.rounds(0).verdict().find("Coulomb friction in the loading mechanism"), std::string::npos);
+  EXPECT_EQ(result.rounds(1).outcome(), "noise");
+
+  const auto written = parse<gearcoupling::v1::ValidationResult>(
+      run_gearcoupling({"validate", "--data", recording, "--model", model, "--json"}));
+  ASSERT_EQ(written.models_size(), 1);
+  EXPECT_NEAR(written.models(0).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+  const auto added = parse<gearcoupling::v1::ValidationResult>(run_gearcoupling(
+      {"validate", "--data", recording, "--model", "paper", "--add", "expression=travel_sign_along_misalignment=5875", "--json"}));
+  ASSERT_EQ(added.models_size(), 2);
+  EXPECT_GT(added.models(0).overall().msy().rmse_nm(), 2.5 * kNoiseNm);
+  EXPECT_NEAR(added.models(1).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+  const ProcessResult unknown_term = run_gearcoupling(
+      {"validate", "--data", recording, "--model", "paper", "--add", "expression=travel_sign_along_w=1"});
+  EXPECT_EQ(unknown_term.exit_code, 2);
+  EXPECT_NE(unknown_term.err.find("effects.expression.travel_sign_along_w"), std::string::npos) << unknown_term.err;
+}
+
 }  // namespace
 }  // namespace gc::cli::testing
