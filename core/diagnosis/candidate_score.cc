@@ -61,11 +61,15 @@ CandidateScore score_candidate(const CouplingModel& base, const EffectRegistrati
       score.held_out_residual.row(static_cast<Eigen::Index>(folds.held_out[f][k])) = r->row(static_cast<Eigen::Index>(k));
     }
   }
+  score_held_out(score, base_residual, folds);
+  return score;
+}
+
+void score_held_out(CandidateScore& score, const Eigen::MatrixX2d& base_residual, const Folds& folds) {
   score.held_out_rmse_nm = std::sqrt(pooled_mean_square(score.held_out_residual));
   const double base_rmse = std::sqrt(pooled_mean_square(base_residual));
   score.reduction = base_rmse > 0.0 ? 1.0 - score.held_out_rmse_nm / base_rmse : 0.0;
   score.against_base = paired_block_test(base_residual, score.held_out_residual, folds.block_of, folds.blocks);
-  return score;
 }
 
 }  // namespace gc

@@ -43,6 +43,10 @@ struct CrossValidationSettings {
   std::uint64_t fold_seed = 0;  ///< blocked_folds' seed
 };
 
+/// Fills the score's held-out RMSE, reduction and paired test from its held_out_residual, against
+/// the base model's residual on the same rows.
+void score_held_out(CandidateScore& score, const Eigen::MatrixX2d& base_residual, const Folds& folds);
+
 /// `rows` in time order; `base_residual` the base model's residual on them (no parameters fitted,
 /// so it is its own held-out residual). `current`: the effect of this name the base model has (a
 /// refinement starts from it and searches a box that holds it); nullptr for an addition.

@@ -233,6 +233,27 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.outcome = !plausible(round.ranking.front()) ? RoundOutcome::partly_explained
                     : round.alike.empty()             ? RoundOutcome::effect_found
                                                       : RoundOutcome::indistinguishable;
+    if (round.outcome == RoundOutcome::partly_explained) {
+      round.partly_reason = "a fitted value outside its plausible range or on a bound means another mechanism with a "
+                            "similar signature";
+    } else if (round.outcome == RoundOutcome::effect_found) {
+      // Found only when what it leaves shows no structure in the input it explains: the physical
+      // input that carries most of its correction (given the others), e.g. loading_direction for
+      // hysteresis. Not time: a sweep moves every input with time, and effects act through the others.
+      const CandidateScore& best = round.ranking.front();
+      const double inflation = round.noise.variance_inflation();
+      const ResidualSignature correction = residual_signature(observations, search, base - best.held_out_residual, inflation);
+      const ResidualSignature after = residual_signature(observations, search, best.held_out_residual, inflation);
+      std::string input;
+      for (const InputSignature& s : correction.inputs) {
+        if (s.input != "time" && s.explained_share > 0.0) { input = s.input; break; }
+      }
+      const InputSignature* left = after.find(input);
+      if (left && left->systematic) {
+        round.outcome = RoundOutcome::partly_explained;
+        round.partly_reason = "the residual it leaves is still systematic against " + input + ", the input it explains";
+      }
+    }
   }
   round.channel_reduction = channel_reduction(base, round.chosen().held_out_residual);
   return round;
@@ -263,7 +284,12 @@ std::optional<EffectFit> refit_claim(const CouplingModel& model, const Diagnosis
   const std::optional<EffectRegistration> registration =
       current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
   if (!registration) return std::nullopt;
-  return refit_effect(model, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
+  std::optional<EffectFit> fit =
+      refit_effect(model, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
+  // s^2 (J'J)^-1 counts every sample as independent; correlated noise carries fewer.
+  const double inflation = std::sqrt(round.noise.variance_inflation());
+  if (fit) for (ParameterEstimate& p : fit->parameters) if (p.standard_error) *p.standard_error *= inflation;
+  return fit;
 }
 
 /// A formula claimed this round may take over an earlier claim (an offset that took the mean of a

@@ -81,7 +81,8 @@ enum class RoundOutcome {
   indistinguishable,  ///< several effects explain it equally on this data
   noise,              ///< the residual is consistent with the noise
   unexplained,        ///< systematic, and neither an effect nor a formula explains it
-  partly_explained,   ///< an effect lowers the error, but with implausible values or on a bound
+  partly_explained,   ///< an effect lowers the error, but with implausible values (or on a bound), or
+                      ///< leaves structure in the input it explains
   formula_proposed,   ///< no effect explains it; a formula of physical terms does
 };
 
@@ -112,6 +113,9 @@ struct DiagnosisRound {
   const CandidateScore& chosen() const;
   bool formula_chosen = false;
   std::vector<std::string> dropped;        ///< earlier claims dropped after this round's claim
+  /// Why a claimed effect only partly explains: a value outside its plausible range, or the
+  /// residual left after it still systematic against the input it explains.
+  std::string partly_reason;
   std::string verdict;                     ///< plain language
 };
 

@@ -287,10 +287,7 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   if (!score.fit) return std::nullopt;
   score.info = score.fit->info;
   score.held_out_residual = held_out(z, residual, folds, [&](const Eigen::MatrixXd&, const Eigen::VectorXd&) { return support; });
-  score.held_out_rmse_nm = std::sqrt(pooled_mean_square(score.held_out_residual));
-  const double base_rmse = std::sqrt(pooled_mean_square(residual));
-  score.reduction = base_rmse > 0.0 ? 1.0 - score.held_out_rmse_nm / base_rmse : 0.0;
-  score.against_base = paired_block_test(residual, score.held_out_residual, folds.block_of, folds.blocks);
+  score_held_out(score, residual, folds);
   return score;
 }
 

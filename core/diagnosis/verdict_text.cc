@@ -135,9 +135,9 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
     case RoundOutcome::partly_explained: {
       const CandidateScore& c = round.ranking.front();
       return head + (c.kind == CandidateKind::refinement ? "refining " : "") + c.info->name + " partly explains the residual in " +
-             channels(round.channel_reduction) + ", but not as that physics: " + fitted_parameters_text(*round.claimed) + "; " +
-             gain_text(round, c) + ". A value outside its plausible range means another mechanism with a similar signature; "
-             "no formula did better. The search continues with it." + dropped_text(round);
+             channels(round.channel_reduction) + " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " +
+             gain_text(round, c) + ". Only partly: " + round.partly_reason + "; no formula did better. The search continues "
+             "with it." + rival_formula_text(round) + dropped_text(round);
     }
     case RoundOutcome::formula_proposed: {
       const CandidateScore& c = *round.formula;

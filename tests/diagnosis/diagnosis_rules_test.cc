@@ -9,6 +9,7 @@
 #include "core/diagnosis/claim_review.h"
 #include "core/diagnosis/formula_search.h"
 #include "core/diagnosis/model_residuals.h"
+#include "core/effects/expression.h"
 #include "core/synthesis/load_sequence.h"
 #include "core/synthesis/synthesize.h"
 #include "parallel/thread_parallel_for.h"
@@ -18,23 +19,11 @@
 namespace gc {
 namespace {
 
-using testing::deg;
 
 constexpr double kNoiseNm = 2000.0;
 
 std::vector<MeasurementSample> sweeps(const CouplingDefinition& coupling) {
-  LoadSequenceOptions options;
-  options.samples = 960;
-  options.sample_period_s = 0.1;
-  options.jam_angle_rad = CouplingGeometry(coupling).jam_angle().angle_rad;
-  options.direction_rad = deg(10);
-  std::vector<MeasurementSample> samples = load_sequence(options);
-  options.direction_rad = deg(100);
-  for (MeasurementSample s : load_sequence(options)) {
-    s.time_s += options.samples * options.sample_period_s;
-    samples.push_back(s);
-  }
-  return samples;
+  return testing::paper_sequence(coupling, LoadSequenceKind::moment_sweep);
 }
 
 std::vector<RecordedSample> record(const CouplingModel& truth, const std::vector<MeasurementSample>& inputs,
@@ -62,6 +51,22 @@ TEST(DiagnosisRules, RefinesAnEffectTheModelHasWithWrongParameters) {
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
+// A formula in the user's model file is an effect like any other: with a wrong coefficient, it is
+// refined.
+TEST(DiagnosisRules, RefinesAFormulaTheModelFileHolds) {
+  const CouplingModel model = CouplingModel(testing::nrel_upwind(), testing::paper_effects())
+                                  .with_effect(make_expression({{"travel_sign_along_misalignment", 3000.0}}));
+  const CouplingModel truth = model.with_effect(make_expression({{"travel_sign_along_misalignment", 7000.0}}));
+  const Diagnosis d = testing::diagnose_on_threads(model, record(truth, sweeps(testing::nrel_upwind()), 19));
+  SCOPED_TRACE(d.summary);
+  ASSERT_FALSE(d.rounds.empty());
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  EXPECT_EQ(d.rounds[0].chosen().kind, CandidateKind::refinement);
+  EXPECT_EQ(d.rounds[0].claimed->info->name, "expression");
+  EXPECT_NEAR(d.rounds[0].claimed->effect->value("travel_sign_along_misalignment"), 7000.0, 200.0);
+  EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
+}
+
 // Issue 8, class 3: an assembly misalignment of 0.0058 rad on the downwind coupling, 19 % of its
 // jam angle and beyond the old fixed bound of 0.005 rad, is fitted whole, not clipped.
 TEST(DiagnosisRules, FitsAnAssemblyMisalignmentBeyondTheOldFixedBound) {
@@ -78,6 +83,29 @@ TEST(DiagnosisRules, FitsAnAssemblyMisalignmentBeyondTheOldFixedBound) {
   EXPECT_TRUE(d.rounds[0].claimed->plausible());
   // Nothing spurious absorbs a remainder.
   EXPECT_EQ(d.added.size(), 1u);
+}
+
+// Issue 8, class 7: a slow zero drift has a mean. A channel offset takes it in round 1; round 2's
+// formula has the drift in time, and the offset, revisited, is dropped: the formula alone does as
+// well.
+TEST(DiagnosisRules, AnOffsetThatTookTheMeanOfADriftIsDroppedOnceTheDriftIsFound) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<RecordedSample> observations = record(model, sweeps(testing::nrel_upwind()), 53);
+  const double end = observations.back().input.time_s;
+  for (RecordedSample& o : observations) o.measured.z_nm += 4000.0 + 6000.0 * std::sin(M_PI * o.input.time_s / end);
+  const Diagnosis d = testing::diagnose_on_threads(model, observations);
+  SCOPED_TRACE(d.summary);
+  ASSERT_GE(d.rounds.size(), 2u);
+  EXPECT_NE(d.summary.find("drift"), std::string::npos);
+  for (const auto& e : d.added) EXPECT_NE(e->name(), "channel_gain_offset");
+  bool dropped = false;
+  for (const DiagnosisRound& r : d.rounds) {
+    dropped = dropped || std::find(r.dropped.begin(), r.dropped.end(), "channel_gain_offset") != r.dropped.end();
+  }
+  EXPECT_TRUE(dropped);
+  EXPECT_NE(d.summary.find("the earlier claim channel_gain_offset no longer lowers the held-out error and is dropped"),
+            std::string::npos);
+  EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
 // A truth far beyond the plausible range (an assembly misalignment of half the jam angle): the

@@ -1,8 +1,25 @@
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 
+#include "core/coupling_geometry.h"
 #include "parallel/thread_parallel_for.h"
 
 namespace gc::testing {
+
+std::vector<MeasurementSample> paper_sequence(const CouplingDefinition& coupling, LoadSequenceKind kind) {
+  LoadSequenceOptions options;
+  options.kind = kind;
+  options.samples = 960;
+  options.sample_period_s = 0.1;
+  options.jam_angle_rad = CouplingGeometry(coupling).jam_angle().angle_rad;
+  options.direction_rad = 10.0 * M_PI / 180.0;
+  std::vector<MeasurementSample> samples = load_sequence(options);
+  options.direction_rad = 100.0 * M_PI / 180.0;
+  for (MeasurementSample s : load_sequence(options)) {
+    s.time_s += options.samples * options.sample_period_s;
+    samples.push_back(s);
+  }
+  return samples;
+}
 
 std::vector<std::shared_ptr<const Effect>> paper_effects(const std::string& without) {
   std::vector<std::shared_ptr<const Effect>> effects;

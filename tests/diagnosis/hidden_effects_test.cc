@@ -21,29 +21,13 @@ namespace gc {
 EffectRegistration temperature_friction_effect();  // tests/core/example_effect/
 namespace {
 
-using testing::deg;
 
 // About 1-2 % of the induced moments at 1-1.5 MN·m and 0.4 deg: strain-gauge noise of the
 // paper's test cell order.
 constexpr double kNoiseNm = 2000.0;
 
-// One of the paper's load sequences (core/synthesis/load_sequence.h) for the upwind coupling,
-// 960 samples 0.1 s apart, run at two directions so that the recording sees four (beta and
-// beta + pi each time): 1920 samples.
 std::vector<MeasurementSample> paper_sequence(LoadSequenceKind kind) {
-  LoadSequenceOptions options;
-  options.kind = kind;
-  options.samples = 960;
-  options.sample_period_s = 0.1;
-  options.jam_angle_rad = CouplingGeometry(testing::nrel_upwind()).jam_angle().angle_rad;
-  options.direction_rad = deg(10);
-  std::vector<MeasurementSample> samples = load_sequence(options);
-  options.direction_rad = deg(100);
-  for (MeasurementSample s : load_sequence(options)) {
-    s.time_s += options.samples * options.sample_period_s;
-    samples.push_back(s);
-  }
-  return samples;
+  return testing::paper_sequence(testing::nrel_upwind(), kind);
 }
 
 // Applied-moment sweeps 0 -> +0.6 xi -> -0.6 xi -> 0 at 0.3, 0.75 and 1.5 MN·m (Figures 10-11).

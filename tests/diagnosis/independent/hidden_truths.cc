@@ -173,6 +173,34 @@ std::vector<Recipe> recipes() {
                }),
                coloured(), {{"compliance", "misalignment_scale"}, {"misalignment scale", "scale of the misalignment", "scale error"}, false, 1}});
 
+  // Rim flexibility in series with the teeth, C_rim = 2.5 C: the mesh at C_rim / (C + C_rim) of
+  // eq 5's stiffness, through the coupling's Young's modulus, the model rebuilt around it.
+  r.push_back({"rim_compliance", "mesh stiffness C C_rim / (C + C_rim), C_rim = 2.5 C (0.714 C)", "",
+               LoadSequenceKind::moment_sweep,
+               [](const CouplingModel& base, const Inputs& in) {
+                 CouplingDefinition soft = base.base_coupling();
+                 soft.youngs_modulus_pa *= 2.5 / (1.0 + 2.5);
+                 const CouplingModel truth(soft, base.effects(), base.options());
+                 std::vector<SensorMoments> out;
+                 for (const MeasurementSample& s : in) out.push_back(truth.predict(s).moments);
+                 return out;
+               },
+               coloured(), {{"compliance"}, {}, false, 1}});
+
+  // A sleeve out of round by 30 um: every tooth pair separated by that much more (eq 11's z_o),
+  // set on the contact options of a rebuilt model.
+  r.push_back({"sleeve_out_of_round", "tooth separation z_o + 30 um", "",
+               LoadSequenceKind::moment_sweep,
+               [](const CouplingModel& base, const Inputs& in) {
+                 ContactOptions options = base.options();
+                 options.spacing_error_m += 3e-5;
+                 const CouplingModel truth(base.base_coupling(), base.effects(), options);
+                 std::vector<SensorMoments> out;
+                 for (const MeasurementSample& s : in) out.push_back(truth.predict(s).moments);
+                 return out;
+               },
+               white(), {{"spacing_errors"}, {}, false, 1}});
+
   // The load-application device lags the measurement by more at higher torque.
   r.push_back({"hysteresis_torque_lag", "zeta lags by (0.5 + 0.4 T / 1.5 MN·m) mrad against the direction of travel", "",
                LoadSequenceKind::moment_sweep,
