@@ -152,10 +152,40 @@ std::vector<TableRow>& table() {
   return rows;
 }
 
-std::string first_line(const std::string& text) {
-  std::string line = text.substr(0, text.find('\n'));
-  std::replace(line.begin(), line.end(), '|', '/');
-  return line.size() > 160 ? line.substr(0, 157) + "..." : line;
+const char* codec_free_outcome(RoundOutcome o) {
+  switch (o) {
+    case RoundOutcome::effect_found: return "found";
+    case RoundOutcome::indistinguishable: return "indistinguishable";
+    case RoundOutcome::noise: return "noise";
+    case RoundOutcome::unexplained: return "unexplained";
+    case RoundOutcome::partly_explained: return "partly";
+    case RoundOutcome::formula_proposed: return "formula";
+  }
+  return "";
+}
+
+/// The rounds in a few words: "refine friction; noise", "formula (speed_on_z, constant_on_z); noise".
+std::string rounds_text(const Diagnosis& d) {
+  std::string text = d.outlier_rows.empty() ? "" : std::to_string(d.outlier_rows.size()) + " outliers; ";
+  for (std::size_t r = 0; r < d.rounds.size(); ++r) {
+    const DiagnosisRound& round = d.rounds[r];
+    std::string what = codec_free_outcome(round.outcome);
+    if (round.claimed && round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained) {
+      if (round.formula_chosen) {
+        what = "formula (";
+        for (std::size_t k = 0; k < round.claimed->parameters.size(); ++k) what += (k ? ", " : "") + round.claimed->parameters[k].name;
+        what += ")";
+      } else {
+        const bool refined = round.chosen().kind == CandidateKind::refinement;
+        what = (round.outcome == RoundOutcome::partly_explained ? "partly " : "") + std::string(refined ? "refine " : "") +
+               round.claimed->info->name;
+        for (const AlikeEffect& a : round.alike) what += " ~ " + a.name;
+      }
+    }
+    for (const std::string& dropped : round.dropped) what += " (drops " + dropped + ")";
+    text += (r ? "; " : "") + what;
+  }
+  return text;
 }
 
 double reduction(double to, double from) { return from > 0.0 ? 1.0 - to / from : 0.0; }
@@ -204,7 +234,7 @@ TEST_P(Generalisation, NamesThePhysicsBeatsSindyAndReachesTheNoiseFloorOnHeldOut
   SCOPED_TRACE("hidden: " + c.physics + "; noise: " + c.noise + "\nverdict: " + d.summary);
 
   std::string why;
-  TableRow row{c.name, first_line(d.summary), s, names_expected_physics(d, c.expected, &why), false, false, seconds};
+  TableRow row{c.name, rounds_text(d), s, names_expected_physics(d, c.expected, &why), false, false, seconds};
   // No model of the physics can beat the noise floor on held-out data; a baseline that does has
   // fitted noise that happened to carry over (a drift), so the floor is the bar then.
   row.beats_baseline = s.after_nm <= (1.0 + kBaselineTolerance) * std::max(s.baseline_nm, s.floor_nm);
