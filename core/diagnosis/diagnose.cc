@@ -315,6 +315,60 @@ std::optional<EffectFit> formula_absorbing(const CouplingModel& model, const std
   return fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
 }
 
+/// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
+/// once, from the base model's residual. Returns them (indices into the recording).
+std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations) {
+  std::vector<std::size_t> outliers;
+  for (std::size_t position : outlier_positions(residual, deviations)) outliers.push_back(rows[position]);
+  if (outliers.empty()) return outliers;
+  std::vector<std::size_t> sorted = outliers;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+  return outliers;
+}
+
+/// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
+/// when the claim is a formula, those a fresh formula can take over (the claim becomes that formula).
+/// Refinements of the given model's effects are refined again later, never removed.
+void revisit_claims(CouplingModel& model, DiagnosisRound& round, std::vector<std::shared_ptr<const Effect>>& added,
+                    const CouplingModel& given, std::span<const RecordedSample> observations,
+                    const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit, const Folds& folds,
+                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  std::vector<std::string> revisit;
+  for (const auto& earlier : added) {
+    if (!given.has_effect(earlier->name()) && earlier->name() != round.claimed->effect->name()) {
+      revisit.push_back(earlier->name());
+    }
+  }
+  const auto drop = [&](const std::string& name) {
+    round.dropped.push_back(name);
+    std::erase_if(added, [&](const auto& e) { return e->name() == name; });
+  };
+  for (const std::string& name : redundant_claims(model, revisit, round.chosen().held_out_residual, observations, search,
+                                                  folds, parallel, settings.keep_t)) {
+    model = model.without_effect(name);
+    drop(name);
+  }
+  if (!round.formula_chosen) return;
+  for (const std::string& name : revisit) {
+    if (name == kExpressionEffect || std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
+      continue;
+    }
+    std::optional<EffectFit> absorbed = formula_absorbing(model, name, round.chosen().held_out_residual, observations,
+                                                          search, refit, folds, parallel, formula_settings(round, settings),
+                                                          settings.keep_t);
+    if (!absorbed) continue;
+    const CouplingModel taken = model.without_effect(name).with_effect(absorbed->effect);
+    if (!model_residuals(taken, observations, refit, parallel).failed_rows.empty()) continue;
+    model = taken;
+    round.claimed = std::move(absorbed);
+    drop(name);
+  }
+}
+
 }  // namespace
 
 const CandidateScore& DiagnosisRound::chosen() const { return formula_chosen ? *formula : ranking.front(); }
@@ -336,16 +390,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
   // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
-  // Spikes are measurement faults, not physics: excluded once, from the base model's residual, and counted.
-  for (std::size_t position : outlier_positions(residual, settings.outlier_deviations)) out.outlier_rows.push_back(rows[position]);
-  if (!out.outlier_rows.empty()) {
-    std::vector<std::size_t> sorted = out.outlier_rows;
-    std::sort(sorted.begin(), sorted.end());
-    std::vector<std::size_t> kept;
-    for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
-    residual = select_rows(residual, rows, kept);
-    rows = std::move(kept);
-  }
+  out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
     throw InvalidInput("recording.rows", static_cast<double>(rows.size()),
@@ -379,38 +424,23 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     const bool continues = round.claimed.has_value();
     if (!continues && claims) round.claimed = round.chosen().fit;
     if (continues) {
-      std::vector<std::string> revisit;
-      for (const auto& earlier : out.added) {
-        // A refinement replaced an effect of the given model: it is refined again, never removed.
-        if (!model.has_effect(earlier->name()) && earlier->name() != round.claimed->effect->name()) {
-          revisit.push_back(earlier->name());
+      const CouplingModel claimed_model = candidate;
+      const std::vector<std::shared_ptr<const Effect>> added_before = out.added;
+      const std::optional<EffectFit> claimed_fit = round.claimed;
+      revisit_claims(candidate, round, out.added, model, observations, search, refit, folds, parallel, settings);
+      if (!round.dropped.empty()) {
+        // A claim dropped or taken over changed the model: its residual again, on every row. Should
+        // that refuse a row (a dropped effect held it inside the jam angle), every claim stays.
+        std::optional<ModelResiduals> revisited = model_residuals(candidate, observations, rows, parallel);
+        if (revisited->failed_rows.empty()) {
+          next = std::move(revisited);
+        } else {
+          candidate = claimed_model;
+          out.added = added_before;
+          round.claimed = claimed_fit;
+          round.dropped.clear();
         }
       }
-      round.dropped = redundant_claims(candidate, revisit, round.chosen().held_out_residual, observations, search,
-                                       folds, parallel, settings.keep_t);
-      for (const std::string& name : round.dropped) {
-        candidate = candidate.without_effect(name);
-        std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
-      }
-      for (const std::string& name : revisit) {
-        if (!round.formula_chosen || name == kExpressionEffect ||
-            std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
-          continue;
-        }
-        std::optional<EffectFit> absorbed = formula_absorbing(candidate, name, round.chosen().held_out_residual, observations,
-                                                              search, refit, folds, parallel,
-                                                              formula_settings(round, settings), settings.keep_t);
-        if (!absorbed) continue;
-        const CouplingModel taken = candidate.without_effect(name).with_effect(absorbed->effect);
-        ModelResiduals check = model_residuals(taken, observations, rows, parallel);
-        if (!check.failed_rows.empty()) continue;
-        candidate = taken;
-        round.claimed = std::move(absorbed);
-        round.dropped.push_back(name);
-        std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
-        next = std::move(check);
-      }
-      if (!round.dropped.empty()) next = model_residuals(candidate, observations, rows, parallel);
       std::erase_if(out.added, [&](const auto& e) { return e->name() == round.claimed->effect->name(); });
       out.added.push_back(round.claimed->effect);
       residual = next->residual;
