@@ -3,7 +3,8 @@
 // torque removes as it approaches the restoring torque T_m of eqs 49-53:
 //   zeta_e (1 - (T / (s T_m))^k) for T < s T_m, added in the direction of gravity.
 // k = 1 (the default) fades linearly; k > 1 holds the sag until near s T_m and then lets go, as a
-// hub that lifts off at once; k < 1 lifts it early and gradually.
+// hub that lifts off at once. Not below 1: a sag that drops at the first torque and lingers to
+// s T_m has no mechanism, and on a stepped torque ramp it would trade against zeta_e.
 #include <cmath>
 
 #include "core/effects/registration.h"
@@ -22,7 +23,7 @@ const EffectInfo kInfo{
       0.2, 3.0, 1.0, 1.0, {0.5, 2.0}},
      {"gravity_direction_rad", "rad", "direction of the sag, as beta", -M_PI, M_PI, M_PI / 2,
       M_PI / 2, {}},
-     {"fade_sharpness", "-", "k, how abruptly the hub lifts off: 1 - (T / (s T_m))^k", 0.2, 20.0, 1.0, 1.0, {0.5, 10.0}}}};
+     {"fade_sharpness", "-", "k, how abruptly the hub lifts off: 1 - (T / (s T_m))^k", 1.0, 20.0, 1.0, 1.0, {1.0, 10.0}}}};
 
 class Eccentricity final : public Effect {
  public:
