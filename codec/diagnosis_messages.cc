@@ -56,11 +56,11 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
   v1::RoundRecord r;
   for (const std::string& e : round.model_effects) r.add_model_effects(e);
   r.set_rmse_nm(round.rmse_nm);
-  r.set_noise_y_nm(round.noise_sigma_nm(0));
-  r.set_noise_z_nm(round.noise_sigma_nm(1));
-  r.set_noise_rmse_nm(round.noise_rmse_nm);
+  r.set_noise_y_nm(round.noise.sigma_nm(0));
+  r.set_noise_z_nm(round.noise.sigma_nm(1));
+  r.set_noise_rmse_nm(round.noise.pooled_sigma_nm());
   r.set_systematic(round.systematic);
-  r.set_outcome(to_string(round.outcome));
+  r.set_outcome(gc::to_string(round.outcome));
   for (const CandidateScore& c : round.ranking) *r.add_ranking() = to_message(c);
   if (round.claimed) {
     r.mutable_claimed()->set_effect(round.claimed->info->name);
@@ -86,18 +86,6 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
 }
 
 }  // namespace
-
-const char* to_string(RoundOutcome outcome) {
-  switch (outcome) {
-    case RoundOutcome::effect_found: return "effect_found";
-    case RoundOutcome::indistinguishable: return "indistinguishable";
-    case RoundOutcome::noise: return "noise";
-    case RoundOutcome::unexplained: return "unexplained";
-    case RoundOutcome::partly_explained: return "partly_explained";
-    case RoundOutcome::formula_proposed: return "formula_proposed";
-  }
-  return "";
-}
 
 v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
   v1::DiagnosisResult r;

@@ -11,7 +11,4 @@ namespace gc::codec {
 /// the recording's name and the rows its reader excluded.
 gearcoupling::v1::DiagnosisResult to_message(const Diagnosis& diagnosis);
 
-/// "effect_found", "indistinguishable", "noise", "unexplained".
-const char* to_string(RoundOutcome outcome);
-
 }  // namespace gc::codec

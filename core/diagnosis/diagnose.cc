@@ -179,18 +179,16 @@ bool effect_explains_part(const CandidateScore& effect, const CandidateScore& fo
 /// `residual`: the model's on `rows`.
 DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
                             std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
-                            const std::vector<std::size_t>& search, const Folds& folds,
-                            const ParallelFor& parallel, const CouplingModel& given, const DiagnosisSettings& settings) {
+                            const std::vector<std::size_t>& search, const std::vector<std::size_t>& signature_rows,
+                            const Folds& folds, const ParallelFor& parallel, const CouplingModel& given,
+                            const DiagnosisSettings& settings) {
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
   round.noise = estimate_noise(residual);
-  round.noise_sigma_nm = round.noise.sigma_nm;
   const double noise_ms = round.noise.sigma_nm.squaredNorm() / 2.0;
   const double all_ms = pooled_mean_square(residual);
-  round.noise_rmse_nm = std::sqrt(noise_ms);
   round.rmse_nm = std::sqrt(all_ms);
-  // On at most the refit rows, evenly spaced: the partial-dependence backfits are per input.
-  const std::vector<std::size_t> signature_rows = evenly_spaced(rows, settings.refit_rows);
+  // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
   round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
                                        round.noise.variance_inflation());
   round.systematic = is_systematic(all_ms, noise_ms, rows.size(), round.noise, round.signature);
@@ -229,7 +227,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.outcome = RoundOutcome::formula_proposed;
   } else {
     round.alike = alike_effects(model, round.ranking, base, folds, base_ms, noise_ms, observations, rows,
-                                round.noise_rmse_nm, settings);
+                                round.noise.pooled_sigma_nm(), settings);
     round.outcome = !plausible(round.ranking.front()) ? RoundOutcome::partly_explained
                     : round.alike.empty()             ? RoundOutcome::effect_found
                                                       : RoundOutcome::indistinguishable;
@@ -371,6 +369,18 @@ void revisit_claims(CouplingModel& model, DiagnosisRound& round, std::vector<std
 
 }  // namespace
 
+const char* to_string(RoundOutcome outcome) {
+  switch (outcome) {
+    case RoundOutcome::effect_found: return "effect_found";
+    case RoundOutcome::indistinguishable: return "indistinguishable";
+    case RoundOutcome::noise: return "noise";
+    case RoundOutcome::unexplained: return "unexplained";
+    case RoundOutcome::partly_explained: return "partly_explained";
+    case RoundOutcome::formula_proposed: return "formula_proposed";
+  }
+  return "";
+}
+
 const CandidateScore& DiagnosisRound::chosen() const { return formula_chosen ? *formula : ranking.front(); }
 
 Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
@@ -409,7 +419,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   }
   CouplingModel current = model;
   for (int r = 0; r < settings.max_rounds; ++r) {
-    DiagnosisRound round = search_round(current, residual, observations, rows, search, folds, parallel, model, settings);
+    DiagnosisRound round = search_round(current, residual, observations, rows, search, refit, folds, parallel, model, settings);
     const bool claims = round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained;
     if (claims) round.claimed = refit_claim(current, round, observations, rows, residual, refit, parallel, settings);
     std::optional<ModelResiduals> next;

@@ -86,6 +86,9 @@ enum class RoundOutcome {
   formula_proposed,   ///< no effect explains it; a formula of physical terms does
 };
 
+/// "effect_found", "indistinguishable", "noise", "unexplained", "partly_explained", "formula_proposed".
+const char* to_string(RoundOutcome outcome);
+
 struct AlikeEffect {
   std::string name;
   double correlation = 0.0;       ///< of its held-out corrections with the best's
@@ -96,9 +99,7 @@ struct AlikeEffect {
 struct DiagnosisRound {
   std::vector<std::string> model_effects;  ///< the model searched from
   double rmse_nm = 0.0;                    ///< the model's pooled RMSE over all usable rows
-  Eigen::Vector2d noise_sigma_nm = Eigen::Vector2d::Zero();  ///< per channel (variogram fit)
-  double noise_rmse_nm = 0.0;              ///< pooled noise sigma
-  NoiseEstimate noise;                     ///< sigma and lag-1 autocorrelation per channel
+  NoiseEstimate noise;                     ///< sigma and lag-1 autocorrelation per channel (variogram fit)
   bool systematic = false;                 ///< the residual is more than noise
   ResidualSignature signature;             ///< of the model's residual, all usable rows
   std::vector<CandidateScore> ranking;     ///< by held-out RMSE, best first; failures last

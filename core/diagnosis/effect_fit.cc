@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/diagnosis/model_residuals.h"
@@ -10,6 +9,7 @@
 #include "core/diagnosis/parameter_identifiability.h"
 #include "core/diagnosis/pattern_search.h"
 #include "core/diagnosis/start_points.h"
+#include "core/diagnosis/verdict_text.h"
 #include "core/model_error.h"
 
 namespace gc {
@@ -95,13 +95,6 @@ std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const Fit
   return starts;
 }
 
-std::string number(double v) {
-  std::ostringstream text;
-  text.precision(3);
-  text << v;
-  return text.str();
-}
-
 /// Within 1 % of the box's width from an edge: the polish stops short of a bound by about its step.
 bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
 
@@ -110,12 +103,12 @@ bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
 std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, int i, double unit) {
   if (!on_edge(unit) || !box.at_physical_bound(i, unit)) return "";
   if ((unit <= 0.5 ? spec.lower : spec.upper) == spec.neutral) return "";
-  return unit <= 0.5 ? "at its lower bound " + number(spec.lower) + " " + spec.unit
-                     : "at its upper bound " + number(spec.upper) + " " + spec.unit;
+  return unit <= 0.5 ? "at its lower bound " + short_number(spec.lower) + " " + spec.unit
+                     : "at its upper bound " + short_number(spec.upper) + " " + spec.unit;
 }
 
 std::string implausible_note(const ParameterSpec& spec, double low, double high) {
-  return "outside its plausible range " + number(low) + " to " + number(high) + " " + spec.unit;
+  return "outside its plausible range " + short_number(low) + " to " + short_number(high) + " " + spec.unit;
 }
 
 /// Estimates in physical units: s^2 (J'J)^-1 on the free parameters, scaled by the bounds.

@@ -86,7 +86,7 @@ std::vector<bool> first_terms(const std::vector<Eigen::Index>& order, std::size_
 
 int count(const std::vector<bool>& keep) { return static_cast<int>(std::count(keep.begin(), keep.end(), true)); }
 
-/// Per search row, the held-out residual of the formula chosen by `choose` on each fold's
+/// Per search row, the held-out residual of the formula `choose(f, x, y)` picks for fold f from its
 /// training rows.
 template <typename Choose>
 Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& residual, const Folds& folds, Choose choose) {
@@ -96,7 +96,7 @@ Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& resi
   for (std::size_t f = 0; f < folds.training.size(); ++f) {
     const Eigen::MatrixXd xt = stacked_rows(x, folds.training[f], n);
     const Eigen::MatrixXd yt = stacked_rows(y, folds.training[f], n);
-    const Eigen::VectorXd c = solve_on(xt, yt.col(0), choose(xt, yt.col(0)));
+    const Eigen::VectorXd c = solve_on(xt, yt.col(0), choose(f, xt, yt.col(0)));
     const Eigen::MatrixXd xh = stacked_rows(x, folds.held_out[f], n);
     const Eigen::VectorXd prediction = xh * c;
     const std::size_t m = folds.held_out[f].size();
@@ -151,7 +151,7 @@ void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen:
     std::vector<bool> without = support;
     without[j] = false;
     const auto fixed = [](const std::vector<bool>& keep) {
-      return [keep](const Eigen::MatrixXd&, const Eigen::VectorXd&) { return keep; };
+      return [keep](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return keep; };
     };
     const Eigen::MatrixX2d with_it = held_out(z, residual, stretches, fixed(support));
     const Eigen::MatrixX2d without_it = held_out(z, residual, stretches, fixed(without));
@@ -260,10 +260,14 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   const Eigen::VectorXd y = stacked(residual);
   // The path: formulas of 0, 1, ... max_terms terms, each fold choosing its own terms on its
   // training rows, scored on its held-out rows.
+  // Forward selection is greedy, so the formula of m terms is the first m of the longest: each
+  // fold's order is found once, on the first pass, and cut for every m.
+  std::vector<std::vector<Eigen::Index>> order(folds.training.size());
   std::vector<std::pair<double, double>> scores;
   for (int m = 0; m <= settings.max_terms; ++m) {
-    const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
-      return first_terms(forward_order(xt, yt, m), static_cast<std::size_t>(m), z.cols());
+    const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](std::size_t f, const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
+      if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms);
+      return first_terms(order[f], static_cast<std::size_t>(m), z.cols());
     });
     scores.push_back(block_mean_square(r, folds));
   }
@@ -286,7 +290,8 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   score.fit = fit_formula(observations, rows, residual, terms, settings.variance_inflation);
   if (!score.fit) return std::nullopt;
   score.info = score.fit->info;
-  score.held_out_residual = held_out(z, residual, folds, [&](const Eigen::MatrixXd&, const Eigen::VectorXd&) { return support; });
+  score.held_out_residual =
+      held_out(z, residual, folds, [&](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return support; });
   score_held_out(score, residual, folds);
   return score;
 }

@@ -205,7 +205,6 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
     if (complete) inputs.push_back(bin_input(axis, std::move(x)));
   }
   const Eigen::MatrixX2d centred = residual.rowwise() - residual.colwise().mean();
-  out.mean_square_nm2 = centred.squaredNorm() / (2.0 * static_cast<double>(centred.rows()));
   const Eigen::MatrixX2d leftover = centred - backfit(inputs, centred);
   int used = 1;
   for (const BinnedInput& b : inputs) used += static_cast<int>(std::count_if(b.count.begin(), b.count.end(), [](auto c) { return c > 0; })) - 1;

@@ -48,7 +48,6 @@ struct InputSignature {
 
 struct ResidualSignature {
   std::vector<InputSignature> inputs;  ///< most explaining first
-  double mean_square_nm2 = 0.0;        ///< of the centred residual, both channels pooled [N²·m²]
   const InputSignature* find(const std::string& input) const;
   bool systematic() const;
 };

@@ -23,7 +23,7 @@ std::string channels(const Eigen::Vector2d& reduction) {
 
 std::string noise_text(const DiagnosisRound& round) {
   return "RMSE " + short_number(round.rmse_nm) + " N·m against a noise estimate of " +
-         short_number(round.noise_rmse_nm) + " N·m (lag-1 autocorrelation " + short_number(round.noise.phi.maxCoeff()) + ")";
+         short_number(round.noise.pooled_sigma_nm()) + " N·m (lag-1 autocorrelation " + short_number(round.noise.phi.maxCoeff()) + ")";
 }
 
 /// "c1 [formula1] + c2 [formula2]" with units and standard errors, then the mechanisms.
@@ -80,7 +80,7 @@ std::string signature_text(const ResidualSignature& signature) {
 
 std::string gain_text(const DiagnosisRound& round, const CandidateScore& c) {
   return "held-out RMSE falls " + percent(c.reduction) + " (" + short_number(round.search_base_rmse_nm) + " to " +
-         short_number(c.held_out_rmse_nm) + " N·m; noise " + short_number(round.noise_rmse_nm) + " N·m)";
+         short_number(c.held_out_rmse_nm) + " N·m; noise " + short_number(round.noise.pooled_sigma_nm()) + " N·m)";
 }
 
 }  // namespace

@@ -95,9 +95,9 @@ TEST_P(HiddenEffect, IsRankedFirstAndCutsTheHeldOutErrorByHalfOrToTheNoise) {
   const CandidateScore& hidden = *std::find_if(first.ranking.begin(), first.ranking.end(),
                                                [&](const CandidateScore& c) { return c.info->name == scenario.effect; });
   const bool halved = hidden.held_out_rmse_nm <= 0.5 * first.search_base_rmse_nm;
-  const bool at_noise = hidden.held_out_rmse_nm <= 1.1 * first.noise_rmse_nm;
+  const bool at_noise = hidden.held_out_rmse_nm <= 1.1 * first.noise.pooled_sigma_nm();
   EXPECT_TRUE(halved || at_noise) << "held-out RMSE " << hidden.held_out_rmse_nm << " from "
-                                  << first.search_base_rmse_nm << ", noise " << first.noise_rmse_nm;
+                                  << first.search_base_rmse_nm << ", noise " << first.noise.pooled_sigma_nm();
   // With it added, what is left is noise: nothing further is claimed.
   ASSERT_GE(d.rounds.size(), 2u);
   EXPECT_EQ(d.rounds[1].outcome, RoundOutcome::noise);
@@ -143,7 +143,7 @@ TEST(Diagnosis, ClaimsNothingWhenTheModelIsRightAndOnlyNoiseIsLeft) {
     EXPECT_EQ(d.rounds[0].outcome, RoundOutcome::noise);
     EXPECT_TRUE(d.added.empty());
     // The successive-difference estimate finds the 2 kN·m that was added, within 10 %.
-    EXPECT_NEAR(d.rounds[0].noise_rmse_nm, kNoiseNm, 0.1 * kNoiseNm);
+    EXPECT_NEAR(d.rounds[0].noise.pooled_sigma_nm(), kNoiseNm, 0.1 * kNoiseNm);
   }
 }
 

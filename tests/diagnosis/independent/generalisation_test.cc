@@ -152,24 +152,12 @@ std::vector<TableRow>& table() {
   return rows;
 }
 
-const char* codec_free_outcome(RoundOutcome o) {
-  switch (o) {
-    case RoundOutcome::effect_found: return "found";
-    case RoundOutcome::indistinguishable: return "indistinguishable";
-    case RoundOutcome::noise: return "noise";
-    case RoundOutcome::unexplained: return "unexplained";
-    case RoundOutcome::partly_explained: return "partly";
-    case RoundOutcome::formula_proposed: return "formula";
-  }
-  return "";
-}
-
 /// The rounds in a few words: "refine friction; noise", "formula (speed_on_z, constant_on_z); noise".
 std::string rounds_text(const Diagnosis& d) {
   std::string text = d.outlier_rows.empty() ? "" : std::to_string(d.outlier_rows.size()) + " outliers; ";
   for (std::size_t r = 0; r < d.rounds.size(); ++r) {
     const DiagnosisRound& round = d.rounds[r];
-    std::string what = codec_free_outcome(round.outcome);
+    std::string what = to_string(round.outcome);
     if (round.claimed && round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained) {
       if (round.formula_chosen) {
         what = "formula (";

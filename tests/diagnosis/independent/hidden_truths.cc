@@ -51,6 +51,19 @@ Truth base_truth() {
 }
 
 // The base model at inputs changed by `change` (a misalignment the sensors do not see, a lag...).
+/// The base model rebuilt around a changed coupling or contact options (not through an effect).
+Truth rebuilt(std::function<void(CouplingDefinition&, ContactOptions&)> change) {
+  return [change](const CouplingModel& base, const Inputs& in) {
+    CouplingDefinition coupling = base.base_coupling();
+    ContactOptions options = base.options();
+    change(coupling, options);
+    const CouplingModel truth(coupling, base.effects(), options);
+    std::vector<SensorMoments> out;
+    for (const MeasurementSample& s : in) out.push_back(truth.predict(s).moments);
+    return out;
+  };
+}
+
 Truth changed_inputs(std::function<MeasurementSample(const Inputs&, std::size_t)> change) {
   return per_sample([change](const CouplingModel& base, const Inputs& in, std::size_t i) {
     return base.predict(change(in, i)).moments;
@@ -177,28 +190,16 @@ std::vector<Recipe> recipes() {
   // eq 5's stiffness, through the coupling's Young's modulus, the model rebuilt around it.
   r.push_back({"rim_compliance", "mesh stiffness C C_rim / (C + C_rim), C_rim = 2.5 C (0.714 C)", "",
                LoadSequenceKind::moment_sweep,
-               [](const CouplingModel& base, const Inputs& in) {
-                 CouplingDefinition soft = base.base_coupling();
-                 soft.youngs_modulus_pa *= 2.5 / (1.0 + 2.5);
-                 const CouplingModel truth(soft, base.effects(), base.options());
-                 std::vector<SensorMoments> out;
-                 for (const MeasurementSample& s : in) out.push_back(truth.predict(s).moments);
-                 return out;
-               },
+               rebuilt([](CouplingDefinition& coupling, ContactOptions&) {
+                 coupling.youngs_modulus_pa *= 2.5 / (1.0 + 2.5);
+               }),
                coloured(), {{"compliance"}, {}, false, 1}});
 
   // A sleeve out of round by 30 um: every tooth pair separated by that much more (eq 11's z_o),
   // set on the contact options of a rebuilt model.
   r.push_back({"sleeve_out_of_round", "tooth separation z_o + 30 um", "",
                LoadSequenceKind::moment_sweep,
-               [](const CouplingModel& base, const Inputs& in) {
-                 ContactOptions options = base.options();
-                 options.spacing_error_m += 3e-5;
-                 const CouplingModel truth(base.base_coupling(), base.effects(), options);
-                 std::vector<SensorMoments> out;
-                 for (const MeasurementSample& s : in) out.push_back(truth.predict(s).moments);
-                 return out;
-               },
+               rebuilt([](CouplingDefinition&, ContactOptions& options) { options.spacing_error_m += 3e-5; }),
                white(), {{"spacing_errors"}, {}, false, 1}});
 
   // The load-application device lags the measurement by more at higher torque.
