@@ -48,6 +48,10 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
   return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
 }
 
+bool has_held_shape(const EffectInfo& info) {
+  return std::any_of(info.parameters.begin(), info.parameters.end(), [](const ParameterSpec& p) { return p.refine_only; });
+}
+
 /// The registration that refits `effect`: the library's, or an expression over its own terms.
 std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
   if (effect.name() == kExpressionEffect) {
@@ -72,7 +76,9 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
   }
   if (settings.refinements) {
     for (const auto& effect : model.effects()) {
-      if (!given.has_effect(effect->name())) continue;
+      // The given model's effects, and those an earlier round added with a shape held
+      // (ParameterSpec::refine_only), which only a refinement frees.
+      if (!given.has_effect(effect->name()) && !has_held_shape(effect->info())) continue;
       const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
       if (!registration || registration->info->parameters.empty()) continue;
       ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,

@@ -77,11 +77,27 @@ Eigen::MatrixXd full_jacobian(const EffectProblem& problem, const Eigen::MatrixX
 std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
                                          const Effect* current, int& evaluations) {
   std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};
-  if (current) candidates.push_back(problem.box.to_unit(current->values()));
+  if (current) {
+    const Eigen::VectorXd now = problem.box.to_unit(current->values());
+    candidates.push_back(now);
+    // A shape freed for the first time bends the fit away from the form the other values were
+    // found on: from them alone the descent stops at a shape barely bent, so try it bent too.
+    for (int i = 0; i < problem.box.size(); ++i) {
+      if (!problem.box.info().parameters[static_cast<std::size_t>(i)].refine_only) continue;
+      for (const double u : {0.15, 0.3, 0.5}) {
+        Eigen::VectorXd bent = now;
+        bent(i) = u;
+        candidates.push_back(bent);
+      }
+    }
+  }
   std::vector<double> neutral;
   for (const ParameterSpec& spec : problem.box.info().parameters) neutral.push_back(spec.neutral);
   candidates.push_back(problem.box.to_unit(neutral));
   for (const Eigen::VectorXd& x : halton_points(problem.box.size(), settings.probe_points)) candidates.push_back(x);
+  for (Eigen::VectorXd& x : candidates) {  // a held parameter starts, and stays, at its default
+    for (int i = 0; i < problem.box.size(); ++i) if (!problem.free[static_cast<std::size_t>(i)]) x(i) = problem.full(i);
+  }
   std::vector<std::pair<double, Eigen::VectorXd>> scored;
   for (const Eigen::VectorXd& x : candidates) {
     ++evaluations;
@@ -206,9 +222,13 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
   EffectProblem problem{base, registration,
                         ParameterBox::plausible(*registration.info, jam, current ? current->values() : std::vector<double>{}),
                         observations, rows, parallel, {}, {}, jam};
-  problem.free.assign(static_cast<std::size_t>(problem.box.size()), true);
   problem.full = problem.box.defaults();
   std::vector<std::string> notes(static_cast<std::size_t>(problem.box.size()));
+  for (const ParameterSpec& spec : registration.info->parameters) {
+    const bool held = spec.refine_only && !current;
+    problem.free.push_back(!held);
+    if (held) notes[problem.free.size() - 1] = "a shape, held at its default until the effect is refined";
+  }
   int evaluations = 0;
   if (problem.box.size() == 0) {  // a switch (e.g. continuous_quarter_sums): nothing to fit
     const auto r = problem.residual(problem.full);

@@ -43,6 +43,11 @@ struct ParameterSpec {
   double neutral = 0.0;       ///< the value at which the effect does nothing
   double default_value = 0.0; ///< the value used when a configuration omits it
   PlausibleRange plausible;   ///< unbounded: every value within the bounds is plausible
+  /// A shape parameter that diagnose holds at its default when it adds the effect, and frees only
+  /// when it refines an effect the model already has: the effect's main parameters are found first,
+  /// on the paper's form, and the shape then bends it (a free shape at the first fit trades with
+  /// them and finds poorer optima).
+  bool refine_only = false;
 };
 
 /// The plausible range in the parameter's unit for a coupling of jam angle `jam_angle_rad`,

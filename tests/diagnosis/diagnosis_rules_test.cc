@@ -210,5 +210,30 @@ TEST(DiagnosisRules, DoesNotTakeTheSawtoothForAnEffect) {
   for (const auto& e : paper.added) EXPECT_NE(e->name(), "continuous_quarter_sums") << paper.summary;
 }
 
+// A shape parameter (ParameterSpec::refine_only) is held at its default when its effect is added,
+// so the effect is found on the paper's form first, and a later round frees it by refining the
+// added effect: a hub that lifts off abruptly (k = 4) is first fitted as the linear fade, then bent.
+TEST(DiagnosisRules, AddsAnEffectOnThePapersFormAndThenFreesItsShape) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const CouplingModel truth = model.with_effect(make_effect(
+      "eccentricity", {{"eccentric_misalignment_rad", 0.002}, {"gravity_direction_rad", 1.9}, {"fade_sharpness", 4.0}}));
+  const Diagnosis d = testing::diagnose_on_threads(
+      model, record(truth, testing::paper_sequence(testing::nrel_upwind(), LoadSequenceKind::torque_sweep), 59));
+  SCOPED_TRACE(d.summary);
+  ASSERT_GE(d.rounds.size(), 2u);
+  ASSERT_TRUE(d.rounds[0].claimed.has_value());
+  EXPECT_EQ(d.rounds[0].chosen().kind, CandidateKind::addition);
+  EXPECT_EQ(d.rounds[0].claimed->info->name, "eccentricity");
+  EXPECT_EQ(d.rounds[0].claimed->effect->value("fade_sharpness"), 1.0);
+  EXPECT_NE(d.summary.find("fade_sharpness = 1 [held: a shape, held at its default until the effect is refined]"),
+            std::string::npos);
+  ASSERT_TRUE(d.rounds[1].claimed.has_value());
+  EXPECT_EQ(d.rounds[1].chosen().kind, CandidateKind::refinement);
+  EXPECT_EQ(d.rounds[1].claimed->info->name, "eccentricity");
+  EXPECT_GT(d.rounds[1].claimed->effect->value("fade_sharpness"), 2.0);
+  ASSERT_EQ(d.added.size(), 1u);
+  EXPECT_GT(d.added[0]->value("fade_sharpness"), 2.0);
+}
+
 }  // namespace
 }  // namespace gc
