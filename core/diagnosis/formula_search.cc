@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/diagnosis/cycle_period.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
@@ -162,11 +163,18 @@ void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen:
 }  // namespace
 
 TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
-                       const Eigen::MatrixX2d& residual) {
+                       const Eigen::MatrixX2d& residual, const std::vector<std::string>& extra) {
   TermDesign design;
   const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
   std::vector<Eigen::VectorXd> columns;
-  for (const ExpressionTerm& term : expression_terms()) {
+  std::vector<const ExpressionTerm*> offered;
+  for (const ExpressionTerm& term : expression_terms()) offered.push_back(&term);
+  for (const std::string& name : extra) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (term && std::find(offered.begin(), offered.end(), term) == offered.end()) offered.push_back(term);
+  }
+  for (const ExpressionTerm* t : offered) {
+    const ExpressionTerm& term = *t;
     Eigen::VectorXd column(2 * n);
     bool complete = true;
     for (Eigen::Index k = 0; k < n && complete; ++k) {
@@ -188,7 +196,12 @@ TermDesign term_design(std::span<const RecordedSample> observations, std::span<c
 std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
                                      double variance_inflation) {
-  const TermDesign all = term_design(observations, rows, residual);
+  std::vector<std::string> cycles;  // terms outside the catalogue
+  for (const std::string& name : terms) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (term && term->period_s > 0.0) cycles.push_back(name);
+  }
+  const TermDesign all = term_design(observations, rows, residual, cycles);
   const auto design_for = [&all](const EffectInfo& info) -> std::optional<Eigen::MatrixXd> {
     Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(info.parameters.size()));
     for (std::size_t j = 0; j < info.parameters.size(); ++j) {
@@ -251,7 +264,8 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                 const Folds& folds, const FormulaSettings& settings) {
-  const TermDesign design = term_design(observations, rows, residual);
+  const std::optional<double> cycle = dominant_cycle_period(observations, rows, residual);
+  const TermDesign design = term_design(observations, rows, residual, cycle ? cycle_term_names(*cycle) : std::vector<std::string>{});
   if (design.terms.empty()) return std::nullopt;
   // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
   const Eigen::VectorXd scale =

@@ -6,8 +6,10 @@
 // (each fold selects on its own training rows) with the one-standard-error rule (the fewest terms
 // within one standard error of the best). Forward selection rather than thresholded least squares
 // (SINDy's STLSQ): the catalogue writes one mechanism in several frames that correlate on a
-// recording of a few directions, and thresholding kept combinations of them where one term did. The chosen terms are then scored like any candidate: refitted
-// on each fold's training rows, their held-out residual tested against the base model's.
+// recording of a few directions, and thresholding kept combinations of them where one term did.
+// Beside the catalogue, the time_cycle terms of the residual's dominant slow period
+// (core/diagnosis/cycle_period.h) are offered. The chosen terms are then scored like any candidate:
+// refitted on each fold's training rows, their held-out residual tested against the base model's.
 #pragma once
 
 #include <optional>
@@ -30,13 +32,14 @@ struct FormulaSettings {
 };
 
 /// The terms every listed row can evaluate, as columns: rows k (M_sy') and n + k (M_sz') for
-/// observations[rows[k]], with the model's moments taken as measured minus `residual`.
+/// observations[rows[k]], with the model's moments taken as measured minus `residual`. The
+/// catalogue's terms, then `extra` (time_cycle terms, made for a period).
 struct TermDesign {
   std::vector<std::string> terms;
   Eigen::MatrixXd columns;  ///< 2n x terms [N·m per coefficient unit]
 };
 TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
-                       const Eigen::MatrixX2d& residual);
+                       const Eigen::MatrixX2d& residual, const std::vector<std::string>& extra = {});
 
 /// The formula candidate for `residual` on `rows` (the search rows, in time order, as `folds` cut
 /// them); nullopt when the sparse regression keeps no term.

@@ -1,5 +1,6 @@
 #include "core/effects/expression.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -21,7 +22,9 @@ EffectInfo make_info(const std::vector<std::string>& terms) {
     if (!term) {
       std::string known;
       for (const ExpressionTerm& t : expression_terms()) known += (known.empty() ? "" : ", ") + t.name;
-      throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + name, "unknown term; the terms are: " + known);
+      throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + name,
+                         "unknown term; the terms are: " + known +
+                             ", and time_cycle_<P>s_<sin|cos>_on_<y|z> for a period P of 2 to 1000000 whole seconds");
     }
     info.parameters.push_back({term->name, term->coefficient_unit, term->formula, -term->bound, term->bound, 0.0, 0.0, {}});
   }
@@ -34,7 +37,14 @@ std::vector<std::string> in_catalogue_order(const std::vector<std::string>& term
   for (const ExpressionTerm& t : expression_terms()) {
     for (const std::string& name : terms) if (name == t.name) { ordered.push_back(name); break; }
   }
-  for (const std::string& name : terms) if (!find_expression_term(name)) ordered.push_back(name);  // make_info names it
+  // Then the time_cycle terms (made on use, not in the catalogue) and unknown names (make_info
+  // names them), sorted.
+  std::vector<std::string> rest;
+  for (const std::string& name : terms) {
+    if (std::find(ordered.begin(), ordered.end(), name) == ordered.end()) rest.push_back(name);
+  }
+  std::sort(rest.begin(), rest.end());
+  ordered.insert(ordered.end(), rest.begin(), rest.end());
   return ordered;
 }
 

@@ -1,6 +1,12 @@
 #include "core/effects/expression_terms.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numbers>
 
 namespace gc {
 namespace {
@@ -101,6 +107,9 @@ constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
 constexpr int kTimesMoment = kFrameCount - 2;  ///< this and the next scale with the model's moment
 // Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
 constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
+// The time_cycle terms: scalar kCycle, frame the same four (sin/cos on y/z) as the revolution's.
+constexpr int kCycle = -2;
+constexpr double kShortestCycleS = 2.0, kLongestCycleS = 1e6;
 
 Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMoments& m) {
   const Eigen::Vector2d moment(m.y_nm, m.z_nm);
@@ -147,6 +156,48 @@ std::vector<ExpressionTerm> make_terms() {
   return terms;
 }
 
+/// sin or cos of `angle` on one channel, as `frame` (kSinY .. kCosZ) says.
+Eigen::Vector2d harmonic(int frame, double angle) {
+  switch (frame) {
+    case kSinY: return Eigen::Vector2d(std::sin(angle), 0.0);
+    case kCosY: return Eigen::Vector2d(std::cos(angle), 0.0);
+    case kSinZ: return Eigen::Vector2d(0.0, std::sin(angle));
+    default: return Eigen::Vector2d(0.0, std::cos(angle));
+  }
+}
+
+constexpr std::string_view kCyclePrefix = "time_cycle_";
+constexpr std::pair<std::string_view, int> kCycleSuffixes[] = {
+    {"s_sin_on_y", kSinY}, {"s_cos_on_y", kCosY}, {"s_sin_on_z", kSinZ}, {"s_cos_on_z", kCosZ}};
+
+std::string period_text(double period_s) { return std::to_string(static_cast<long long>(period_s)); }
+
+ExpressionTerm cycle_term(double period_s, std::string_view suffix, int frame) {
+  const bool sine = suffix.find("sin") != std::string_view::npos;
+  const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
+  return {std::string(kCyclePrefix) + period_text(period_s) + std::string(suffix),
+          std::string(sine ? "sin" : "cos") + "(2 pi t / " + period_text(period_s) + " s) on " + channel,
+          "N·m", 1e7,
+          "a moment that swings with time alone on a slow cycle: zero drift of the strain-gauge bridge with the "
+          "cell's temperature control (the air or oil cycling about its set point), or a slow rig oscillation; on "
+          "one channel, so more likely a sensor than the coupling",
+          kCycle, frame, period_s};
+}
+
+/// The time_cycle term `name` stands for, or nullopt: "time_cycle_<whole seconds>s_<sin|cos>_on_<y|z>".
+std::optional<ExpressionTerm> parse_cycle_term(std::string_view name) {
+  if (name.substr(0, kCyclePrefix.size()) != kCyclePrefix) return std::nullopt;
+  name.remove_prefix(kCyclePrefix.size());
+  long long period = 0;
+  const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), period);
+  if (error != std::errc() || end == name.data() || name.front() == '0') return std::nullopt;  // one spelling a period
+  const std::string_view suffix(end, static_cast<std::size_t>(name.data() + name.size() - end));
+  const double p = static_cast<double>(period);
+  if (p < kShortestCycleS || p > kLongestCycleS) return std::nullopt;
+  for (const auto& [s, frame] : kCycleSuffixes) if (suffix == s) return cycle_term(p, s, frame);
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sample, const SensorMoments& model) const {
@@ -155,6 +206,7 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     if (!s) return std::nullopt;
     return *s * direction(frame, sample, model);
   }
+  if (scalar == kCycle) return harmonic(frame, 2.0 * std::numbers::pi * sample.time_s / period_s);
   switch (frame) {
     case kGainYY: return Eigen::Vector2d(model.y_nm, 0.0);
     case kGainZZ: return Eigen::Vector2d(0.0, model.z_nm);
@@ -163,13 +215,7 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     default: break;
   }
   if (!sample.rotation_phase_rad) return std::nullopt;
-  const double p = *sample.rotation_phase_rad;
-  switch (frame) {
-    case kSinY: return Eigen::Vector2d(std::sin(p), 0.0);
-    case kCosY: return Eigen::Vector2d(std::cos(p), 0.0);
-    case kSinZ: return Eigen::Vector2d(0.0, std::sin(p));
-    default: return Eigen::Vector2d(0.0, std::cos(p));
-  }
+  return harmonic(frame, *sample.rotation_phase_rad);
 }
 
 const std::vector<ExpressionTerm>& expression_terms() {
@@ -179,7 +225,21 @@ const std::vector<ExpressionTerm>& expression_terms() {
 
 const ExpressionTerm* find_expression_term(std::string_view name) {
   for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return &t;
-  return nullptr;
+  std::optional<ExpressionTerm> cycle = parse_cycle_term(name);
+  if (!cycle) return nullptr;
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<const ExpressionTerm>, std::less<>> made;
+  std::lock_guard lock(mutex);
+  auto& slot = made[cycle->name];
+  if (!slot) slot = std::make_unique<const ExpressionTerm>(std::move(*cycle));
+  return slot.get();
+}
+
+std::vector<std::string> cycle_term_names(double period_s) {
+  const double p = std::clamp(std::round(period_s), kShortestCycleS, kLongestCycleS);
+  std::vector<std::string> names;
+  for (const auto& [suffix, frame] : kCycleSuffixes) names.push_back(cycle_term(p, suffix, frame).name);
+  return names;
 }
 
 }  // namespace gc

@@ -3,7 +3,9 @@
 //   term(sample) = s(sample) * d(sample),   s a scalar with a unit, d a unit 2-vector (M_sy', M_sz'),
 // so that "a moment along the model's moment direction, proportional to T zeta" is one term and
 // its coefficient has a unit (N·m per unit of s). A few terms take the model's own moments instead
-// (gain and cross-talk), and the rotation phase gives the once-per-revolution harmonics.
+// (gain and cross-talk), and the rotation phase gives the once-per-revolution harmonics. A slow
+// cycle in time (a zero that swings with the cell's temperature control) is a term whose period is
+// part of its name: time_cycle_<P>s_<sin|cos>_on_<y|z>.
 // The same catalogue serves the discrepancy search and the `expression` effect that adds a found
 // formula to a model file, so what was fitted is what is added.
 #pragma once
@@ -32,11 +34,16 @@ struct ExpressionTerm {
   // What the term is made of (see expression_terms.cc).
   int scalar = 0;
   int frame = 0;
+  double period_s = 0.0;  ///< of a time_cycle term [s]; 0 for the others
 };
 
 /// Every term, in a fixed order.
 const std::vector<ExpressionTerm>& expression_terms();
-/// nullptr when no term has that name.
+/// nullptr when no term has that name. A time_cycle term of a period of 2 s to 1e6 s in whole
+/// seconds is made on first use and lives as long as the process.
 const ExpressionTerm* find_expression_term(std::string_view name);
+
+/// The four time_cycle terms (sin and cos on each channel) of `period_s`, rounded to whole seconds.
+std::vector<std::string> cycle_term_names(double period_s);
 
 }  // namespace gc

@@ -7,6 +7,7 @@
 
 #include "core/coupling_geometry.h"
 #include "core/diagnosis/claim_review.h"
+#include "core/diagnosis/cycle_period.h"
 #include "core/diagnosis/formula_search.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/effects/expression.h"
@@ -233,6 +234,53 @@ TEST(DiagnosisRules, AddsAnEffectOnThePapersFormAndThenFreesItsShape) {
   EXPECT_GT(d.rounds[1].claimed->effect->value("fade_sharpness"), 2.0);
   ASSERT_EQ(d.added.size(), 1u);
   EXPECT_GT(d.added[0]->value("fade_sharpness"), 2.0);
+}
+
+// A bridge zero that swings with the cell's temperature control: a 3 kN·m sine of 47 s on M_sz'
+// with a trend, under AR(1) noise. The periodogram finds the period; the formula takes it, and
+// nothing in the same noise without the cycle.
+TEST(DiagnosisRules, FindsASlowCycleInTimeAndItsPeriod) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<RecordedSample> observations = record(model, sweeps(testing::nrel_upwind()), 61);
+  double ar = 0.0;
+  std::uint64_t state = 12345;
+  for (RecordedSample& o : observations) {  // coloured noise of its own, beside synth's white
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    ar = 0.9 * ar + 600.0 * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+    o.measured.z_nm += ar;
+  }
+  const std::vector<std::size_t> rows = all_rows(observations.size());
+  const Folds folds = blocked_folds(rows.size(), 5, 20);
+  const Eigen::MatrixX2d noise_only = model_residuals(model, observations, rows, serial_for()).residual;
+  const auto none = formula_candidate(observations, rows, noise_only, folds, {});
+  if (none) {
+    for (const ParameterEstimate& p : none->fit->parameters) EXPECT_EQ(p.name.rfind("time_cycle", 0), std::string::npos) << p.name;
+  }
+  for (RecordedSample& o : observations) {
+    o.measured.z_nm += 20.0 * o.input.time_s + 3000.0 * std::sin(2.0 * M_PI * o.input.time_s / 47.0 + 1.0);
+  }
+  const Eigen::MatrixX2d residual = model_residuals(model, observations, rows, serial_for()).residual;
+  EXPECT_EQ(dominant_cycle_period(observations, rows, residual), std::optional<double>(47.0));
+  const auto found = formula_candidate(observations, rows, residual, folds, {});
+  ASSERT_TRUE(found.has_value());
+  double sine = 0.0, cosine = 0.0;
+  for (const ParameterEstimate& p : found->fit->parameters) {
+    if (p.name == "time_cycle_47s_sin_on_z") sine = p.value;
+    if (p.name == "time_cycle_47s_cos_on_z") cosine = p.value;
+  }
+  // 3000 sin(a + 1) = 3000 cos(1) sin(a) + 3000 sin(1) cos(a)
+  EXPECT_NEAR(sine, 3000.0 * std::cos(1.0), 300.0);
+  EXPECT_NEAR(cosine, 3000.0 * std::sin(1.0), 300.0);
+  EXPECT_LT(found->held_out_rmse_nm, 1.1 * std::sqrt(pooled_mean_square(noise_only)));
+
+  // A residual that follows a speed swinging on a 23 s rhythm is the speed's: no cycle of 23 s.
+  for (RecordedSample& o : observations) {
+    o.input.speed_rpm = 12.0 + 2.0 * std::sin(2.0 * M_PI * o.input.time_s / 23.0);
+    o.measured.z_nm = model.predict(o.input).moments.z_nm + 3000.0 * (*o.input.speed_rpm - 12.0);
+  }
+  const Eigen::MatrixX2d drag = model_residuals(model, observations, rows, serial_for()).residual;
+  const std::optional<double> period = dominant_cycle_period(observations, rows, drag);
+  if (period) EXPECT_GT(std::abs(*period - 23.0), 3.0) << *period;
 }
 
 }  // namespace

@@ -92,5 +92,34 @@ TEST(ExpressionTerms, EveryTermHasAUnitABoundAndMechanisms) {
   EXPECT_NEAR(scaled.y(), 4.0, 1e-12);
 }
 
+// A slow cycle in time is a term whose period is in its name, made on first use: one spelling per
+// period in whole seconds, 2 s to 1e6 s; others are unknown terms, refused by name.
+TEST(ExpressionTerms, TimeCycleTermsCarryTheirPeriodInTheirName) {
+  const ExpressionTerm* sine = find_expression_term("time_cycle_70s_sin_on_z");
+  ASSERT_NE(sine, nullptr);
+  EXPECT_EQ(sine, find_expression_term("time_cycle_70s_sin_on_z")) << "one term object per name";
+  EXPECT_DOUBLE_EQ(sine->period_s, 70.0);
+  EXPECT_EQ(sine->formula, "sin(2 pi t / 70 s) on M_sz'");
+  MeasurementSample s;
+  s.time_s = 17.5;  // a quarter period
+  const Eigen::Vector2d v = *sine->value(s, {1.0, 2.0});
+  EXPECT_NEAR(v.x(), 0.0, 1e-12);
+  EXPECT_NEAR(v.y(), 1.0, 1e-12);
+  EXPECT_NEAR(find_expression_term("time_cycle_70s_cos_on_y")->value(s, {1.0, 2.0})->x(), 0.0, 1e-12);
+  for (const char* bad : {"time_cycle_1s_sin_on_y", "time_cycle_070s_sin_on_y", "time_cycle_70.5s_sin_on_y",
+                          "time_cycle_70s_tan_on_y", "time_cycle_s_sin_on_y", "time_cycle_2000000s_sin_on_y"}) {
+    EXPECT_EQ(find_expression_term(bad), nullptr) << bad;
+    EXPECT_EQ(field_of({{bad, 1.0}}).rfind(std::string("effects.expression.") + bad + ":", 0), 0u) << field_of({{bad, 1.0}});
+  }
+  EXPECT_EQ(cycle_term_names(69.6), (std::vector<std::string>{"time_cycle_70s_sin_on_y", "time_cycle_70s_cos_on_y",
+                                                              "time_cycle_70s_sin_on_z", "time_cycle_70s_cos_on_z"}));
+  // In a model, as any term: the expression adds c sin(2 pi t / P).
+  const CouplingModel plain(testing::nrel_upwind(), {make_effect("friction")});
+  const CouplingModel with = plain.with_effect(make_expression({{"time_cycle_70s_sin_on_z", 3000.0}}));
+  s.torque_nm = 1.2e6;
+  s.misalignment_rad = 0.004;
+  EXPECT_NEAR(with.predict(s).moments.z_nm, plain.predict(s).moments.z_nm + 3000.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace gc
