@@ -16,12 +16,30 @@ double load_sharing_ratio(double x) {
   return 1.0 - 1.0 / (2.0 * x);
 }
 
+namespace {
+
+// The ranges bound the work of one solve (max_iterations) and keep the tolerance meaningful:
+// a tolerance above 1e-3 would accept a q far from eq 22's and blame the torque for the tooth
+// loads that do not add up (issue 9).
+void validate(const LoadSharingOptions& options) {
+  require_in_range("options.load_sharing.tolerance", options.tolerance, kMinLoadSharingTolerance,
+                   kMaxLoadSharingTolerance);
+  if (options.max_iterations < 1 || options.max_iterations > kMaxLoadSharingIterations) {
+    throw InvalidInput("options.load_sharing.max_iterations", options.max_iterations,
+                       "[1, " + std::to_string(kMaxLoadSharingIterations) + "]");
+  }
+}
+
+[[noreturn]] void throw_cancelled(int iteration) {
+  throw Cancelled("load sharing (eqs 20-22) stopped by its caller before iteration " +
+                  std::to_string(iteration));
+}
+
+}  // namespace
+
 LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_m,
                                double separation_m, const LoadSharingOptions& options) {
-  require_positive("options.load_sharing.tolerance", options.tolerance);
-  if (options.max_iterations < 1) {
-    throw InvalidInput("options.load_sharing.max_iterations", options.max_iterations, "[1, inf)");
-  }
+  validate(options);
   LoadSharing result;
   if (separation_m <= 0.0) {  // aligned: z_o = 0, every tooth shares equally
     result.ze_over_zo = std::numeric_limits<double>::infinity();
@@ -40,6 +58,7 @@ LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_
   double q_prev = lo;
   double r_prev = residual(lo);
   for (int i = 1; i <= options.max_iterations; ++i) {
+    if (options.cancelled && options.cancelled()) throw_cancelled(i);
     if (std::abs(r) <= options.tolerance) {
       result.q = q;
       result.ze_over_zo = x_at_unit_q / q;

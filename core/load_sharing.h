@@ -2,11 +2,28 @@
 // the q that eq 22 returns for the resulting z_e / z_o.
 #pragma once
 
+#include <functional>
+
 namespace gc {
 
+/// Allowed tolerance on q [-]: the paper used 1e-3, the loosest allowed; below 1e-15 the
+/// rounding of eq 22 near q = 1 (a few ulp) can make the tolerance unreachable.
+inline constexpr double kMinLoadSharingTolerance = 1e-15;
+inline constexpr double kMaxLoadSharingTolerance = 1e-3;
+/// Most iterations a caller may ask for. The bracketed secant converges in 2-12 iterations
+/// on the NREL couplings; the cap bounds the cost of a request that never converges
+/// (10,000 iterations take well under a millisecond, docs/protocol.md).
+inline constexpr int kMaxLoadSharingIterations = 10000;
+
 struct LoadSharingOptions {
-  double tolerance = 1e-9;  ///< stop when |q_eq22 - q_assumed| <= tolerance [-] (paper: 1e-3)
-  int max_iterations = 100; ///< more is a NotConverged error, never a silent value
+  double tolerance = 1e-9;  ///< stop when |q_eq22 - q_assumed| <= tolerance [-] (paper: 1e-3),
+                            ///< in [kMinLoadSharingTolerance, kMaxLoadSharingTolerance]
+  int max_iterations = 100; ///< in [1, kMaxLoadSharingIterations]; more is a NotConverged
+                            ///< error, never a silent value
+  /// Asked before every iteration; true stops the solve with Cancelled. Lets a caller (the
+  /// service's per-calculation deadline, its shutdown) bound wall time while the core stays
+  /// free of clocks and threads. Empty: never cancelled. Must be cheap and must not throw.
+  std::function<bool()> cancelled;
 };
 
 struct LoadSharing {
@@ -23,7 +40,9 @@ double load_sharing_ratio(double ze_over_zo);
 /// separation z_o [m]: P_i = P_t' / q (eq 20), z_e = P_i / C (eq 10), q <- eq 22. The map
 /// q -> eq22(x(q)) is decreasing, so the fixed point is unique; each step keeps a bracket
 /// around it and falls back to bisection when a secant step would leave it. z_o = 0 (aligned)
-/// gives q = 1 at once. Throws NotConverged after options.max_iterations.
+/// gives q = 1 at once. Throws InvalidInput naming "options.load_sharing.<member>" for options
+/// out of range, NotConverged after options.max_iterations, Cancelled when
+/// options.cancelled() returns true.
 LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_m,
                                double separation_m, const LoadSharingOptions& options);
 

@@ -34,6 +34,14 @@ class NotConverged : public ModelError {
   using ModelError::ModelError;
 };
 
+/// The caller's cancellation predicate (LoadSharingOptions::cancelled) asked the core to stop:
+/// not a property of the inputs, so the caller decides what to report (the service: its
+/// per-calculation deadline or its shutdown).
+class Cancelled : public ModelError {
+ public:
+  using ModelError::ModelError;
+};
+
 /// A number for an error message: 6 significant digits, no trailing zeros ("0.00064").
 std::string format_number(double value);
 

@@ -19,20 +19,26 @@ void validate_operating_point(const CouplingGeometry& coupling, const OperatingP
   }
   require_finite("operating_point.direction_rad", point.direction_rad);
   require_in_range("operating_point.friction_coefficient", point.friction_coefficient, 0.0, 1.0);
-  const JamAngle& jam = coupling.jam_angle();
-  if (!std::isfinite(point.misalignment_rad) || point.misalignment_rad < 0.0 ||
-      point.misalignment_rad >= jam.angle_rad) {
-    std::ostringstream allowed;
-    allowed.precision(6);
-    allowed << "[0, " << jam.angle_rad << ") rad: below the jam angle of " << coupling.name()
-            << ", " << jam.angle_rad * 180.0 / M_PI << " deg (" << to_string(jam.governing)
-            << ", eqs 23-35)";
-    throw InvalidInput("operating_point.misalignment_rad", point.misalignment_rad, allowed.str());
-  }
+  require_below_jam_angle(coupling, "operating_point.misalignment_rad", point.misalignment_rad);
   if (point.friction_coefficient * std::tan(point.misalignment_rad) >= 1.0) {
     throw InvalidInput("operating_point.friction_coefficient", point.friction_coefficient,
                        "mu tan(zeta) < 1 (eq 37)");
   }
+}
+
+void require_below_jam_angle(const CouplingGeometry& coupling, const std::string& field,
+                             double misalignment_rad) {
+  const JamAngle& jam = coupling.jam_angle();
+  if (std::isfinite(misalignment_rad) && misalignment_rad >= 0.0 &&
+      misalignment_rad < jam.angle_rad) {
+    return;
+  }
+  std::ostringstream allowed;
+  allowed.precision(6);
+  allowed << "[0, " << jam.angle_rad << ") rad: below the jam angle of " << coupling.name()
+          << ", " << jam.angle_rad * 180.0 / M_PI << " deg (" << to_string(jam.governing)
+          << ", eqs 23-35)";
+  throw InvalidInput(field, misalignment_rad, allowed.str());
 }
 
 }  // namespace gc

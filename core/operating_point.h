@@ -1,6 +1,8 @@
 // The operating point every calculation takes: torque, misalignment and friction.
 #pragma once
 
+#include <string>
+
 namespace gc {
 
 class CouplingGeometry;
@@ -17,5 +19,10 @@ struct OperatingPoint {
 /// load case the model covers for `coupling`: finite values, 0 < T <= 1e12 N·m, 0 <= zeta < jam angle,
 /// 0 <= mu <= 1 and mu tan(zeta) < 1 (eq 37's denominator stays positive).
 void validate_operating_point(const CouplingGeometry& coupling, const OperatingPoint& point);
+
+/// Throws InvalidInput naming `field` unless 0 <= misalignment_rad < the coupling's jam angle:
+/// beyond it the coupling jams, so no contact, moment or measurement of the model exists.
+void require_below_jam_angle(const CouplingGeometry& coupling, const std::string& field,
+                             double misalignment_rad);
 
 }  // namespace gc

@@ -2,9 +2,12 @@
 
 #include "protocol/field_copy.h"
 
+#include <cstring>
 #include <optional>
+#include <string_view>
 
 #include "core/model_error.h"
+#include "protocol/reply_status.h"
 
 namespace gc::protocol {
 namespace {
@@ -19,6 +22,16 @@ double* wire_optional(const std::optional<double>& value) {
 std::optional<double> from_wire_optional(const double* value) {
   if (value == nullptr) return std::nullopt;
   return *value;
+}
+
+// The message shows the length and the first bytes only: the name may be megabytes long.
+std::string bounded_name(const std::string& field, const char* text) {
+  if (text == nullptr) return "";
+  const std::size_t bytes = std::strlen(text);
+  if (bytes <= kMaxNameBytes) return std::string(text, bytes);
+  throw InvalidInput(field, "\"" + echo_text(std::string_view(text, bytes), 64) +
+                                "\" is too long: allowed at most " +
+                                std::to_string(kMaxNameBytes) + " bytes");
 }
 
 }  // namespace
@@ -66,7 +79,7 @@ void to_wire(const CouplingDefinition& in, gearcoupling_CouplingDefinition& out)
 
 CouplingDefinition from_wire(const gearcoupling_CouplingDefinition& in) {
   CouplingDefinition out;
-  out.name = in.name != nullptr ? in.name : "";
+  out.name = bounded_name("coupling.name", in.name);
   coupling_numeric_fields(out, in, kFromWire);
   out.crown_radius_m = from_wire_optional(in.crown_radius_m);
   out.sleeve_root_diameter_m = from_wire_optional(in.sleeve_root_diameter_m);
@@ -86,7 +99,7 @@ void to_wire(const CouplingRef& in, gearcoupling_CouplingRef& out) {
 CouplingRef from_wire(const gearcoupling_CouplingRef& in) {
   switch (in._d) {
     case gearcoupling_COUPLING_FROM_CATALOGUE:
-      return CatalogueName{in._u.catalogue_name != nullptr ? in._u.catalogue_name : ""};
+      return CatalogueName{bounded_name("coupling.catalogue_name", in._u.catalogue_name)};
     case gearcoupling_COUPLING_INLINE:
       return from_wire(in._u.definition);
   }

@@ -1,29 +1,41 @@
 #include "service/compute.h"
 
 namespace gc::service {
+namespace {
 
-ToothContact compute(const CouplingGeometry& coupling,
-                     const protocol::ToothContactRequest& request) {
-  return tooth_contact(coupling, request.operating_point, request.options);
+ContactOptions cancellable(ContactOptions options, const CancelPredicate& cancelled) {
+  options.load_sharing.cancelled = cancelled;
+  return options;
+}
+
+}  // namespace
+
+ToothContact compute(const CouplingGeometry& coupling, const protocol::ToothContactRequest& request,
+                     const CancelPredicate& cancelled) {
+  return tooth_contact(coupling, request.operating_point,
+                       cancellable(request.options, cancelled));
 }
 
 protocol::JamAngleResult compute(const CouplingGeometry& coupling,
-                                 const protocol::JamAngleRequest&) {
+                                 const protocol::JamAngleRequest&, const CancelPredicate&) {
   return {coupling.jam_angle(), coupling.crown_radius_m(), coupling.crown_radius_derived()};
 }
 
 InducedMoments compute(const CouplingGeometry& coupling,
-                       const protocol::InducedMomentsRequest& request) {
-  return induced_moments(coupling, request.operating_point, request.options);
+                       const protocol::InducedMomentsRequest& request,
+                       const CancelPredicate& cancelled) {
+  return induced_moments(coupling, request.operating_point,
+                         cancellable(request.options, cancelled));
 }
 
 RestoringTorque compute(const CouplingGeometry& coupling,
-                        const protocol::RestoringTorqueRequest&) {
+                        const protocol::RestoringTorqueRequest&, const CancelPredicate&) {
   return restoring_torque(coupling);
 }
 
 FrictionEstimate compute(const CouplingGeometry& coupling,
-                         const protocol::FrictionEstimateRequest& request) {
+                         const protocol::FrictionEstimateRequest& request,
+                         const CancelPredicate&) {
   return estimate_friction(coupling, request.measurement);
 }
 

@@ -1,6 +1,10 @@
 // The core call behind each request: the same functions the in-process CLI calls, so a remote
-// result equals the in-process one bit for bit.
+// result equals the in-process one bit for bit. `cancelled` reaches the core's iterations
+// (LoadSharingOptions::cancelled): the service's deadline stops a calculation mid-way, and the
+// core throws gc::Cancelled. The calculations without an iteration ignore it.
 #pragma once
+
+#include <functional>
 
 #include "core/coupling_geometry.h"
 #include "protocol/jam_angle_result.h"
@@ -13,14 +17,22 @@
 
 namespace gc::service {
 
-ToothContact compute(const CouplingGeometry& coupling, const protocol::ToothContactRequest& request);
+using CancelPredicate = std::function<bool()>;
+
+ToothContact compute(const CouplingGeometry& coupling, const protocol::ToothContactRequest& request,
+                     const CancelPredicate& cancelled);
 /// The jam angle is part of the validated geometry (eqs 23-35 run once per coupling).
-protocol::JamAngleResult compute(const CouplingGeometry& coupling, const protocol::JamAngleRequest& request);
+protocol::JamAngleResult compute(const CouplingGeometry& coupling,
+                                 const protocol::JamAngleRequest& request,
+                                 const CancelPredicate& cancelled);
 InducedMoments compute(const CouplingGeometry& coupling,
-                       const protocol::InducedMomentsRequest& request);
+                       const protocol::InducedMomentsRequest& request,
+                       const CancelPredicate& cancelled);
 RestoringTorque compute(const CouplingGeometry& coupling,
-                        const protocol::RestoringTorqueRequest& request);
+                        const protocol::RestoringTorqueRequest& request,
+                        const CancelPredicate& cancelled);
 FrictionEstimate compute(const CouplingGeometry& coupling,
-                         const protocol::FrictionEstimateRequest& request);
+                         const protocol::FrictionEstimateRequest& request,
+                         const CancelPredicate& cancelled);
 
 }  // namespace gc::service

@@ -59,12 +59,12 @@ int main(int argc, char** argv) {
                                                     : std::filesystem::path(config.catalogue_dir);
     spdlog::info("config: domain={} threads={} catalogue_dir={} log_level={} status_interval={}s "
                  "stats_interval={}s lease={}s reply_match_timeout={}s reply_block={}s departed_hold={}s "
-                 "shutdown_grace={}s "
+                 "shutdown_grace={}s deadline={}s "
                  "CYCLONEDDS_URI={}",
                  config.domain, config.threads, catalogue_dir.string(), config.log_level,
                  config.status_interval_s, config.stats_log_interval_s, config.liveliness_lease_s,
                  config.reply_match_timeout_s, config.reply_block_s, config.departed_hold_s,
-                 config.shutdown_grace_s,
+                 config.shutdown_grace_s, config.calculation_deadline_s,
                  std::getenv("CYCLONEDDS_URI") ? std::getenv("CYCLONEDDS_URI") : "(unset)");
     if (std::getenv("CYCLONEDDS_URI") == nullptr) {
       spdlog::warn("CYCLONEDDS_URI is not set: Cyclone's defaults apply (every interface, "

@@ -36,6 +36,33 @@ Clock::duration seconds(double s) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
 }
 
+protocol::DeadlineExceeded deadline_exceeded(Calculation calculation, double deadline_s,
+                                             Clock::time_point received, const char* where) {
+  const double elapsed_s = std::chrono::duration<double>(Clock::now() - received).count();
+  return protocol::DeadlineExceeded(fmt::format(
+      "{} not answered within the service's deadline of {} s per calculation "
+      "(calculation_deadline_s): stopped {} after {:.3g} s; the instance is overloaded or the "
+      "request too costly, retry later or elsewhere",
+      protocol::to_string(calculation), deadline_s, where, elapsed_s));
+}
+
+// Runs `run(cancelled)` unless the request has already spent its time in the queue, with a
+// predicate the core's iterations ask (LoadSharingOptions::cancelled). So no request holds a
+// worker, or the drain at shutdown, past received + deadline_s, and the core knows no clock.
+template <typename Run>
+auto within_deadline(Calculation calculation, double deadline_s, Clock::time_point received,
+                     Run run) {
+  const Clock::time_point deadline = received + seconds(deadline_s);
+  if (Clock::now() >= deadline) {
+    throw deadline_exceeded(calculation, deadline_s, received, "in the queue");
+  }
+  try {
+    return run(CancelPredicate([deadline] { return Clock::now() >= deadline; }));
+  } catch (const Cancelled&) {
+    throw deadline_exceeded(calculation, deadline_s, received, "while computing");
+  }
+}
+
 }  // namespace
 
 Service::Service(const ServiceConfig& config, Catalogue catalogue)
@@ -130,9 +157,14 @@ void Service::answer(const gearcoupling_Correlation& correlation,
   bool ok = false;
   try {
     if (malformed) std::rethrow_exception(malformed);
-    std::optional<CouplingGeometry> storage;
-    const CouplingGeometry& coupling = catalogue_.resolve(request->coupling, storage);
-    const typename T::Result result = compute(coupling, *request);
+    const typename T::Result result =
+        within_deadline(kCalculation, config_.calculation_deadline_s, received,
+                        [&](const CancelPredicate& cancelled) {
+                          std::optional<CouplingGeometry> storage;
+                          const CouplingGeometry& coupling =
+                              catalogue_.resolve(request->coupling, storage);
+                          return compute(coupling, *request, cancelled);
+                        });
     protocol::to_wire(result, reply.result);
     reply.status = gearcoupling_STATUS_OK;
     reply.field = protocol::wire_string("");

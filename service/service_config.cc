@@ -71,6 +71,9 @@ void apply_config_file(const std::string& path, ServiceConfig& config) {
   if (file.has_shutdown_grace_s()) config.shutdown_grace_s = file.shutdown_grace_s();
   if (file.has_reply_block_s()) config.reply_block_s = file.reply_block_s();
   if (file.has_departed_hold_s()) config.departed_hold_s = file.departed_hold_s();
+  if (file.has_calculation_deadline_s()) {
+    config.calculation_deadline_s = file.calculation_deadline_s();
+  }
 }
 
 ServiceCommand parse_service_command(const std::vector<std::string>& args) {
@@ -116,6 +119,8 @@ ServiceCommand parse_service_command(const std::vector<std::string>& args) {
       c.departed_hold_s = parse_number(flag, value);
     } else if (flag == "--shutdown-grace") {
       c.shutdown_grace_s = parse_number(flag, value);
+    } else if (flag == "--deadline") {
+      c.calculation_deadline_s = parse_number(flag, value);
     } else {
       throw InvalidInput(flag, "unknown flag (see --help)");
     }
@@ -138,6 +143,9 @@ void validate(const ServiceConfig& c) {
   require_in_range("shutdown_grace_s", c.shutdown_grace_s, 0.0, 60.0);
   require_in_range("reply_block_s", c.reply_block_s, 0.001, 60.0);
   require_in_range("departed_hold_s", c.departed_hold_s, 0.0, 3600.0);
+  // Down to a microsecond so a test can make any computing request miss it; up to a minute,
+  // past which a client has long given up (rule 8 of docs/protocol.md).
+  require_in_range("calculation_deadline_s", c.calculation_deadline_s, 1e-6, 60.0);
 }
 
 std::string service_usage() {
@@ -146,7 +154,7 @@ std::string service_usage() {
 usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalogue DIR]
                             [--log-level LEVEL] [--status-interval S] [--stats-interval S]
                             [--lease S] [--reply-match-timeout S] [--reply-block S]
-                            [--departed-hold S] [--shutdown-grace S]
+                            [--departed-hold S] [--shutdown-grace S] [--deadline S]
 
   --config FILE          settings in protobuf text format (service/service_config.proto);
                          flags override it
@@ -164,6 +172,8 @@ usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalo
                          (killed, lease not yet expired) (default 0.5)
   --departed-hold S      then drop that client's replies for this long (default 5)
   --shutdown-grace S     after SIGINT/SIGTERM keep answering this long, then exit (default 0.2)
+  --deadline S           a request not answered this long after it arrived (queued or
+                         computing) gets STATUS_DEADLINE_EXCEEDED, 1e-6..60 (default 1)
 )";
 }
 

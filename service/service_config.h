@@ -23,6 +23,11 @@ struct ServiceConfig {
                                       ///< longer than any participant lease in use [s]
   double shutdown_grace_s = 0.2;      ///< after SIGINT/SIGTERM: keep answering requests already
                                       ///< on their way this long, then drain and exit [s]
+  /// Longest time from a request's arrival to its answer [s], in [1e-6, 60]: later, queued or
+  /// mid-iteration, it is answered STATUS_DEADLINE_EXCEEDED, so no request holds a worker (or
+  /// the drain at shutdown) longer. The largest allowed request computes in tens of ms at most
+  /// (docs/protocol.md), so the default only ever fires on an overloaded instance.
+  double calculation_deadline_s = 1.0;
 };
 
 /// What the command line asked for.
@@ -34,7 +39,7 @@ struct ServiceCommand {
 /// Parses `args` (without the program name): --config FILE is applied first wherever it
 /// appears, then --domain N, --threads N, --catalogue DIR (or --catalog), --log-level L,
 /// --status-interval S, --stats-interval S, --lease S, --reply-match-timeout S,
-/// --reply-block S, --departed-hold S, --shutdown-grace S, --help. Throws InvalidInput naming the flag or the file's field.
+/// --reply-block S, --departed-hold S, --shutdown-grace S, --deadline S, --help. Throws InvalidInput naming the flag or the file's field.
 ServiceCommand parse_service_command(const std::vector<std::string>& args);
 
 /// Reads a config file into `config` (fields it sets override). Errors name the file, line and

@@ -79,6 +79,22 @@ TEST(InputValidation, OperatingPointErrorsNameTheField) {
             "operating_point.friction_coefficient");
 }
 
+TEST(InputValidation, LooseToleranceIsBlamedNotTheTorque) {
+  // Issue 9: tolerance 1e308 accepted q = 1 at once, and the tooth loads that then did not add
+  // up were blamed on operating_point.torque_nm.
+  const CouplingGeometry g(nrel_upwind());
+  for (double tolerance : {1e308, 0.5}) {
+    ContactOptions options;
+    options.load_sharing.tolerance = tolerance;
+    EXPECT_EQ(field_of([&] { tooth_contact(g, {1e6, deg(0.3), 0.0, 0.1}, options); }),
+              "options.load_sharing.tolerance")
+        << tolerance;
+    EXPECT_EQ(field_of([&] { induced_moments(g, {1e6, deg(0.3), 0.0, 0.1}, options); }),
+              "options.load_sharing.tolerance")
+        << tolerance;
+  }
+}
+
 TEST(InputValidation, ExtremeButValidInputsGiveFiniteResults) {
   const CouplingGeometry g(nrel_upwind());
   for (double torque : {1e5, 1.5e6, 1e9}) {

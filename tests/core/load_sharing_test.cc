@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "core/model_error.h"
 
@@ -52,6 +54,61 @@ TEST(LoadSharing, NonConvergenceIsAnErrorNotAValue) {
 TEST(LoadSharing, RejectsNonsenseOptions) {
   EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {0.0, 10}), InvalidInput);
   EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {1e-6, 0}), InvalidInput);
+}
+
+/// The InvalidInput `options` raise: its field and message.
+std::pair<std::string, std::string> rejection(const LoadSharingOptions& options) {
+  try {
+    solve_load_sharing(31e3, 1.46e9, 2.8e-5, options);
+  } catch (const InvalidInput& e) {
+    return {e.field(), e.what()};
+  }
+  return {"(accepted)", ""};
+}
+
+TEST(LoadSharing, IterationsAreBoundedSoNoRequestRunsForever) {
+  // Issue 9: 2147483647 iterations with an unreachable tolerance held a worker indefinitely.
+  const auto [field, message] = rejection({1e-9, 2147483647});
+  EXPECT_EQ(field, "options.load_sharing.max_iterations");
+  EXPECT_NE(message.find("2147483647"), std::string::npos) << message;
+  EXPECT_NE(message.find("allowed [1, 10000]"), std::string::npos) << message;
+  EXPECT_EQ(rejection({1e-9, kMaxLoadSharingIterations + 1}).first,
+            "options.load_sharing.max_iterations");
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {1e-9, kMaxLoadSharingIterations}));
+}
+
+TEST(LoadSharing, ToleranceOutsideItsRangeIsRejectedNamingIt) {
+  for (double tolerance : {1e308, 2e-3, 1e-16, 1e-300, std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()}) {
+    const auto [field, message] = rejection({tolerance, 100});
+    EXPECT_EQ(field, "options.load_sharing.tolerance") << tolerance;
+    EXPECT_NE(message.find("allowed [1e-15, 0.001]"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {kMinLoadSharingTolerance, 100}));
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {kMaxLoadSharingTolerance, 100}));
+}
+
+TEST(LoadSharing, CancelPredicateIsAskedBeforeEveryIterationAndStopsTheSolve) {
+  int asked = 0;
+  LoadSharingOptions options{1e-15, 100};
+  options.cancelled = [&asked] { return ++asked == 2; };
+  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, options), Cancelled);
+  EXPECT_EQ(asked, 2);  // stopped at once, not at the end
+}
+
+TEST(LoadSharing, CancelPredicateThatNeverFiresChangesNothing) {
+  LoadSharingOptions plain{1e-12, 100};
+  LoadSharingOptions watched = plain;
+  int asked = 0;
+  watched.cancelled = [&asked] {
+    ++asked;
+    return false;
+  };
+  const LoadSharing a = solve_load_sharing(31e3, 1.46e9, 2.8e-5, plain);
+  const LoadSharing b = solve_load_sharing(31e3, 1.46e9, 2.8e-5, watched);
+  EXPECT_EQ(a.q, b.q);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(asked, b.iterations);
 }
 
 }  // namespace

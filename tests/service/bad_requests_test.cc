@@ -62,6 +62,18 @@ class BadRequests : public testing::Test {
     }
   }
 
+  void expect_invalid_friction(const FrictionMeasurement& measurement, const std::string& field) {
+    SCOPED_TRACE(field);
+    try {
+      client_.call<Calculation::kFrictionEstimate>({CatalogueName{"nrel_upwind"}, measurement});
+      ADD_FAILURE() << "no error reply";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), field);
+      EXPECT_EQ(std::string(e.what()),
+                in_process_message([&] { estimate_friction(coupling_, measurement); }));
+    }
+  }
+
   test::ServiceProcess service_;
   client::Client client_{{test::test_domain(), std::chrono::seconds(20)}};
   std::map<std::string, CouplingGeometry> catalogue_;
@@ -102,6 +114,12 @@ TEST_F(BadRequests, EveryKindGetsAnErrorNamingTheFieldThenTheServiceAnswersTheNe
   options = {};
   options.load_sharing.tolerance = 0.0;
   expect_invalid(good_, options, "options.load_sharing.tolerance");
+  options.load_sharing.tolerance = 1e308;  // issue 9: was blamed on the torque
+  expect_invalid(good_, options, "options.load_sharing.tolerance");
+  options = {};
+  options.load_sharing.max_iterations = 2147483647;  // issue 9: held a worker indefinitely
+  options.load_sharing.tolerance = 1e-15;
+  expect_invalid(good_, options, "options.load_sharing.max_iterations");
   // Malformed inline geometry.
   CouplingDefinition definition = coupling_.definition();
   definition.backlash_m = 0.0;
@@ -120,6 +138,9 @@ TEST_F(BadRequests, EveryKindGetsAnErrorNamingTheFieldThenTheServiceAnswersTheNe
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.field(), "measurement.sensor_moment_y_nm");
   }
+  // Issue 9: estimates of -1.51 and 2.28e301 came back as results.
+  expect_invalid_friction({1.0e6, 1.0, 0.0, 1.0e5, 1.0e5}, "measurement.misalignment_rad");
+  expect_invalid_friction({1.0e6, 0.004, 0.0, 1.0e5, 1.0e308}, "measurement.sensor_moment_z_nm");
 
   // The service still answers, correctly.
   const InducedMoments moments =

@@ -67,5 +67,28 @@ TEST(ServiceConfig, ErrorsNameTheSetting) {
   std::remove(file.c_str());
 }
 
+TEST(ServiceConfig, CalculationDeadlineFromFileOrFlagWithinItsRange) {
+  EXPECT_DOUBLE_EQ(parse_service_command({}).config.calculation_deadline_s, 1.0);
+  EXPECT_DOUBLE_EQ(
+      parse_service_command({"--config", GC_SOURCE_DIR "/deploy/service.conf"})
+          .config.calculation_deadline_s,
+      1.0);
+  const std::string file = write_temp("calculation_deadline_s: 0.25\n");
+  EXPECT_DOUBLE_EQ(parse_service_command({"--config", file}).config.calculation_deadline_s, 0.25);
+  EXPECT_DOUBLE_EQ(parse_service_command({"--config", file, "--deadline", "2"})
+                       .config.calculation_deadline_s,
+                   2.0);
+  std::remove(file.c_str());
+  for (const char* bad : {"0", "-1", "61", "inf", "nan"}) {
+    try {
+      parse_service_command({"--deadline", bad});
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), "calculation_deadline_s") << bad;
+      EXPECT_NE(std::string(e.what()).find("[1e-06, 60]"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gc::service

@@ -1,5 +1,6 @@
 #include "tests/service/service_process.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,13 +18,19 @@ void use_loopback_config() {
   setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml", 1);
 }
 
-ServiceProcess::ServiceProcess(std::vector<std::string> extra_args) {
+ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path) {
   std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
                                    "--log-level", "warn"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   pid_ = fork();
   if (pid_ < 0) throw std::runtime_error("fork failed");
   if (pid_ == 0) {
+    if (!log_path.empty()) {
+      const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (log < 0) _exit(126);
+      dup2(log, STDERR_FILENO);
+      close(log);
+    }
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);

@@ -19,8 +19,9 @@ void use_loopback_config();
 
 class ServiceProcess {
  public:
-  /// Starts gearcoupling-service --domain test_domain() with `extra_args`.
-  explicit ServiceProcess(std::vector<std::string> extra_args = {});
+  /// Starts gearcoupling-service --domain test_domain() with `extra_args`; its standard error
+  /// (the log) goes to `log_path` when one is given, else to the test's.
+  explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {});
   /// SIGKILLs the process if still running.
   ~ServiceProcess();
   ServiceProcess(const ServiceProcess&) = delete;
