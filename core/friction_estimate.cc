@@ -51,8 +51,8 @@ void validate(const CouplingGeometry& coupling, const FrictionMeasurement& measu
   const double offset = blame_z ? 0.0 : self_weight_nm;
   const double a = (lo - rest) / coefficient - offset;
   const double b = (hi - rest) / coefficient - offset;
-  const std::string allowed =
-      "[" + precise(std::min(a, b)) + ", " + precise(std::max(a, b)) +
+  std::string allowed = "[";  // appended, not "[" + ...: GCC 12's -Wrestrict misfires on that (PR 105651)
+  allowed += precise(std::min(a, b)) + ", " + precise(std::max(a, b)) +
       "] N·m, the range that makes eq 4's mu = M_tz''/T - tan(zeta) a friction coefficient in "
       "[0, 1] with the other inputs as given; these give mu = " + format_number(mu);
   throw InvalidInput(blame_z ? "measurement.sensor_moment_z_nm" : "measurement.sensor_moment_y_nm",

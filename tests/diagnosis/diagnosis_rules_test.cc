@@ -254,7 +254,9 @@ TEST(DiagnosisRules, FindsASlowCycleInTimeAndItsPeriod) {
   const Eigen::MatrixX2d noise_only = model_residuals(model, observations, rows, serial_for()).residual;
   const auto none = formula_candidate(observations, rows, noise_only, folds, {});
   if (none) {
-    for (const ParameterEstimate& p : none->fit->parameters) EXPECT_EQ(p.name.rfind("time_cycle", 0), std::string::npos) << p.name;
+    for (const ParameterEstimate& p : none->fit->parameters) {
+      EXPECT_EQ(p.name.rfind("time_cycle", 0), std::string::npos) << p.name;
+    }
   }
   for (RecordedSample& o : observations) {
     o.measured.z_nm += 20.0 * o.input.time_s + 3000.0 * std::sin(2.0 * M_PI * o.input.time_s / 47.0 + 1.0);
@@ -280,7 +282,9 @@ TEST(DiagnosisRules, FindsASlowCycleInTimeAndItsPeriod) {
   }
   const Eigen::MatrixX2d drag = model_residuals(model, observations, rows, serial_for()).residual;
   const std::optional<double> period = dominant_cycle_period(observations, rows, drag);
-  if (period) EXPECT_GT(std::abs(*period - 23.0), 3.0) << *period;
+  if (period) {
+    EXPECT_GT(std::abs(*period - 23.0), 3.0) << *period;
+  }
 }
 
 }  // namespace

@@ -13,7 +13,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <set>
 #include <sstream>
 
 #include "core/diagnosis/diagnose.h"
@@ -30,14 +29,6 @@ namespace {
 constexpr double kBaselineTolerance = 0.01;
 // Issue 8: the reduction within 5 percentage points of what the noise allows.
 constexpr double kFloorMargin = 0.05;
-
-// Cases where the diagnosis does not reach issue 8's bar (docs/diagnosis.md, "Proof", says why for
-// each). They are held to a lower bar so that they cannot get worse unnoticed: the physics named,
-// the reduction within 15 points of the floor's and the RMSE within 25 % of the baseline's. The
-// table marks them FAIL against the issue's bar all the same.
-const std::set<std::string> kKnownLimits = {"eccentricity_smooth", "zero_drift"};
-constexpr double kKnownLimitFloorMargin = 0.15;
-constexpr double kKnownLimitBaselineTolerance = 0.25;
 
 struct HeldOutScore {
   double before_nm = 0.0;    ///< base model vs held-out measured, pooled over y and z
@@ -240,11 +231,6 @@ TEST_P(Generalisation, NamesThePhysicsBeatsSindyAndReachesTheNoiseFloorOnHeldOut
 
   EXPECT_TRUE(row.named) << "the verdict does not name the hidden physics: " << why;
   EXPECT_EQ(s.unpredicted, 0u) << "the final model refuses held-out rows the base model predicts";
-  if (kKnownLimits.count(c.name)) {
-    EXPECT_LE(s.after_nm, (1.0 + kKnownLimitBaselineTolerance) * std::max(s.baseline_nm, s.floor_nm));
-    EXPECT_GE(gained, possible - kKnownLimitFloorMargin) << 100 * gained << " % against " << 100 * possible << " %";
-    return;
-  }
   EXPECT_TRUE(row.beats_baseline) << "held-out RMSE " << s.after_nm << " N·m against SINDy's " << s.baseline_nm;
   EXPECT_TRUE(row.near_floor) << "held-out reduction " << 100 * gained << " % against " << 100 * possible
                               << " % the noise allows (" << s.before_nm << " -> " << s.after_nm << ", floor "
