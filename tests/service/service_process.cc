@@ -1,6 +1,7 @@
 #include "tests/service/service_process.h"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,13 +19,23 @@ void use_loopback_config() {
   setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml", 1);
 }
 
-ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path) {
+bool enter_network_namespace(const std::string& name) {
+  const int fd = open(("/run/netns/" + name).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool entered = setns(fd, CLONE_NEWNET) == 0;
+  close(fd);
+  return entered;
+}
+
+ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path,
+                               std::string network_namespace) {
   std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
                                    "--log-level", "warn"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   pid_ = fork();
   if (pid_ < 0) throw std::runtime_error("fork failed");
   if (pid_ == 0) {
+    if (!network_namespace.empty() && !enter_network_namespace(network_namespace)) _exit(125);
     if (!log_path.empty()) {
       const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if (log < 0) _exit(126);

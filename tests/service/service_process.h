@@ -13,6 +13,10 @@ namespace gc::test {
 /// process each under ctest) do not share a domain, and ports stay in range.
 int test_domain();
 
+/// Moves the calling process into the network namespace /run/netns/<name>; false on failure.
+/// Call in a child before it creates any DDS entity.
+bool enter_network_namespace(const std::string& name);
+
 /// Points CYCLONEDDS_URI at deploy/cyclonedds-loopback.xml (lo only, no multicast, peer
 /// 127.0.0.1). Call before any DDS entity is created.
 void use_loopback_config();
@@ -20,8 +24,11 @@ void use_loopback_config();
 class ServiceProcess {
  public:
   /// Starts gearcoupling-service --domain test_domain() with `extra_args`; its standard error
-  /// (the log) goes to `log_path` when one is given, else to the test's.
-  explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {});
+  /// (the log) goes to `log_path` when one is given, else to the test's. With
+  /// `network_namespace`, the process runs in that namespace (/run/netns/<name>, as `ip netns`
+  /// makes them: a test "host").
+  explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {},
+                          std::string network_namespace = {});
   /// SIGKILLs the process if still running.
   ~ServiceProcess();
   ServiceProcess(const ServiceProcess&) = delete;
