@@ -19,6 +19,10 @@ struct MeasurementSample {
   /// Shaft rotation angle, integrated from speed over time by whoever reads the recording
   /// (core/rotation_phase.h), so effects need no per-call state; where speed is recorded [rad].
   std::optional<double> rotation_phase_rad;
+  /// dzeta/dt and dT/dt over the last half second, derived from the sequence by whoever reads
+  /// the recording (core/input_rate.h); absent for the first samples [rad/s], [N·m/s].
+  std::optional<double> misalignment_rate_rad_s;
+  std::optional<double> torque_rate_nm_s;
   std::optional<double> applied_moment_y_nm;  ///< LAD moment about y [N·m]
   std::optional<double> applied_moment_z_nm;  ///< LAD moment about z [N·m]
 };

@@ -241,6 +241,8 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
     last_time_s_ = sample.input.time_s;
     sample.input.loading_direction =
         loading_.next(sample.input.time_s, sample.input.misalignment_rad);
+    sample.input.misalignment_rate_rad_s = misalignment_rate_.next(sample.input.time_s, sample.input.misalignment_rad);
+    sample.input.torque_rate_nm_s = torque_rate_.next(sample.input.time_s, sample.input.torque_nm);
     // Every kept row has a speed when the column exists (an empty cell excludes the row), so
     // the trapezoid runs over the kept rows, across any excluded between them.
     if (has_speed_) {

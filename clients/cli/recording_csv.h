@@ -8,7 +8,8 @@
 // reported with their line and column, never dropped in silence. It derives each sample's
 // loading direction from the misalignment amplitude of the rows it keeps, with a dead band from
 // the whole recording's misalignment noise (so it reads the rows twice: once, on opening, for
-// the noise, then chunk by chunk), and, where there is a speed column, the rotation phase.
+// the noise, then chunk by chunk), the rates of misalignment and torque (core/input_rate.h), and,
+// where there is a speed column, the rotation phase.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/input_rate.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
 #include "core/rotation_phase.h"
@@ -98,6 +100,7 @@ class RecordingReader {
   LoadingDirectionTracker loading_;
   bool has_speed_ = false;
   RotationPhaseIntegrator phase_;
+  InputRateTracker misalignment_rate_, torque_rate_;
   std::string line_;
   std::vector<std::string_view> fields_;
   long line_number_ = 1;

@@ -66,6 +66,15 @@ const Scalar kScalars[] = {
      "a moment that changes smoothly with time alone, turning: zero drift of the strain-gauge bridge, or a "
      "slow change of the rig during the test",
      [](const MeasurementSample& s) { return std::optional(s.time_s * s.time_s * s.time_s); }},
+    {"misalignment_rate", "dzeta/dt", "N·m/(rad/s)", "1/(rad/s)", 1e10,
+     "a moment in proportion to how fast the misalignment changes: viscous damping of the spline's oil "
+     "film, or a coupling that lags the measured misalignment by a time (M(t - tau) ~ M - tau dM/dt: a "
+     "hysteresis that grows with the speed of travel)",
+     [](const MeasurementSample& s) { return s.misalignment_rate_rad_s; }},
+    {"torque_rate", "dT/dt", "N·m/(N·m/s)", "1/(N·m/s)", 1e3,
+     "a moment in proportion to how fast the torque changes: the drivetrain's torsional inertia or "
+     "damping, or the moment channels sampled at another time than the torque channel (a DAQ skew)",
+     [](const MeasurementSample& s) { return s.torque_rate_nm_s; }},
     {"speed", "n", "N·m/rpm", "1/rpm", 1e6,
      "a moment in proportion to shaft speed: viscous drag (oil shear in the spline, windage), or bearing "
      "drag",

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/input_rate.h"
 #include "core/loading_direction.h"
 #include "core/model_error.h"
 #include "core/rotation_phase.h"
@@ -42,6 +43,7 @@ SynthesizedRecording synthesize(const CouplingModel& model,
   std::vector<MeasurementSample> derived(inputs.begin(), inputs.end());
   derive_loading_directions(derived);
   derive_rotation_phase(derived);  // where every input has a speed
+  derive_input_rates(derived);
   for (std::size_t i = 0; i < derived.size(); ++i) {
     RecordedSample sample{derived[i], {}, std::nullopt};
     try {

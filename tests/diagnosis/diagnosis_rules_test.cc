@@ -287,5 +287,42 @@ TEST(DiagnosisRules, FindsASlowCycleInTimeAndItsPeriod) {
   }
 }
 
+// A moment that goes with the speed of travel, not its sign (viscous damping of the spline's oil
+// film): 4e6 N·m per rad/s along the misalignment, on a misalignment that swings as a sine, so
+// that the rate varies and is not the sign of travel. The formula finds the rate term.
+TEST(DiagnosisRules, FindsAMomentInProportionToTheRateOfMisalignment) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const double jam = model.geometry().jam_angle().angle_rad;
+  std::vector<MeasurementSample> inputs(1920);
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    MeasurementSample& s = inputs[i];
+    s.time_s = 0.1 * static_cast<double>(i);
+    s.torque_nm = 1.2e6;
+    s.misalignment_rad = 0.3 * jam * (1.2 + std::sin(2.0 * M_PI * s.time_s / 40.0));
+    s.direction_rad = i < inputs.size() / 2 ? 0.2 : 1.8;
+  }
+  std::vector<RecordedSample> observations = record(model, inputs, 67);
+  constexpr double kViscous = 4e6;  // N·m per rad/s
+  for (RecordedSample& o : observations) {
+    const double rate = 0.3 * jam * 2.0 * M_PI / 40.0 * std::cos(2.0 * M_PI * o.input.time_s / 40.0);
+    o.measured.y_nm += kViscous * rate * std::cos(o.input.direction_rad);
+    o.measured.z_nm += kViscous * rate * std::sin(o.input.direction_rad);
+  }
+  std::vector<std::size_t> rows;  // the first half second has no rate yet
+  for (std::size_t i = 0; i < observations.size(); ++i) if (observations[i].input.misalignment_rate_rad_s) rows.push_back(i);
+  const Folds folds = blocked_folds(rows.size(), 5, 20);
+  const Eigen::MatrixX2d residual = model_residuals(model, observations, rows, serial_for()).residual;
+  const auto found = formula_candidate(observations, rows, residual, folds, {});
+  ASSERT_TRUE(found.has_value());
+  const ParameterEstimate* viscous = nullptr;
+  for (const ParameterEstimate& p : found->fit->parameters) if (p.name == "misalignment_rate_along_misalignment") viscous = &p;
+  std::string terms;
+  for (const ParameterEstimate& p : found->fit->parameters) terms += p.name + " ";
+  ASSERT_NE(viscous, nullptr) << terms;
+  EXPECT_NEAR(viscous->value, kViscous, 0.05 * kViscous);
+  EXPECT_EQ(viscous->unit, "N·m/(rad/s)");
+  EXPECT_LT(found->held_out_rmse_nm, 1.1 * kNoiseNm);
+}
+
 }  // namespace
 }  // namespace gc
