@@ -18,7 +18,8 @@ void use_loopback_config() {
   setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml", 1);
 }
 
-ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path) {
+ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path,
+                               std::vector<std::pair<std::string, std::string>> environment) {
   std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
                                    "--log-level", "warn"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
@@ -31,6 +32,7 @@ ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string 
       dup2(log, STDERR_FILENO);
       close(log);
     }
+    for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);
