@@ -3,7 +3,7 @@
 // ddsperf ping/pong on the same configuration for the floor).
 //
 //   service_bench --domain N [--latency-requests 5000] [--seconds 3] [--clients 1,8,32]
-//                 [--window 64]
+//                 [--window 64] [--client-id-prefix HEX8]
 //
 // Latency: one client, one blocking call at a time, jam-angle then induced-moments requests
 // (catalogue coupling nrel_upwind); p50/p99/mean of the round trip. Throughput: K clients (each
@@ -34,6 +34,7 @@ struct Options {
   double seconds = 3.0;
   std::vector<int> clients = {1, 8, 32};
   std::size_t window = 64;
+  std::uint32_t client_id_prefix = 0;  ///< with DDS Security: the identity's (bench/secure_bench.sh)
 };
 
 Options parse(int argc, char** argv) {
@@ -44,6 +45,7 @@ Options parse(int argc, char** argv) {
     if (flag == "--domain") o.domain = std::atoi(value.c_str());
     else if (flag == "--latency-requests") o.latency_requests = std::atoi(value.c_str());
     else if (flag == "--seconds") o.seconds = std::atof(value.c_str());
+    else if (flag == "--client-id-prefix") o.client_id_prefix = static_cast<std::uint32_t>(std::strtoul(value.c_str(), nullptr, 16));
     else if (flag == "--window") o.window = static_cast<std::size_t>(std::atoi(value.c_str()));
     else if (flag == "--clients") {
       o.clients.clear();
@@ -86,7 +88,7 @@ void throughput(const Options& o, int clients) {
   std::vector<std::unique_ptr<gc::client::Client>> pool;
   for (int c = 0; c < clients; ++c) {
     pool.push_back(std::make_unique<gc::client::Client>(
-        gc::client::ClientOptions{o.domain, std::chrono::seconds(30)}));
+        gc::client::ClientOptions{o.domain, std::chrono::seconds(30), o.client_id_prefix}));
   }
   for (auto& client : pool) {
     if (!client->wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(20))) {
@@ -134,7 +136,7 @@ void throughput(const Options& o, int clients) {
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   {
-    gc::client::Client client({o.domain, std::chrono::seconds(30)});
+    gc::client::Client client({o.domain, std::chrono::seconds(30), o.client_id_prefix});
     if (!client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(20))) {
       std::fprintf(stderr, "no service on domain %d\n", o.domain);
       return 1;

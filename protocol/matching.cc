@@ -31,4 +31,13 @@ bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag) {
   return false;
 }
 
+std::optional<dds_guid_t> participant_of_publication(dds_entity_t reader,
+                                                     dds_instance_handle_t publication) {
+  dds_builtintopic_endpoint_t* endpoint = dds_get_matched_publication_data(reader, publication);
+  if (endpoint == nullptr) return std::nullopt;
+  const dds_guid_t participant = endpoint->participant_key;
+  dds_builtintopic_free_endpoint(endpoint);
+  return participant;
+}
+
 }  // namespace gc::protocol

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -16,6 +17,11 @@ std::uint32_t matched_reader_count(dds_entity_t writer);
 
 /// True when `reader` is matched with at least one writer whose USER_DATA equals `tag`.
 bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag);
+
+/// The participant of `publication`, a writer matched with `reader` (a sample's
+/// dds_sample_info_t::publication_handle); nullopt when it is no longer matched.
+std::optional<dds_guid_t> participant_of_publication(dds_entity_t reader,
+                                                     dds_instance_handle_t publication);
 
 /// Calls `ready` every `poll` until it returns true or `deadline` passes; returns its last value.
 template <typename Predicate>

@@ -11,4 +11,12 @@ std::uint64_t random_id() {
   return id;
 }
 
+std::uint64_t random_id_with_prefix(std::uint32_t prefix) {
+  if (prefix == 0) return random_id();
+  std::random_device device;
+  std::uint32_t low = 0;
+  while (low == 0) low = device();
+  return (std::uint64_t{prefix} << 32) | low;
+}
+
 }  // namespace gc::protocol

@@ -9,4 +9,9 @@ namespace gc::protocol {
 /// microsecond still differ).
 std::uint64_t random_id();
 
+/// `prefix` in the top 32 bits and 32 random non-zero bits below; random_id() when `prefix` is
+/// 0. A client's DDS Security permissions allow it the reply partitions of ids with its
+/// certificate's prefix only (docs/security.md).
+std::uint64_t random_id_with_prefix(std::uint32_t prefix);
+
 }  // namespace gc::protocol

@@ -129,6 +129,10 @@ void Service::take_requests() {
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!samples.info(i).valid_data) continue;
       const gearcoupling_Correlation correlation = samples[i].correlation;
+      // Who wrote it, found now while its writer is surely still matched: the reply goes only
+      // to this participant (answer()).
+      const std::optional<dds_guid_t> requester =
+          requesters_.participant_of(reader, samples.info(i).publication_handle);
       std::optional<typename T::Request> request;
       std::exception_ptr malformed;
       try {
@@ -136,8 +140,9 @@ void Service::take_requests() {
       } catch (...) {
         malformed = std::current_exception();
       }
-      jobs.emplace_back([this, correlation, request = std::move(request), malformed, received] {
-        answer<kCalculation>(correlation, request, malformed, received);
+      jobs.emplace_back([this, correlation, requester, request = std::move(request), malformed,
+                         received] {
+        answer<kCalculation>(correlation, requester, request, malformed, received);
       });
     }
     // Never answered here: in the listener this is Cyclone's receive thread, and a reliable
@@ -148,6 +153,7 @@ void Service::take_requests() {
 
 template <Calculation kCalculation>
 void Service::answer(const gearcoupling_Correlation& correlation,
+                     const std::optional<dds_guid_t>& requester,
                      const std::optional<typename CalculationTraits<kCalculation>::Request>& request,
                      std::exception_ptr malformed, Clock::time_point received) {
   using T = CalculationTraits<kCalculation>;
@@ -190,6 +196,9 @@ void Service::answer(const gearcoupling_Correlation& correlation,
                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
                  correlation.sequence_number);
     reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
+  } else if (!requester || !requesters_.reaches(writer, *requester)) {
+    refuse_forged(kCalculation, correlation);
+    return;
   } else if (const dds_return_t rc = dds_write(writer, &reply);
              rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
     spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
@@ -208,6 +217,18 @@ void Service::answer(const gearcoupling_Correlation& correlation,
   spdlog::debug("{} client={} seq={} {} {:.1f} us", protocol::to_string(kCalculation),
                 protocol::hex_id(correlation.client_id), correlation.sequence_number,
                 protocol::to_string(reply.status), service_time_s * 1e6);
+}
+
+// The request names a client_id whose reply readers belong to another participant than the
+// request's writer: a forged client_id, which would send the reply to that other client. Dropped
+// without a reply (docs/security.md): an error reply could only go to the client it names, who
+// did not ask, and the forger's own partition is unknown.
+void Service::refuse_forged(Calculation calculation, const gearcoupling_Correlation& correlation) {
+  stats_.record_forged();
+  spdlog::warn("{} client={} seq={}: refused, no reply: the request was not written by a "
+               "participant that reads client {}'s replies (a forged client_id)",
+               protocol::to_string(calculation), protocol::hex_id(correlation.client_id),
+               correlation.sequence_number, protocol::hex_id(correlation.client_id));
 }
 
 void Service::take_all_requests() {
@@ -263,8 +284,8 @@ void Service::log_stats() const {
                         protocol::to_string(calculation), s.served, s.failed,
                         s.p50_service_time_s * 1e6, s.p99_service_time_s * 1e6);
   }
-  spdlog::info("stats: clients={} queued={}{}", reply_writers_.clients(), pool_.queued(),
-               line.empty() ? " no requests yet" : line);
+  spdlog::info("stats: clients={} queued={} forged={}{}", reply_writers_.clients(), pool_.queued(),
+               stats_.forged(), line.empty() ? " no requests yet" : line);
 }
 
 void Service::run() {

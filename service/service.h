@@ -17,6 +17,7 @@
 #include "protocol/requests.h"
 #include "service/catalogue.h"
 #include "service/reply_writers.h"
+#include "service/requesters.h"
 #include "service/service_config.h"
 #include "service/service_stats.h"
 #include "service/status_publisher.h"
@@ -46,8 +47,11 @@ class Service {
   void take_requests();
   template <protocol::Calculation kCalculation>
   void answer(const gearcoupling_Correlation& correlation,
+              const std::optional<dds_guid_t>& requester,
               const std::optional<typename protocol::CalculationTraits<kCalculation>::Request>& request,
               std::exception_ptr malformed, std::chrono::steady_clock::time_point received);
+  void refuse_forged(protocol::Calculation calculation,
+                     const gearcoupling_Correlation& correlation);
   void take_all_requests();
   void take_subscriptions();
   void log_stats() const;
@@ -65,6 +69,7 @@ class Service {
   protocol::Entity waitset_;
   std::map<dds_instance_handle_t, std::pair<std::uint64_t, protocol::Calculation>> reply_readers_;
   ServiceStats stats_;
+  Requesters requesters_;  ///< who wrote each request; whether a reply writer reaches them
   ReplyWriters reply_writers_;
   StatusPublisher status_;
   std::atomic<bool> stop_requested_{false};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <vector>
@@ -26,6 +27,9 @@ class ServiceStats {
   /// reply written) [s].
   void record(protocol::Calculation calculation, bool ok, double service_time_s);
   std::array<CalculationSnapshot, 5> snapshot() const;
+  /// A request refused for a forged client_id (not answered, not in served or failed).
+  void record_forged() { forged_ += 1; }
+  std::uint64_t forged() const { return forged_; }
 
  private:
   struct PerCalculation {
@@ -36,6 +40,7 @@ class ServiceStats {
   };
   mutable std::mutex mutex_;
   std::array<PerCalculation, 5> calculations_;
+  std::atomic<std::uint64_t> forged_{0};
 };
 
 }  // namespace gc::service

@@ -1,3 +1,5 @@
+#include <cstdlib>
+
 #include <fmt/format.h>
 
 #include "clients/cli/subcommand.h"
@@ -20,6 +22,10 @@ std::vector<FlagSpec> common_flags() {
        std::nullopt, true},
       {"domain", "N", "DDS domain of the service, with --remote", "0"},
       {"timeout", "S", "seconds to wait for each reply, with --remote", "10"},
+      {"client-id-prefix", "HEX8",
+       "with --remote and DDS Security: the client_id_prefix of this identity "
+       "(docs/security.md; $GC_CLIENT_ID_PREFIX)",
+       std::getenv("GC_CLIENT_ID_PREFIX") != nullptr ? std::getenv("GC_CLIENT_ID_PREFIX") : ""},
   };
 }
 

@@ -33,7 +33,7 @@ struct Client::Instance {
 
 Client::Client(ClientOptions options)
     : options_(options),
-      client_id_(protocol::random_id()),
+      client_id_(protocol::random_id_with_prefix(options.client_id_prefix)),
       participant_(check_dds(
           dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
           "dds_create_participant")),
@@ -56,10 +56,11 @@ Client::Client(ClientOptions options)
       static_cast<Client*>(client)->take_replies<kCalculation>();
     });
     const std::size_t i = protocol::index_of(kCalculation);
-    reply_readers_[i] = Entity(check_dds(
-        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener),
-        "dds_create_reader(reply)"));
+    const dds_entity_t reader =
+        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener);
     dds_delete_listener(listener);
+    if (reader == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(reader);
+    reply_readers_[i] = Entity(check_dds(reader, "dds_create_reader(reply)"));
   });
   const protocol::Qos status_partition = protocol::partition_qos(protocol::kStatusPartition);
   status_subscriber_ = Entity(check_dds(
@@ -101,6 +102,16 @@ Client::~Client() {
 std::uint64_t Client::next_sequence() {
   std::lock_guard lock(mutex_);
   return ++sequence_;
+}
+
+protocol::DdsError Client::reply_reader_refused(dds_return_t code) const {
+  return protocol::DdsError(
+      fmt::format("dds_create_reader(reply) in partition \"{}\": this participant's DDS Security "
+                  "permissions do not allow reading it; the client id prefix ({:08x}, "
+                  "--client-id-prefix or GC_CLIENT_ID_PREFIX) must be the client_id_prefix "
+                  "written next to the identity's certificate",
+                  protocol::reply_partition(client_id_), options_.client_id_prefix),
+      code);
 }
 
 bool Client::ready_locked(Instance& instance, Calculation calculation) {

@@ -45,6 +45,11 @@ struct ClientOptions {
   int domain = 0;  ///< DDS domain id [0, 232]; the network comes from CYCLONEDDS_URI
   /// Longest a call waits, from the call to its reply, including discovery of a service.
   std::chrono::milliseconds timeout{5000};
+  /// With DDS Security: the client_id_prefix of this participant's identity (8 hex digits,
+  /// written by deploy/security/make-security.sh next to its certificate). Its permissions allow
+  /// reading replies only for client ids whose top 32 bits are this prefix. 0: no security, all
+  /// 64 bits at random.
+  std::uint32_t client_id_prefix = 0;
 };
 
 /// One calculation's figures in an instance's status.
@@ -124,6 +129,8 @@ class Client {
   /// Registers `pending` under a new sequence number and sends it (waiting for a ready instance
   /// until its deadline). `write` writes the request sample with that sequence number.
   void send(std::uint64_t sequence, Pending pending);
+  /// The error for a reply reader DDS Security refused (a client id prefix not this identity's).
+  protocol::DdsError reply_reader_refused(dds_return_t code) const;
   std::uint64_t next_sequence();
   void receive_loop();
   template <protocol::Calculation kCalculation>

@@ -203,8 +203,8 @@ TEST(MultiHost, TwoInstancesOnTwoHostsOneKilledEveryRequestAnsweredExactlyOnceOn
   if (!network.why_not().empty()) GTEST_SKIP() << network.why_not();
   setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-lan-multicast.xml", 1);
   const int domain = test::test_domain();
-  test::ServiceProcess a({}, {}, network.host(1));
-  test::ServiceProcess b({}, {}, network.host(2));
+  test::ServiceProcess a({}, {}, {}, network.host(1));
+  test::ServiceProcess b({}, {}, {}, network.host(2));
 
   int pipe_fds[2];
   ASSERT_EQ(pipe(pipe_fds), 0);

@@ -28,6 +28,7 @@ bool enter_network_namespace(const std::string& name) {
 }
 
 ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path,
+                               std::vector<std::pair<std::string, std::string>> environment,
                                std::string network_namespace) {
   std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
                                    "--log-level", "warn"};
@@ -42,6 +43,7 @@ ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string 
       dup2(log, STDERR_FILENO);
       close(log);
     }
+    for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);

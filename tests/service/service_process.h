@@ -5,6 +5,7 @@
 #include <sys/types.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gc::test {
@@ -24,10 +25,11 @@ void use_loopback_config();
 class ServiceProcess {
  public:
   /// Starts gearcoupling-service --domain test_domain() with `extra_args`; its standard error
-  /// (the log) goes to `log_path` when one is given, else to the test's. With
-  /// `network_namespace`, the process runs in that namespace (/run/netns/<name>, as `ip netns`
-  /// makes them: a test "host").
+  /// (the log) goes to `log_path` when one is given, else to the test's. `environment` is set in
+  /// the child only (e.g. a secure CYCLONEDDS_URI). With `network_namespace`, the process runs in
+  /// that namespace (/run/netns/<name>, as `ip netns` makes them: a test "host").
   explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {},
+                          std::vector<std::pair<std::string, std::string>> environment = {},
                           std::string network_namespace = {});
   /// SIGKILLs the process if still running.
   ~ServiceProcess();

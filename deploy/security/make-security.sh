@@ -1,0 +1,231 @@
+#!/usr/bin/env bash
+# Makes everything DDS Security needs for a gearcoupling test cell (docs/security.md):
+#
+#   bash deploy/security/make-security.sh OUT_DIR [--service NAME]... [--client NAME]...
+#                                                 [--dashboard NAME]... [--days N]
+#
+#   OUT_DIR/ca/identity_ca.pem, permissions_ca.pem    the two CA certificates (every host)
+#   OUT_DIR/ca/*_key.pem                              the CA keys (stay on the CA machine)
+#   OUT_DIR/governance.xml, governance.p7s            domain rules, S/MIME-signed (every host)
+#   OUT_DIR/<identity>/cert.pem, key.pem              the identity (only that host)
+#   OUT_DIR/<identity>/permissions.xml, .p7s          what it may publish and read, signed
+#   OUT_DIR/<identity>/security.xml                   Cyclone <Security> fragment naming the above
+#   OUT_DIR/client-<NAME>/client_id_prefix            8 hex digits: the client's ids start with them
+#
+# Identities: "service-<NAME>" (default one: service-main), "client-<NAME>" (default: client-cell),
+# "dashboard-<NAME>" (default: dashboard-main). Idempotent: what exists and is still valid is kept
+# (keys, certificates, signatures), so a second run changes no byte; a document is signed again
+# only when its content changes, a certificate is made again only when it no longer verifies.
+set -euo pipefail
+
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+fail() { echo "make-security.sh: $*" >&2; exit 1; }
+
+LIB_DIR="${GC_DDS_SECURITY_LIB_DIR:-/usr/lib/x86_64-linux-gnu/libddsc0debian}"
+# The protocol's names (protocol/names.cc): every request and reply topic matches these.
+REQUEST_TOPICS="gearcoupling/*/request"
+REPLY_TOPICS="gearcoupling/*/reply"
+STATUS_TOPIC="gearcoupling/status"
+STATUS_PARTITION="gearcoupling"
+SUBJECT_BASE="C=NL,O=gearcoupling"
+
+# ---- arguments --------------------------------------------------------------------------------
+[ $# -ge 1 ] || usage
+case "$1" in -h|--help) usage ;; esac
+OUT="$1"; shift
+SERVICES=(); CLIENTS=(); DASHBOARDS=(); DAYS=3650
+valid_name() { [[ "$1" =~ ^[a-z0-9][a-z0-9_-]{0,31}$ ]] || fail "$2 \"$1\": allowed 1-32 of a-z 0-9 _ -, starting with a letter or digit"; }
+while [ $# -gt 0 ]; do
+  [ $# -ge 2 ] || fail "$1 needs a value"
+  case "$1" in
+    --service) valid_name "$2" --service; SERVICES+=("$2") ;;
+    --client) valid_name "$2" --client; CLIENTS+=("$2") ;;
+    --dashboard) valid_name "$2" --dashboard; DASHBOARDS+=("$2") ;;
+    --days) [[ "$2" =~ ^[0-9]+$ ]] && [ "$2" -ge 1 ] && [ "$2" -le 36500 ] \
+              || fail "--days \"$2\": allowed an integer in [1, 36500]"; DAYS="$2" ;;
+    *) fail "unknown argument \"$1\" (see --help)" ;;
+  esac
+  shift 2
+done
+[ ${#SERVICES[@]} -gt 0 ] || SERVICES=(main)
+[ ${#CLIENTS[@]} -gt 0 ] || CLIENTS=(cell)
+[ ${#DASHBOARDS[@]} -gt 0 ] || DASHBOARDS=(main)
+for lib in auth ac crypto; do
+  [ -f "$LIB_DIR/libdds_security_$lib.so" ] \
+    || fail "$LIB_DIR/libdds_security_$lib.so missing: install Debian's libddsc0 (cyclonedds) or set GC_DDS_SECURITY_LIB_DIR"
+done
+command -v openssl >/dev/null || fail "openssl not found"
+mkdir -p "$OUT/ca"
+OUT="$(cd "$OUT" && pwd)"
+umask 077  # keys are written readable by their owner only
+
+# ---- helpers ----------------------------------------------------------------------------------
+# Writes stdin to $1 only when the content differs, so unchanged files keep their bytes and time.
+write_if_changed() {
+  local tmp; tmp="$(mktemp "$1.XXXXXX")"
+  cat >"$tmp"
+  if [ -f "$1" ] && cmp -s "$tmp" "$1"; then rm -f "$tmp"; else chmod 644 "$tmp"; mv "$tmp" "$1"; fi
+}
+
+# make_ca NAME CN USAGE: a self-signed EC P-256 CA, kept when its key and certificate exist.
+make_ca() {
+  local key="$OUT/ca/$1_key.pem" cert="$OUT/ca/$1.pem"
+  if [ -f "$key" ] && [ -f "$cert" ] && openssl x509 -in "$cert" -noout -checkend 86400 >/dev/null; then return; fi
+  openssl ecparam -name prime256v1 -genkey -noout -out "$key"
+  openssl req -new -x509 -key "$key" -out "$cert" -days "$DAYS" -sha256 \
+    -subj "/${SUBJECT_BASE//,//}/CN=$2" \
+    -addext "basicConstraints=critical,CA:TRUE" -addext "keyUsage=critical,$3"
+  chmod 644 "$cert"
+}
+
+# Subject of identity $1 in the RFC 2253 order Cyclone's access control prints a certificate's
+# subject in (X509_NAME_print_ex, XN_FLAG_RFC2253: last component first).
+subject_of() { echo "CN=$1,${SUBJECT_BASE#C=NL,},C=NL"; }
+# The same subject for openssl -subj.
+subj_arg() { echo "/${SUBJECT_BASE//,//}/CN=$1"; }
+
+# make_identity ID: key and certificate signed by the identity CA, kept while they still verify,
+# match the wanted subject and the key.
+make_identity() {
+  local dir="$OUT/$1" key="$OUT/$1/key.pem" cert="$OUT/$1/cert.pem"
+  mkdir -p "$dir"
+  if [ -f "$key" ] && [ -f "$cert" ] \
+     && openssl verify -CAfile "$OUT/ca/identity_ca.pem" "$cert" >/dev/null 2>&1 \
+     && openssl x509 -in "$cert" -noout -checkend 86400 >/dev/null \
+     && [ "$(openssl x509 -in "$cert" -noout -subject -nameopt RFC2253 | sed 's/^subject=//')" = "$(subject_of "$1")" ] \
+     && [ "$(openssl x509 -in "$cert" -noout -pubkey)" = "$(openssl ec -in "$key" -pubout 2>/dev/null)" ]; then
+    return
+  fi
+  openssl ecparam -name prime256v1 -genkey -noout -out "$key"
+  openssl req -new -key "$key" -subj "$(subj_arg "$1")" -out "$dir/cert.csr"
+  openssl x509 -req -in "$dir/cert.csr" -CA "$OUT/ca/identity_ca.pem" -CAkey "$OUT/ca/identity_ca_key.pem" \
+    -CAcreateserial -out "$cert" -days "$DAYS" -sha256 \
+    -extfile <(printf 'basicConstraints=critical,CA:FALSE\nkeyUsage=critical,digitalSignature,keyAgreement\n') 2>/dev/null
+  rm -f "$dir/cert.csr"
+  chmod 644 "$cert"
+}
+
+# sign DOC: DOC.p7s = DOC.xml S/MIME-signed by the permissions CA (clear-signed, -text, as DDS
+# Security requires), unless the signature still verifies for the current text.
+sign() {
+  local xml="$1.xml" p7s="$1.p7s" verified
+  if [ -f "$p7s" ] && verified="$(openssl smime -verify -in "$p7s" -CAfile "$OUT/ca/permissions_ca.pem" -text 2>/dev/null | tr -d '\r')" \
+     && [ "$verified" = "$(cat "$xml")" ]; then
+    return
+  fi
+  openssl smime -sign -in "$xml" -text -out "$p7s.tmp" -signer "$OUT/ca/permissions_ca.pem" \
+    -inkey "$OUT/ca/permissions_ca_key.pem"
+  chmod 644 "$p7s.tmp"; mv "$p7s.tmp" "$p7s"
+}
+
+# Permissions are valid as long as the permissions CA (fixed dates, so a rerun writes the same).
+ca_date() { date -u -d "$(openssl x509 -in "$OUT/ca/permissions_ca.pem" -noout "-$1" | cut -d= -f2)" +%Y-%m-%dT%H:%M:%S; }
+
+# criteria KIND TOPIC PARTITION...: one <publish> or <subscribe> block.
+criteria() {
+  local kind="$1" topic="$2"; shift 2
+  echo "        <$kind>"
+  echo "          <topics><topic>$topic</topic></topics>"
+  echo -n "          <partitions>"; for p in "$@"; do echo -n "<partition>$p</partition>"; done; echo "</partitions>"
+  echo "        </$kind>"
+}
+
+# grant ID RULES...: permissions document of identity ID; rules come from stdin.
+permissions_doc() {
+  cat <<XML
+<?xml version="1.0" encoding="UTF-8"?>
+<!-- Made by deploy/security/make-security.sh: what $1 may publish and read. default DENY: any
+     topic or partition not allowed below is refused, locally and by every remote participant. -->
+<dds xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
+     xsi:noNamespaceSchemaLocation="http://www.omg.org/spec/DDS-Security/20170801/omg_shared_ca_permissions.xsd">
+  <permissions>
+    <grant name="$1">
+      <subject_name>$(subject_of "$1")</subject_name>
+      <validity><not_before>$(ca_date startdate)</not_before><not_after>$(ca_date enddate)</not_after></validity>
+      <allow_rule>
+        <domains><id_range><min>0</min><max>230</max></id_range></domains>
+$(cat)
+      </allow_rule>
+      <default>DENY</default>
+    </grant>
+  </permissions>
+</dds>
+XML
+}
+
+service_rules() {
+  criteria subscribe "$REQUEST_TOPICS" "gearcoupling.request.*"
+  criteria publish "$REPLY_TOPICS" "gearcoupling.reply.*"
+  criteria publish "$STATUS_TOPIC" "$STATUS_PARTITION"
+}
+
+# hex_digits N: a pattern matching N lower-case hex digits and nothing else.
+hex_digits() { local i; for ((i = 0; i < $1; i++)); do echo -n "[0-9a-f]"; done; }
+
+# A client's replies: only partitions gearcoupling.reply.<prefix><8 more hex digits>. Character
+# classes, not "*": a reader asking for a wildcard partition ("gearcoupling.reply.*", or "*" in
+# the last 8 digits) is refused, since "*" is not a hex digit.
+client_rules() {
+  criteria publish "$REQUEST_TOPICS" "gearcoupling.request.$(hex_digits 16)"
+  criteria subscribe "$REPLY_TOPICS" "gearcoupling.reply.$1$(hex_digits 8)"
+  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
+}
+
+dashboard_rules() { criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"; }
+
+# The top 32 bits of every client_id of client NAME: from a hash of the name, so reruns agree.
+client_prefix() { printf '%s' "client-$1" | sha256sum | cut -c1-8; }
+
+security_fragment() {
+  cat <<XML
+<?xml version="1.0" encoding="UTF-8"?>
+<!-- Made by deploy/security/make-security.sh: DDS Security for identity $1. Combine it with the
+     network configuration: CYCLONEDDS_URI=file:///path/cyclonedds-loopback.xml,file://$OUT/$1/security.xml -->
+<CycloneDDS xmlns="https://cdds.io/config">
+  <Domain id="any">
+    <Security>
+      <Authentication>
+        <Library path="$LIB_DIR/libdds_security_auth.so" initFunction="init_authentication" finalizeFunction="finalize_authentication"/>
+        <IdentityCA>file:$OUT/ca/identity_ca.pem</IdentityCA>
+        <IdentityCertificate>file:$OUT/$1/cert.pem</IdentityCertificate>
+        <PrivateKey>file:$OUT/$1/key.pem</PrivateKey>
+      </Authentication>
+      <AccessControl>
+        <Library path="$LIB_DIR/libdds_security_ac.so" initFunction="init_access_control" finalizeFunction="finalize_access_control"/>
+        <PermissionsCA>file:$OUT/ca/permissions_ca.pem</PermissionsCA>
+        <Governance>file:$OUT/governance.p7s</Governance>
+        <Permissions>file:$OUT/$1/permissions.p7s</Permissions>
+      </AccessControl>
+      <Cryptographic>
+        <Library path="$LIB_DIR/libdds_security_crypto.so" initFunction="init_crypto" finalizeFunction="finalize_crypto"/>
+      </Cryptographic>
+    </Security>
+  </Domain>
+</CycloneDDS>
+XML
+}
+
+# make_member ID RULES_FUNCTION [ARG]: identity, signed permissions, Cyclone fragment.
+make_member() {
+  make_identity "$1"
+  "${@:2}" | permissions_doc "$1" | write_if_changed "$OUT/$1/permissions.xml"
+  sign "$OUT/$1/permissions"
+  security_fragment "$1" | write_if_changed "$OUT/$1/security.xml"
+}
+
+# ---- the cell ---------------------------------------------------------------------------------
+make_ca identity_ca "gearcoupling identity CA" keyCertSign,cRLSign
+# The permissions CA signs the documents itself (S/MIME): it needs digitalSignature too.
+make_ca permissions_ca "gearcoupling permissions CA" keyCertSign,cRLSign,digitalSignature
+write_if_changed "$OUT/governance.xml" <"$(dirname "$0")/governance.xml"
+sign "$OUT/governance"
+for name in "${SERVICES[@]}"; do make_member "service-$name" service_rules; done
+for name in "${CLIENTS[@]}"; do
+  prefix="$(client_prefix "$name")"
+  [ "$prefix" != 00000000 ] || fail "--client $name: its id prefix would be 0; choose another name"
+  make_member "client-$name" client_rules "$prefix"
+  echo "$prefix" | write_if_changed "$OUT/client-$name/client_id_prefix"
+done
+for name in "${DASHBOARDS[@]}"; do make_member "dashboard-$name" dashboard_rules; done
+rm -f "$OUT/ca/"*.srl.old
+echo "DDS Security files for ${#SERVICES[@]} service, ${#CLIENTS[@]} client and ${#DASHBOARDS[@]} dashboard identities in $OUT"

@@ -1,0 +1,476 @@
+// DDS Security end to end (docs/security.md): a cell made at test time by
+// deploy/security/make-security.sh into a temporary directory, the real gearcoupling-service with
+// the service identity, clients with theirs, and participants without or with wrong credentials,
+// all on this test's own domain over loopback. And the reply routing bound to the requesting
+// participant, with and without security.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "clients/remote/client.h"
+#include "protocol/calculation_traits.h"
+#include "protocol/matching.h"
+#include "protocol/names.h"
+#include "protocol/qos.h"
+#include "protocol/random_id.h"
+#include "protocol/samples.h"
+#include "protocol/topics.h"
+#include "tests/cli/run_process.h"
+#include "tests/service/secure_cell.h"
+#include "tests/service/service_process.h"
+
+namespace gc {
+namespace {
+
+using protocol::Calculation;
+using protocol::CatalogueName;
+using protocol::check_dds;
+using protocol::Entity;
+using Clock = std::chrono::steady_clock;
+using JamAngleTraits = protocol::CalculationTraits<Calculation::kJamAngle>;
+
+// Local ids of the in-process identities' domains (all on test_domain() on the wire).
+constexpr int kClientADomain = 210;
+constexpr int kClientBDomain = 211;
+constexpr int kDashboardDomain = 212;
+constexpr int kRogueDomain = 213;
+
+Clock::time_point in_seconds(int s) { return Clock::now() + std::chrono::seconds(s); }
+
+/// Sets environment variables for child processes started in its scope, then restores them.
+class ScopedEnv {
+ public:
+  ScopedEnv(std::vector<std::pair<std::string, std::string>> values) {
+    for (auto& [name, value] : values) {
+      const char* old = std::getenv(name.c_str());
+      saved_.emplace_back(name, old ? std::optional<std::string>(old) : std::nullopt);
+      setenv(name.c_str(), value.c_str(), 1);
+    }
+  }
+  ~ScopedEnv() {
+    for (auto& [name, old] : saved_) {
+      if (old) setenv(name.c_str(), old->c_str(), 1); else unsetenv(name.c_str());
+    }
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
+};
+
+/// dds_create_reader or dds_create_writer of `topic_name` (type `type`) in `partition` on
+/// `participant`: the new entity (a child of the participant) or Cyclone's error code, which is
+/// the topic's own when security already refuses the topic.
+dds_entity_t try_endpoint(dds_entity_t participant, const dds_topic_descriptor_t* type,
+                          const std::string& topic_name, const std::string& partition,
+                          bool writer) {
+  const dds_entity_t topic = dds_create_topic(participant, type, topic_name.c_str(), nullptr, nullptr);
+  if (topic < 0) return topic;
+  const protocol::Qos qos = topic_name == protocol::kStatusTopic ? protocol::status_reader_qos()
+                                                                 : protocol::request_reply_qos();
+  const protocol::Qos in = protocol::partition_qos(partition);
+  if (writer) {
+    const dds_entity_t publisher = dds_create_publisher(participant, in.get(), nullptr);
+    return publisher < 0 ? publisher : dds_create_writer(publisher, topic, qos.get(), nullptr);
+  }
+  const dds_entity_t subscriber = dds_create_subscriber(participant, in.get(), nullptr);
+  return subscriber < 0 ? subscriber : dds_create_reader(subscriber, topic, qos.get(), nullptr);
+}
+
+dds_entity_t try_jam_angle_reply_reader(dds_entity_t participant, const std::string& partition) {
+  return try_endpoint(participant, &JamAngleTraits::reply_type(),
+                      protocol::reply_topic_name(Calculation::kJamAngle), partition, false);
+}
+
+/// Samples taken from `reader` (valid data only).
+int take_count(dds_entity_t reader) {
+  int count = 0;
+  for (;;) {
+    protocol::LoanedSamples<gearcoupling_JamAngleReply> samples(reader);
+    if (samples.size() == 0) return count;
+    for (std::size_t k = 0; k < samples.size(); ++k) count += samples.info(k).valid_data ? 1 : 0;
+  }
+}
+
+dds_return_t matched_publications(dds_entity_t reader) {
+  return dds_get_matched_publications(reader, nullptr, 0);
+}
+
+/// A jam-angle requester on the bare C API, to send requests carrying any client_id.
+class RawRequester {
+ public:
+  RawRequester(dds_entity_t participant, std::uint64_t instance, std::uint64_t own_client_id)
+      : instance_(instance), own_client_id_(own_client_id) {
+    writer_ = check_dds(try_endpoint(participant, &JamAngleTraits::request_type(),
+                                     protocol::request_topic_name(Calculation::kJamAngle),
+                                     protocol::request_partition(instance), true),
+                        "request writer");
+    reader_ = check_dds(
+        try_jam_angle_reply_reader(participant, protocol::reply_partition(own_client_id)),
+        "reply reader");
+  }
+
+  /// Rule 4 of docs/protocol.md: both directions matched with the instance.
+  bool wait_ready() {
+    return protocol::wait_until(
+        [&] {
+          return protocol::matched_reader_count(writer_) > 0 &&
+                 protocol::matched_with_tagged_writer(reader_, protocol::hex_id(instance_));
+        },
+        in_seconds(30));
+  }
+
+  void send(std::uint64_t client_id, std::uint64_t sequence) {
+    std::string name = "nrel_upwind";
+    gearcoupling_JamAngleRequest request{};
+    request.correlation = {client_id, sequence};
+    request.coupling._d = gearcoupling_COUPLING_FROM_CATALOGUE;
+    request.coupling._u.catalogue_name = name.data();
+    check_dds(dds_write(writer_, &request), "dds_write");
+  }
+
+  /// Waits for `count` replies to this requester's own client_id; how many came.
+  int wait_own_replies(int count) {
+    int got = 0;
+    protocol::wait_until([&] { return (got += take_count(reader_)) >= count; }, in_seconds(30));
+    return got;
+  }
+
+ private:
+  std::uint64_t instance_;
+  std::uint64_t own_client_id_;
+  dds_entity_t writer_;
+  dds_entity_t reader_;
+};
+
+/// Lines of `path` containing `text`.
+int lines_containing(const std::string& path, const std::string& text) {
+  std::ifstream in(path);
+  int count = 0;
+  for (std::string line; std::getline(in, line);) count += line.find(text) != std::string::npos;
+  return count;
+}
+
+constexpr const char* kForgedLogText = "a forged client_id";
+
+/// The forgery of issue 9: a second participant sends jam-angle requests carrying `victim`'s
+/// client_id. Checks that each is refused in the service log, that `victim` receives none of
+/// them, and that the forger's own request (its own id) is still answered.
+void expect_forgeries_refused(client::Client& victim, dds_entity_t forger_participant,
+                              std::uint64_t forger_client_id, const std::string& service_log) {
+  constexpr int kForgeries = 20;
+  for (int k = 0; k < 2; ++k) victim.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  const std::vector<client::InstanceInfo> instances = victim.instances();
+  ASSERT_EQ(instances.size(), 1u);
+  RawRequester forger(forger_participant, instances[0].id, forger_client_id);
+  ASSERT_TRUE(forger.wait_ready());
+  for (int k = 0; k < kForgeries; ++k) forger.send(victim.client_id(), 1000 + k);
+  forger.send(forger_client_id, 1);  // its own request, the positive control
+  EXPECT_EQ(forger.wait_own_replies(1), 1);
+  // Each forgery is refused with a log line; wait for all of them.
+  EXPECT_TRUE(protocol::wait_until(
+      [&] { return lines_containing(service_log, kForgedLogText) >= kForgeries; }, in_seconds(30)))
+      << lines_containing(service_log, kForgedLogText) << " refusals logged";
+  // The victim's own next call is answered after the refusals, and it saw no stray reply.
+  victim.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  EXPECT_EQ(lines_containing(service_log, kForgedLogText), kForgeries);
+  EXPECT_EQ(victim.counters().duplicates, 0u);
+  EXPECT_EQ(victim.counters().foreign, 0u);
+  EXPECT_EQ(victim.counters().replies, 3u);
+}
+
+// ---- the script ---------------------------------------------------------------------------
+
+class SecurityScript : public testing::Test {
+ protected:
+  void SetUp() override {
+    if (!test::security_plugins_installed()) {
+      GTEST_SKIP() << "Cyclone DDS Security plugins (libdds_security_{auth,ac,crypto}.so in "
+                      "/usr/lib/x86_64-linux-gnu/libddsc0debian) are not installed";
+    }
+    cell_ = std::make_unique<test::SecureCell>();
+  }
+  std::map<std::string, std::string> files() const {
+    std::map<std::string, std::string> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(cell_->dir())) {
+      if (entry.is_regular_file()) out[entry.path()] = cli::testing::read_file(entry.path());
+    }
+    return out;
+  }
+  std::unique_ptr<test::SecureCell> cell_;
+};
+
+TEST_F(SecurityScript, ASecondRunChangesNoFile) {
+  const auto before = files();
+  // 2 CAs (4 files + serial), governance (2), 4 identities with 5 files, 2 client prefixes.
+  EXPECT_EQ(before.size(), 5u + 2u + 4u * 5u + 2u);
+  const test::ShellResult again = test::run_shell(
+      GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir() + " --client a --client b");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(files(), before);
+}
+
+TEST_F(SecurityScript, DocumentsVerifyAgainstThePermissionsCaAndCertificatesAgainstTheIdentityCa) {
+  const std::string& d = cell_->dir();
+  for (const std::string doc :  {"governance", "service-main/permissions", "client-a/permissions",
+                                "client-b/permissions", "dashboard-main/permissions"}) {
+    const auto verified = test::run_shell("openssl smime -verify -text -in " + d + "/" + doc +
+                                          ".p7s -CAfile " + d + "/ca/permissions_ca.pem -out /dev/null");
+    EXPECT_EQ(verified.exit_code, 0) << doc << ": " << verified.output;
+    const auto wrong_ca = test::run_shell("openssl smime -verify -text -in " + d + "/" + doc +
+                                          ".p7s -CAfile " + d + "/ca/identity_ca.pem -out /dev/null");
+    EXPECT_NE(wrong_ca.exit_code, 0) << doc << " verified against the identity CA";
+  }
+  for (const std::string identity : {"service-main", "client-a", "client-b", "dashboard-main"}) {
+    const auto verified = test::run_shell("openssl verify -CAfile " + d + "/ca/identity_ca.pem " +
+                                          d + "/" + identity + "/cert.pem");
+    EXPECT_EQ(verified.exit_code, 0) << identity << ": " << verified.output;
+  }
+}
+
+TEST_F(SecurityScript, TiesEachClientsReplyPartitionsToItsPrefix) {
+  const std::string permissions = cli::testing::read_file(cell_->dir() + "/client-a/permissions.xml");
+  const std::string prefix = fmt::format("{:08x}", cell_->client_prefix("a"));
+  EXPECT_NE(permissions.find("<subject_name>CN=client-a,O=gearcoupling,C=NL</subject_name>"),
+            std::string::npos);
+  EXPECT_NE(permissions.find("<partition>gearcoupling.reply." + prefix + "[0-9a-f]"),
+            std::string::npos);
+  EXPECT_NE(cell_->client_prefix("a"), cell_->client_prefix("b"));
+}
+
+TEST_F(SecurityScript, ABadArgumentIsRefusedNamingItsValueAndTheAllowedForm) {
+  const std::string script = GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir();
+  const auto bad_name = test::run_shell(script + " --client Bad.Name");
+  EXPECT_EQ(bad_name.exit_code, 1);
+  EXPECT_NE(bad_name.output.find("--client \"Bad.Name\": allowed 1-32 of a-z 0-9 _ -"),
+            std::string::npos) << bad_name.output;
+  const auto bad_days = test::run_shell(script + " --days 0");
+  EXPECT_EQ(bad_days.exit_code, 1);
+  EXPECT_NE(bad_days.output.find("--days \"0\": allowed an integer in [1, 36500]"),
+            std::string::npos) << bad_days.output;
+}
+
+// ---- the secure service -------------------------------------------------------------------
+
+class SecureService : public SecurityScript {
+ protected:
+  void start_service() {
+    service_ = std::make_unique<test::ServiceProcess>(
+        std::vector<std::string>{}, log_path(),
+        std::vector<std::pair<std::string, std::string>>{
+            {"CYCLONEDDS_URI", cell_->uri("service-main")}});
+  }
+  std::string log_path() const { return cell_->dir() + "/service.log"; }
+  std::unique_ptr<test::LocalDomain> domain(int local_id, const std::string& identity) const {
+    return std::make_unique<test::LocalDomain>(local_id, cell_->uri(identity));
+  }
+  client::ClientOptions client_options(int local_id, const std::string& name) const {
+    return {local_id, std::chrono::seconds(30), cell_->client_prefix(name)};
+  }
+  std::unique_ptr<test::ServiceProcess> service_;
+};
+
+TEST_F(SecureService, TheCliGetsWhatItComputesInProcess) {
+  start_service();
+  const std::vector<std::string> moments = {"moments", "--torque", "2.2e6", "--misalignment-deg",
+                                            "0.3", "--mu", "0.12"};
+  const auto local = cli::testing::run_gearcoupling(moments);
+  ScopedEnv env({{"CYCLONEDDS_URI", cell_->uri("client-a")},
+                 {"GC_CLIENT_ID_PREFIX", fmt::format("{:08x}", cell_->client_prefix("a"))}});
+  std::vector<std::string> remote = moments;
+  remote.insert(remote.end(), {"--remote", "--domain", std::to_string(test::test_domain()),
+                               "--timeout", "30"});
+  const auto over_dds = cli::testing::run_gearcoupling(remote);
+  EXPECT_EQ(over_dds.exit_code, 0) << over_dds.err;
+  EXPECT_EQ(over_dds.out, local.out);
+  EXPECT_EQ(local.exit_code, 0);
+}
+
+TEST_F(SecureService, TheCliWithoutItsIdentitysPrefixFailsNamingTheCause) {
+  ScopedEnv env({{"CYCLONEDDS_URI", cell_->uri("client-a")}, {"GC_CLIENT_ID_PREFIX", ""}});
+  const auto over_dds = cli::testing::run_gearcoupling(
+      {"jam-angle", "--remote", "--domain", std::to_string(test::test_domain())});
+  EXPECT_NE(over_dds.exit_code, 0);
+  EXPECT_NE(over_dds.err.find("client id prefix"), std::string::npos) << over_dds.err;
+  EXPECT_TRUE(over_dds.out.empty());
+}
+
+TEST_F(SecureService, TheClientLibraryGetsAClientIdWithItsIdentitysPrefixAndAnAnswer) {
+  start_service();
+  const auto a = domain(kClientADomain, "client-a");
+  client::Client client(client_options(kClientADomain, "a"));
+  const auto jam = client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  EXPECT_GT(jam.jam.angle_rad, 0.0);
+  EXPECT_EQ(client.client_id() >> 32, cell_->client_prefix("a"));
+}
+
+TEST_F(SecureService, AClientLibraryWithAnotherIdentitysPrefixIsRefusedNamingTheCause) {
+  const auto a = domain(kClientADomain, "client-a");
+  try {
+    client::Client client(client_options(kClientADomain, "b"));
+    FAIL() << "client-a's permissions accepted client-b's prefix";
+  } catch (const protocol::DdsError& e) {
+    EXPECT_EQ(e.code(), DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+    EXPECT_NE(std::string(e.what()).find(fmt::format("client id prefix ({:08x}",
+                                                     cell_->client_prefix("b"))),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST_F(SecureService, AClientMayReadOnlyItsOwnReplyPartitionsAndMayNotWriteReplies) {
+  const auto a = domain(kClientADomain, "client-a");
+  const Entity participant = a->participant();
+  const std::uint64_t own_id = protocol::random_id_with_prefix(cell_->client_prefix("a"));
+  const std::uint64_t other_id = protocol::random_id_with_prefix(cell_->client_prefix("b"));
+  EXPECT_GT(try_jam_angle_reply_reader(participant.get(), protocol::reply_partition(own_id)), 0);
+  for (const std::string& partition : std::initializer_list<std::string>
+       {protocol::reply_partition(other_id), std::string("gearcoupling.reply.*"), std::string("*"),
+        fmt::format("gearcoupling.reply.{:08x}*", cell_->client_prefix("b")),
+        fmt::format("gearcoupling.reply.{:08x}********", cell_->client_prefix("a"))}) {
+    EXPECT_EQ(try_jam_angle_reply_reader(participant.get(), partition),
+              DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) << partition;
+  }
+  EXPECT_EQ(try_endpoint(participant.get(), &JamAngleTraits::reply_type(),
+                         protocol::reply_topic_name(Calculation::kJamAngle),
+                         protocol::reply_partition(own_id), true),
+            DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+  EXPECT_EQ(try_endpoint(participant.get(), &gearcoupling_ServiceStatus_desc,
+                         protocol::kStatusTopic, protocol::kStatusPartition, true),
+            DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+}
+
+TEST_F(SecureService, ADashboardMayOnlyReadTheStatus) {
+  start_service();
+  const auto dashboard = domain(kDashboardDomain, "dashboard-main");
+  const Entity participant = dashboard->participant();
+  const dds_entity_t status = try_endpoint(participant.get(), &gearcoupling_ServiceStatus_desc,
+                                           protocol::kStatusTopic, protocol::kStatusPartition, false);
+  ASSERT_GT(status, 0);
+  EXPECT_TRUE(protocol::wait_until(
+      [&] { return protocol::LoanedSamples<gearcoupling_ServiceStatus>(status).size() > 0; },
+      in_seconds(30)));
+  EXPECT_EQ(try_endpoint(participant.get(), &JamAngleTraits::request_type(),
+                         protocol::request_topic_name(Calculation::kJamAngle),
+                         protocol::request_partition(1), true),
+            DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+  EXPECT_EQ(try_jam_angle_reply_reader(participant.get(), protocol::reply_partition(1)),
+            DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+}
+
+TEST_F(SecureService, AStrangerWithoutCertificatesSeesNothingAndCannotImpersonateTheService) {
+  start_service();
+  // The stranger: a plain participant on the test's domain, as anyone on the network could make.
+  const Entity stranger(check_dds(dds_create_participant(test::test_domain(), nullptr, nullptr),
+                                  "dds_create_participant"));
+  const dds_entity_t status = try_endpoint(stranger.get(), &gearcoupling_ServiceStatus_desc,
+                                           protocol::kStatusTopic, protocol::kStatusPartition, false);
+  const dds_entity_t replies = try_jam_angle_reply_reader(stranger.get(), "*");
+  // It announces a service of its own, as in issue 9.
+  const dds_entity_t fake_status = try_endpoint(stranger.get(), &gearcoupling_ServiceStatus_desc,
+                                                protocol::kStatusTopic, protocol::kStatusPartition, true);
+  ASSERT_GT(status, 0);
+  ASSERT_GT(replies, 0);
+  ASSERT_GT(fake_status, 0);
+  gearcoupling_ServiceStatus fake{};
+  fake.instance_id = 0x5eed;
+  std::string partition = protocol::request_partition(0x5eed), host = "stranger";
+  fake.request_partition = partition.data();
+  fake.host = host.data();
+  fake.accepting = true;
+  check_dds(dds_write(fake_status, &fake), "dds_write(status)");
+
+  // A client with certificates is answered (so discovery, which is faster for the stranger
+  // without a handshake, has long run its course) ...
+  const auto a = domain(kClientADomain, "client-a");
+  client::Client client(client_options(kClientADomain, "a"));
+  client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  const std::vector<client::InstanceInfo> instances = client.instances();
+  // ... and knows only the real instance, not the stranger's;
+  ASSERT_EQ(instances.size(), 1u);
+  EXPECT_NE(instances[0].id, 0x5eedu);
+  EXPECT_EQ(instances[0].pid, service_->pid());
+  // the stranger can neither write requests to it nor read anything.
+  const dds_entity_t requests = try_endpoint(stranger.get(), &JamAngleTraits::request_type(),
+                                             protocol::request_topic_name(Calculation::kJamAngle),
+                                             protocol::request_partition(instances[0].id), true);
+  ASSERT_GT(requests, 0);
+  client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  EXPECT_EQ(protocol::matched_reader_count(requests), 0u);
+  EXPECT_EQ(matched_publications(status), 1);  // its own fake status writer only
+  EXPECT_EQ(matched_publications(replies), 0);
+  EXPECT_EQ(protocol::LoanedSamples<gearcoupling_ServiceStatus>(status).size(), 1u);  // its own
+  EXPECT_EQ(take_count(replies), 0);
+}
+
+TEST_F(SecureService, PermissionsSignedByAnotherCaGetNoData) {
+  // client-a's real identity with permissions of its own making ("read every reply"), signed by
+  // a permissions CA of its own: it may create the reader, but the service will not match it.
+  const std::string rogue = cell_->dir() + "/rogue";
+  ASSERT_EQ(test::run_shell(GC_SOURCE_DIR "/deploy/security/make-security.sh " + rogue).exit_code, 0);
+  std::string permissions = cli::testing::read_file(rogue + "/client-cell/permissions.xml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    permissions.replace(permissions.find(from), from.size(), to);
+  };
+  replace("CN=client-cell", "CN=client-a");
+  const std::size_t reply = permissions.find("gearcoupling.reply.");
+  permissions.replace(reply, permissions.find("</partition>", reply) - reply, "*");
+  cli::testing::write_file(rogue + "/all.xml", permissions);
+  ASSERT_EQ(test::run_shell("openssl smime -sign -text -in " + rogue + "/all.xml -out " + rogue +
+                            "/all.p7s -signer " + rogue + "/ca/permissions_ca.pem -inkey " + rogue +
+                            "/ca/permissions_ca_key.pem").exit_code, 0);
+  std::string config = cli::testing::read_file(cell_->dir() + "/client-a/security.xml");
+  const auto point = [&](const std::string& element, const std::string& path) {
+    const std::size_t begin = config.find("<" + element + ">") + element.size() + 2;
+    config.replace(begin, config.find("</" + element + ">") - begin, "file:" + path);
+  };
+  point("PermissionsCA", rogue + "/ca/permissions_ca.pem");
+  point("Governance", rogue + "/governance.p7s");
+  point("Permissions", rogue + "/all.p7s");
+  cli::testing::write_file(rogue + "/security.xml", config);
+
+  start_service();
+  test::LocalDomain rogue_domain(kRogueDomain, "file://" GC_SOURCE_DIR
+                                 "/deploy/cyclonedds-loopback.xml,file://" + rogue + "/security.xml");
+  const Entity participant = rogue_domain.participant();
+  const auto b = domain(kClientBDomain, "client-b");
+  client::Client victim(client_options(kClientBDomain, "b"));
+  const dds_entity_t eavesdropper =
+      try_jam_angle_reply_reader(participant.get(), protocol::reply_partition(victim.client_id()));
+  ASSERT_GT(eavesdropper, 0);  // its own access control allows it
+  for (int k = 0; k < 10; ++k) victim.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+  EXPECT_EQ(matched_publications(eavesdropper), 0);
+  EXPECT_EQ(take_count(eavesdropper), 0);
+  EXPECT_EQ(victim.counters().replies, 10u);
+}
+
+TEST_F(SecureService, AForgedClientIdIsRefusedAndItsOwnerGetsNothing) {
+  start_service();
+  const auto a = domain(kClientADomain, "client-a");
+  const auto b = domain(kClientBDomain, "client-b");
+  client::Client victim(client_options(kClientADomain, "a"));
+  const Entity forger = b->participant();
+  expect_forgeries_refused(victim, forger.get(),
+                           protocol::random_id_with_prefix(cell_->client_prefix("b")), log_path());
+}
+
+// ---- without security ---------------------------------------------------------------------
+
+TEST(ReplyRouting, AForgedClientIdIsRefusedWithoutSecurityToo) {
+  const std::string log = cli::testing::temp_path("forged_service_log");
+  test::ServiceProcess service({}, log);
+  client::Client victim({test::test_domain(), std::chrono::seconds(30)});
+  const Entity forger(check_dds(dds_create_participant(test::test_domain(), nullptr, nullptr),
+                                "dds_create_participant"));
+  expect_forgeries_refused(victim, forger.get(), protocol::random_id(), log);
+}
+
+}  // namespace
+}  // namespace gc
