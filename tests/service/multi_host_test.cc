@@ -12,9 +12,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@
 #include "core/induced_moments.h"
 #include "protocol/matching.h"
 #include "tests/service/identical.h"
+#include "tests/service/secure_cell.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -120,63 +123,7 @@ class TestNetwork {
 
 OperatingPoint unique_point(int request) { return {1.0e5 + 10.0 * request, 0.005, 0.3, 0.1}; }
 
-/// What the client on host 3 saw, one line of numbers on a pipe.
-struct ClientReport {
-  int answered = 0, wrong = 0, failed = 0;
-  client::ClientCounters counters;
-  std::size_t instances_at_start = 0;
-};
-
-constexpr int kRequests = 1500;
-constexpr std::size_t kWindow = 32;
-constexpr int kKillAfter = kRequests / 3;
-
-/// The client's run, in the forked child on host 3: it writes "kill" on `out` when a third of the
-/// requests are answered (the parent then kills instance 1), and its report at the end.
-[[noreturn]] void client_on_host(const std::string& host, int domain, int out) {
-  const auto say = [out](const std::string& line) { (void)!write(out, line.data(), line.size()); };
-  if (!test::enter_network_namespace(host)) {
-    say("error cannot enter " + host + "\n");
-    _exit(1);
-  }
-  try {
-    const auto catalogue = codec::load_coupling_catalog(codec::default_catalog_dir());
-    const CouplingGeometry& coupling = catalogue.at("nrel_downwind");
-    client::Client client({domain, std::chrono::seconds(20)});
-    ClientReport r;
-    protocol::wait_until([&] { return client.instances().size() == 2; }, Clock::now() + std::chrono::seconds(20));
-    r.instances_at_start = client.instances().size();
-    std::deque<std::pair<int, std::future<InducedMoments>>> in_flight;
-    for (int sent = 0; sent < kRequests || !in_flight.empty();) {
-      if (sent < kRequests && in_flight.size() < kWindow) {
-        in_flight.emplace_back(sent, client.call_async<Calculation::kInducedMoments>(
-                                         {CatalogueName{"nrel_downwind"}, unique_point(sent), {}}));
-        ++sent;
-        continue;
-      }
-      auto& [request, future] = in_flight.front();
-      try {
-        const InducedMoments remote = future.get();
-        r.wrong += test::bits(remote.magnitude_nm) != test::bits(induced_moments(coupling, unique_point(request)).magnitude_nm);
-        ++r.answered;
-      } catch (const std::exception& e) {
-        if (r.failed++ == 0) say(std::string("failure ") + e.what() + "\n");
-      }
-      in_flight.pop_front();
-      if (r.answered == kKillAfter) say("kill\n");
-    }
-    r.counters = client.counters();
-    std::ostringstream line;
-    line << "report " << r.instances_at_start << " " << r.answered << " " << r.wrong << " " << r.failed << " "
-         << r.counters.sent << " " << r.counters.replies << " " << r.counters.resent << " " << r.counters.duplicates
-         << " " << r.counters.timeouts << " " << r.counters.foreign << "\n";
-    say(line.str());
-    _exit(0);
-  } catch (const std::exception& e) {
-    say(std::string("error ") + e.what() + "\n");
-    _exit(1);
-  }
-}
+constexpr const char* kLanMulticast = "file://" GC_SOURCE_DIR "/deploy/cyclonedds-lan-multicast.xml";
 
 /// The next line from `fd` within `timeout`; empty on timeout or end of file.
 std::string read_line(int fd, std::chrono::seconds timeout, std::string& buffer) {
@@ -198,40 +145,126 @@ std::string read_line(int fd, std::chrono::seconds timeout, std::string& buffer)
   }
 }
 
+/// A client process on a test host: a forked child that enters the host's namespace, sets its
+/// environment, and only then creates its participant; it reports in lines on a pipe.
+class ClientOnHost {
+ public:
+  using Say = std::function<void(const std::string&)>;
+
+  ClientOnHost(const std::string& host, std::vector<std::pair<std::string, std::string>> environment,
+               const std::function<std::string(const Say&)>& work) {
+    int fds[2];
+    if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+    std::cout.flush();
+    pid_ = fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+      close(fds[0]);
+      const Say say = [out = fds[1]](const std::string& line) {
+        const std::string text = line + "\n";
+        (void)!write(out, text.data(), text.size());
+      };
+      if (!test::enter_network_namespace(host)) {
+        say("error cannot enter " + host);
+        _exit(1);
+      }
+      for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
+      try {
+        say(work(say));
+        _exit(0);
+      } catch (const std::exception& e) {
+        say(std::string("error ") + e.what());
+        _exit(1);
+      }
+    }
+    close(fds[1]);
+    fd_ = fds[0];
+  }
+  ~ClientOnHost() {
+    close(fd_);
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+  }
+  ClientOnHost(const ClientOnHost&) = delete;
+  ClientOnHost& operator=(const ClientOnHost&) = delete;
+
+  /// Its next line within `timeout`; empty when none came.
+  std::string line(std::chrono::seconds timeout) { return read_line(fd_, timeout, buffer_); }
+
+ private:
+  pid_t pid_ = -1;
+  int fd_ = -1;
+  std::string buffer_;
+};
+
+/// What the client on host 3 saw.
+struct ClientReport {
+  std::size_t instances_at_start = 0;
+  int answered = 0, wrong = 0, failed = 0;
+  client::ClientCounters counters;
+};
+
+constexpr int kRequests = 1500;
+constexpr std::size_t kWindow = 32;
+constexpr int kKillAfter = kRequests / 3;
+
+/// kRequests induced-moment requests, kWindow in flight, each checked against the core's value;
+/// says "kill" when a third are answered.
+std::string requests_with_a_kill(int domain, const std::function<void(const std::string&)>& say) {
+  const auto catalogue = codec::load_coupling_catalog(codec::default_catalog_dir());
+  const CouplingGeometry& coupling = catalogue.at("nrel_downwind");
+  client::Client client({domain, std::chrono::seconds(20)});
+  ClientReport r;
+  protocol::wait_until([&] { return client.instances().size() == 2; }, Clock::now() + std::chrono::seconds(20));
+  r.instances_at_start = client.instances().size();
+  std::deque<std::pair<int, std::future<InducedMoments>>> in_flight;
+  for (int sent = 0; sent < kRequests || !in_flight.empty();) {
+    if (sent < kRequests && in_flight.size() < kWindow) {
+      in_flight.emplace_back(sent, client.call_async<Calculation::kInducedMoments>(
+                                       {CatalogueName{"nrel_downwind"}, unique_point(sent), {}}));
+      ++sent;
+      continue;
+    }
+    auto& [request, future] = in_flight.front();
+    try {
+      const InducedMoments remote = future.get();
+      r.wrong += test::bits(remote.magnitude_nm) != test::bits(induced_moments(coupling, unique_point(request)).magnitude_nm);
+      ++r.answered;
+    } catch (const std::exception& e) {
+      if (r.failed++ == 0) say(std::string("failure ") + e.what());
+    }
+    in_flight.pop_front();
+    if (r.answered == kKillAfter) say("kill");
+  }
+  r.counters = client.counters();
+  std::ostringstream line;
+  line << "report " << r.instances_at_start << " " << r.answered << " " << r.wrong << " " << r.failed << " "
+       << r.counters.sent << " " << r.counters.replies << " " << r.counters.resent << " " << r.counters.duplicates
+       << " " << r.counters.timeouts << " " << r.counters.foreign;
+  return line.str();
+}
+
 TEST(MultiHost, TwoInstancesOnTwoHostsOneKilledEveryRequestAnsweredExactlyOnceOnTheThird) {
   const TestNetwork network;
   if (!network.why_not().empty()) GTEST_SKIP() << network.why_not();
-  setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-lan-multicast.xml", 1);
+  setenv("CYCLONEDDS_URI", kLanMulticast, 1);
   const int domain = test::test_domain();
   test::ServiceProcess a({}, {}, {}, network.host(1));
   test::ServiceProcess b({}, {}, {}, network.host(2));
+  ClientOnHost client(network.host(3), {}, [domain](const ClientOnHost::Say& say) { return requests_with_a_kill(domain, say); });
 
-  int pipe_fds[2];
-  ASSERT_EQ(pipe(pipe_fds), 0);
-  std::cout.flush();
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    close(pipe_fds[0]);
-    client_on_host(network.host(3), domain, pipe_fds[1]);
+  std::string line = client.line(std::chrono::seconds(60));
+  EXPECT_EQ(line, "kill") << "the client never got a third of its answers";
+  if (line == "kill") {
+    a.signal(SIGKILL);
+    line = client.line(std::chrono::seconds(90));
   }
-  close(pipe_fds[1]);
-  std::string buffer;
-  const std::string first = read_line(pipe_fds[0], std::chrono::seconds(60), buffer);
-  EXPECT_EQ(first, "kill") << "the client never got a third of its answers";
-  if (first == "kill") a.signal(SIGKILL);
-  const std::string last = first == "kill" ? read_line(pipe_fds[0], std::chrono::seconds(90), buffer) : first;
-  close(pipe_fds[0]);
-  kill(child, SIGKILL);
-  int child_status = 0;
-  waitpid(child, &child_status, 0);
-
-  std::istringstream report(last);
+  std::istringstream report(line);
   std::string word;
   ClientReport r;
   report >> word >> r.instances_at_start >> r.answered >> r.wrong >> r.failed >> r.counters.sent >> r.counters.replies >>
       r.counters.resent >> r.counters.duplicates >> r.counters.timeouts >> r.counters.foreign;
-  ASSERT_EQ(word, "report") << "the client said \"" << last << "\"; wait status " << child_status;
+  ASSERT_EQ(word, "report") << "the client said \"" << line << "\"";
   EXPECT_EQ(r.instances_at_start, 2u) << "both instances discovered across the bridge by multicast";
   EXPECT_EQ(r.answered, kRequests);
   EXPECT_EQ(r.failed, 0);
@@ -245,6 +278,45 @@ TEST(MultiHost, TwoInstancesOnTwoHostsOneKilledEveryRequestAnsweredExactlyOnceOn
   EXPECT_TRUE(b.running());
   std::cout << "across hosts: " << kRequests << " requests, " << r.counters.resent
             << " resent to host 2 after host 1's instance was killed\n";
+}
+
+/// How many of `calls` jam-angle calls a client with `options` gets answered, after waiting up
+/// to `discovery` for an instance: "answered <n> instances <m>".
+std::string jam_angle_calls(client::ClientOptions options, int calls, std::chrono::seconds discovery) {
+  client::Client client(options);
+  const bool found = client.wait_for_service(Calculation::kJamAngle, discovery);
+  int answered = 0;
+  for (int c = 0; found && c < calls; ++c) {
+    try {
+      client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+      ++answered;
+    } catch (const std::exception&) {
+    }
+  }
+  return "answered " + std::to_string(answered) + " instances " + std::to_string(client.instances().size());
+}
+
+// The secure configuration across hosts: the service on host 1 and a client with its certificate
+// on host 3 talk over the bridge, authenticated and encrypted; a participant without
+// certificates on host 2 finds no instance.
+TEST(MultiHost, TheSecureConfigurationWorksAcrossHostsAndAStrangerOnTheLanSeesNothing) {
+  if (!test::security_plugins_installed()) GTEST_SKIP() << "Cyclone's DDS Security plugins are not installed";
+  const TestNetwork network;
+  if (!network.why_not().empty()) GTEST_SKIP() << network.why_not();
+  const test::SecureCell cell;
+  const int domain = test::test_domain();
+  test::ServiceProcess service({}, {}, {{"CYCLONEDDS_URI", cell.uri("service-main", kLanMulticast)}}, network.host(1));
+
+  client::ClientOptions secure{domain, std::chrono::seconds(10)};
+  secure.client_id_prefix = cell.client_prefix("a");
+  ClientOnHost client(network.host(3), {{"CYCLONEDDS_URI", cell.uri("client-a", kLanMulticast)}},
+                      [secure](const ClientOnHost::Say&) { return jam_angle_calls(secure, 50, std::chrono::seconds(20)); });
+  ClientOnHost stranger(network.host(2), {{"CYCLONEDDS_URI", kLanMulticast}}, [domain](const ClientOnHost::Say&) {
+    return jam_angle_calls({domain, std::chrono::seconds(2)}, 5, std::chrono::seconds(8));
+  });
+  EXPECT_EQ(client.line(std::chrono::seconds(60)), "answered 50 instances 1");
+  EXPECT_EQ(stranger.line(std::chrono::seconds(60)), "answered 0 instances 0");
+  EXPECT_TRUE(service.running());
 }
 
 }  // namespace

@@ -55,8 +55,8 @@ SecureCell::~SecureCell() {
   std::filesystem::remove_all(dir_, ignored);
 }
 
-std::string SecureCell::uri(const std::string& identity) const {
-  return std::string(kLoopback) + ",file://" + dir_ + "/" + identity + "/security.xml";
+std::string SecureCell::uri(const std::string& identity, const std::string& network) const {
+  return (network.empty() ? std::string(kLoopback) : network) + ",file://" + dir_ + "/" + identity + "/security.xml";
 }
 
 std::uint32_t SecureCell::client_prefix(const std::string& name) const {

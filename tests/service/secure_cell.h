@@ -27,8 +27,9 @@ class SecureCell {
   SecureCell& operator=(const SecureCell&) = delete;
 
   const std::string& dir() const { return dir_; }
-  /// CYCLONEDDS_URI for a process of `identity`: the loopback network plus its security.xml.
-  std::string uri(const std::string& identity) const;
+  /// CYCLONEDDS_URI for a process of `identity`: the network configuration `network` (a
+  /// file:// URI; the loopback one unless given) plus its security.xml.
+  std::string uri(const std::string& identity, const std::string& network = {}) const;
   /// The client_id_prefix of client `name` ("a" or "b"), as the script wrote it.
   std::uint32_t client_prefix(const std::string& name) const;
 
