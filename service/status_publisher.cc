@@ -65,8 +65,12 @@ void StatusPublisher::publish(bool accepting) {
   s.catalogue._release = true;
   std::size_t i = 0;
   for (const auto& [name, geometry] : couplings) {
-    s.catalogue._buffer[i++] = gearcoupling_CatalogueEntry{
-        protocol::wire_string(name), geometry.teeth(), geometry.jam_angle().angle_rad};
+    gearcoupling_CatalogueEntry& entry = s.catalogue._buffer[i++];
+    entry = gearcoupling_CatalogueEntry{};
+    entry.name = protocol::wire_string(name);
+    entry.teeth = geometry.teeth();
+    entry.jam_angle_rad = geometry.jam_angle().angle_rad;
+    protocol::to_wire(geometry.definition(), entry.definition);
   }
   dds_write(writer_.get(), &s);
 }

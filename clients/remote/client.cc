@@ -7,6 +7,7 @@
 #include "protocol/qos.h"
 #include "protocol/random_id.h"
 #include "protocol/topics.h"
+#include "protocol/wire_inputs.h"
 
 namespace gc::client {
 
@@ -201,6 +202,14 @@ std::vector<InstanceInfo> Client::instances() const {
   return out;
 }
 
+std::optional<CouplingDefinition> Client::catalogue_definition(const std::string& name) const {
+  std::lock_guard lock(mutex_);
+  for (const auto& [id, instance] : instances_) {
+    for (const CouplingDefinition& d : instance->info.definitions) if (d.name == name) return d;
+  }
+  return std::nullopt;
+}
+
 ClientCounters Client::counters() const {
   std::lock_guard lock(mutex_);
   return counters_;
@@ -295,9 +304,15 @@ void Client::take_status() {
              s.p50_service_time_s, s.p99_service_time_s});
       }
       instance->info.catalogue.clear();
+      instance->info.definitions.clear();
       for (uint32_t k = 0; k < status.catalogue._length; ++k) {
         const char* name = status.catalogue._buffer[k].name;
         instance->info.catalogue.emplace_back(name != nullptr ? name : "");
+        try {
+          instance->info.definitions.push_back(protocol::from_wire(status.catalogue._buffer[k].definition));
+        } catch (const std::exception&) {
+          // A definition the protocol refuses (a name over its bound) is not offered.
+        }
       }
     }
     instances_changed_.notify_all();

@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -70,6 +71,9 @@ struct InstanceInfo {
   unsigned threads = 0;
   double uptime_s = 0.0;
   std::vector<std::string> catalogue;  ///< coupling names it serves
+  /// Their definitions, as the instance announced them (the same order; one that does not pass
+  /// the protocol's checks is left out).
+  std::vector<CouplingDefinition> definitions;
   std::vector<CalculationStatus> calculations;
 };
 
@@ -118,6 +122,9 @@ class Client {
   bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
   /// Live instances known from the status topic.
   std::vector<InstanceInfo> instances() const;
+  /// The definition of catalogue coupling `name` as a live instance announces it; nullopt when
+  /// no known instance serves that name.
+  std::optional<CouplingDefinition> catalogue_definition(const std::string& name) const;
   ClientCounters counters() const;
   std::uint64_t client_id() const { return client_id_; }
   const ClientOptions& options() const { return options_; }

@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "clients/remote/client.h"
+#include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "protocol/matching.h"
+#include "tests/service/identical.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -53,6 +55,30 @@ TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
     EXPECT_GE(c.p99_service_time_s, c.p50_service_time_s);
     EXPECT_LT(c.p99_service_time_s, 1.0);
   }
+}
+
+// A client can fetch a catalogue coupling's whole definition from the status, and a request that
+// carries it inline gets the same answer, bit for bit, as one by name.
+TEST(Service, StatusCarriesEachCatalogueCouplingsDefinition) {
+  test::ServiceProcess service({"--status-interval", "0.1"});
+  client::Client client({test::test_domain(), std::chrono::seconds(10)});
+  ASSERT_TRUE(client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
+  ASSERT_TRUE(protocol::wait_until([&] { return client.catalogue_definition("nrel_downwind").has_value(); },
+                                   std::chrono::steady_clock::now() + std::chrono::seconds(5)));
+  const CouplingDefinition remote = *client.catalogue_definition("nrel_downwind");
+  const auto catalogue = codec::load_coupling_catalog(codec::default_catalog_dir());
+  const CouplingDefinition& local = catalogue.at("nrel_downwind").definition();
+  EXPECT_EQ(remote.name, "nrel_downwind");
+  EXPECT_EQ(remote.teeth, local.teeth);
+  EXPECT_EQ(test::bits(remote.facewidth_m), test::bits(local.facewidth_m));
+  EXPECT_EQ(remote.crown_radius_m.has_value(), local.crown_radius_m.has_value());
+  EXPECT_FALSE(client.catalogue_definition("no_such_coupling").has_value());
+  const auto by_name = client.call<Calculation::kJamAngle>({CatalogueName{"nrel_downwind"}});
+  const auto inline_definition = client.call<Calculation::kJamAngle>({remote});
+  EXPECT_EQ(test::bits(by_name.jam.angle_rad), test::bits(inline_definition.jam.angle_rad));
+  EXPECT_EQ(test::bits(by_name.crown_radius_m), test::bits(inline_definition.crown_radius_m));
+  ASSERT_EQ(client.instances().size(), 1u);
+  EXPECT_EQ(client.instances()[0].definitions.size(), client.instances()[0].catalogue.size());
 }
 
 }  // namespace
