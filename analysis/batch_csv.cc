@@ -1,16 +1,16 @@
-#include "clients/cli/batch_csv.h"
+#include "analysis/batch_csv.h"
 
 #include <array>
 
 #include <fmt/format.h>
 
-#include "clients/cli/command_line.h"
-#include "clients/cli/csv_fields.h"
-#include "clients/cli/input_names.h"
-#include "clients/cli/number_text.h"
+#include "analysis/format_error.h"
+#include "analysis/csv_fields.h"
+#include "analysis/input_names.h"
+#include "analysis/number_text.h"
 #include "codec/angle_units.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 // The output's result columns: one table gives both the header and the values.
@@ -54,11 +54,8 @@ std::string_view column_name(int index, const BatchColumns& columns) {
 }  // namespace
 
 BatchColumns parse_batch_header(std::string_view header) {
-  // Spreadsheets often start a UTF-8 CSV with a byte-order mark.
-  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-  if (header.starts_with(kByteOrderMark)) header.remove_prefix(kByteOrderMark.size());
-  std::vector<std::string_view> names;
-  split_fields(header, names);
+  CsvFields names;
+  if (auto problem = names.split(header)) throw FormatError("input header: " + *problem);
   BatchColumns columns;
   columns.count = static_cast<int>(names.size());
   for (int i = 0; i < columns.count; ++i) {
@@ -69,19 +66,19 @@ BatchColumns parse_batch_header(std::string_view header) {
                 : names[i] == "coupling"         ? &columns.coupling
                                                  : nullptr;
     if (slot == nullptr) {
-      throw UsageError(fmt::format(
+      throw FormatError(fmt::format(
           "input header: unknown column '{}' (allowed: torque_nm, misalignment_deg, "
           "direction_deg, mu, coupling)",
           names[i]));
     }
-    if (*slot != -1) throw UsageError(fmt::format("input header: column '{}' twice", names[i]));
+    if (*slot != -1) throw FormatError(fmt::format("input header: column '{}' twice", names[i]));
     *slot = i;
   }
   for (const auto& [slot, name] : {std::pair{columns.torque, "torque_nm"},
                                    {columns.misalignment, "misalignment_deg"},
                                    {columns.direction, "direction_deg"}, {columns.mu, "mu"}}) {
     if (slot == -1) {
-      throw UsageError(fmt::format("input header: required column '{}' missing", name));
+      throw FormatError(fmt::format("input header: required column '{}' missing", name));
     }
   }
   return columns;
@@ -89,9 +86,8 @@ BatchColumns parse_batch_header(std::string_view header) {
 
 std::optional<std::string> parse_batch_row(std::string_view line, const BatchColumns& columns,
                                            std::string_view default_coupling, BatchRow& row) {
-  split_fields(line, row.fields);
   row.coupling = default_coupling;
-  if (trim(line).empty()) return std::string("empty line");
+  if (auto problem = row.fields.split(line)) return problem;
   if (static_cast<int>(row.fields.size()) != columns.count) {
     return fmt::format("{} fields, the header has {}", row.fields.size(), columns.count);
   }
@@ -156,4 +152,4 @@ void append_error_row(std::string& out, long line, std::string_view coupling,
   out += '\n';
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,10 +1,11 @@
 // The CSV formats of `gearcoupling batch`.
 //
-// Input: a header line (a UTF-8 byte-order mark is skipped) naming the columns, in any order:
+// Input: CSV as analysis/csv_fields.h reads it (byte-order mark, CRLF, blank lines, quoted
+// fields), a header line naming the columns, in any order:
 //   torque_nm, misalignment_deg, direction_deg, mu   required
 //   coupling                                         optional: a catalogue name or .textproto
 //                                                    file per row (default: --coupling)
-// then one load case per line. Fields are plain numbers or names: no quoting, no commas inside.
+// then one load case per line. A field may be quoted ("1.5", "my, coupling.textproto").
 //
 // Output: one row per input row, in input order, under the header
 //   line, coupling, q, teeth_in_contact, max_tooth_load_n, moment_y_nm, moment_z_nm,
@@ -20,11 +21,12 @@
 #include <string_view>
 #include <vector>
 
-#include "clients/cli/calculator.h"
+#include "analysis/csv_fields.h"
+#include "analysis/load_case.h"
 #include "core/model_error.h"
 #include "core/operating_point.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 /// Where each input column sits in a row; -1 for the absent optional coupling column.
 struct BatchColumns {
@@ -36,18 +38,18 @@ struct BatchColumns {
   int count = 0;
 };
 
-/// Throws UsageError naming an unknown, repeated or missing column.
+/// `header` as next_csv_line returns it. Throws FormatError naming an unknown, repeated or missing column.
 BatchColumns parse_batch_header(std::string_view header);
 
 /// One parsed input row; the raw fields are kept so errors can quote what the user wrote.
 struct BatchRow {
   OperatingPoint point;
   std::string_view coupling;
-  std::vector<std::string_view> fields;
+  CsvFields fields;
 };
 
 /// Parses `line` into `row` (reusing its storage). Returns the reason when the row is not
-/// well-formed: wrong field count, or a field that is not a number (naming the column).
+/// well-formed: a quote left open, wrong field count, or a field that is not a number (naming the column).
 std::optional<std::string> parse_batch_row(std::string_view line, const BatchColumns& columns,
                                            std::string_view default_coupling, BatchRow& row);
 
@@ -63,4 +65,4 @@ void append_result_row(std::string& out, long line, std::string_view coupling,
 void append_error_row(std::string& out, long line, std::string_view coupling,
                       std::string_view reason);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,10 +1,10 @@
-#include "clients/cli/before_after_summary.h"
+#include "analysis/before_after_summary.h"
 
 #include <fmt/format.h>
 
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 namespace v1 = gearcoupling::v1;
@@ -48,4 +48,4 @@ void print_before_after(const v1::ValidationResult& result, std::FILE* out) {
   for (int m = 1; m < result.models_size(); ++m) compare(result.models(0), result.models(m), out);
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

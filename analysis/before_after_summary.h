@@ -6,9 +6,9 @@
 
 #include "idl/validation.pb.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 /// Compares result.models(0) (before) with each later model (after). Nothing for one model.
 void print_before_after(const gearcoupling::v1::ValidationResult& result, std::FILE* out);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,10 +1,10 @@
-#include "clients/cli/diagnosis_summary.h"
+#include "analysis/diagnosis_summary.h"
 
 #include <fmt/format.h>
 
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 namespace v1 = gearcoupling::v1;
@@ -81,4 +81,4 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
   if (!result.written_model().empty()) fmt::print(out, "\nModel with the effects found: {}\n", result.written_model());
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

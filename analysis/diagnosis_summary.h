@@ -6,8 +6,8 @@
 
 #include "idl/diagnosis.pb.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 void print_diagnosis_summary(const gearcoupling::v1::DiagnosisResult& result, std::FILE* out);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,17 +1,17 @@
-#include "clients/cli/effect_spec.h"
+#include "analysis/effect_spec.h"
 
 #include <fmt/format.h>
 
-#include "clients/cli/command_line.h"
-#include "clients/cli/number_text.h"
+#include "analysis/format_error.h"
+#include "analysis/number_text.h"
 #include "core/effects/effect_registry.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec) {
   const std::size_t equals = spec.find('=');
   const std::string name(trim(spec.substr(0, equals)));
-  if (name.empty()) throw UsageError(fmt::format("--add '{}': expected EFFECT[=parameter=value,...]", spec));
+  if (name.empty()) throw FormatError(fmt::format("--add '{}': expected EFFECT[=parameter=value,...]", spec));
   ParameterValues values;
   std::string_view rest = equals == std::string_view::npos ? std::string_view() : spec.substr(equals + 1);
   while (!rest.empty()) {
@@ -21,11 +21,11 @@ std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec) {
     const std::size_t eq = item.find('=');
     const auto value = eq == std::string_view::npos ? std::nullopt : parse_double(item.substr(eq + 1));
     if (!value) {
-      throw UsageError(fmt::format("--add '{}': '{}' is not parameter=number (SI units)", spec, item));
+      throw FormatError(fmt::format("--add '{}': '{}' is not parameter=number (SI units)", spec, item));
     }
     values[std::string(trim(item.substr(0, eq)))] = *value;
   }
   return make_effect(name, values);
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

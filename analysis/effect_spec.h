@@ -8,11 +8,11 @@
 
 #include "core/effects/effect.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
-/// Throws UsageError for a malformed spec or a value that is not a number, gc::InvalidInput
+/// Throws FormatError for a malformed spec or a value that is not a number, gc::InvalidInput
 /// naming "effects.<name>[.<parameter>]" for an unknown effect or parameter or a value out of
 /// its bounds.
 std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

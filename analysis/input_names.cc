@@ -1,8 +1,8 @@
-#include "clients/cli/input_names.h"
+#include "analysis/input_names.h"
 
 #include <array>
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 struct InputName {
@@ -58,4 +58,4 @@ std::string describe_input_error(const InvalidInput& error, std::string_view use
   return std::string(user_name) + " " + std::string(user_value) + ": " + error.what();
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -8,7 +8,7 @@
 
 #include "core/model_error.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 /// The flag (without "--") for a core field, or "" when no flag sets it.
 std::string_view flag_for_field(std::string_view field);
@@ -21,4 +21,4 @@ std::string_view column_for_field(std::string_view field);
 std::string describe_input_error(const InvalidInput& error, std::string_view user_name,
                                  std::string_view user_value);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,9 +1,9 @@
-#include "clients/cli/number_text.h"
+#include "analysis/number_text.h"
 
 #include <array>
 #include <charconv>
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 template <typename Number>
@@ -34,10 +34,15 @@ std::string_view trim(std::string_view text) {
   return text.substr(first, last - first + 1);
 }
 
+std::string_view trim_start(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  return first == std::string_view::npos ? std::string_view() : text.substr(first);
+}
+
 std::optional<double> parse_double(std::string_view text) { return parse_whole<double>(text); }
 std::optional<int> parse_int(std::string_view text) { return parse_whole<int>(text); }
 
 void append_number(std::string& out, double value) { append_shortest(out, value); }
 void append_number(std::string& out, long value) { append_shortest(out, value); }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace gc::cli {
+namespace gc::analysis {
 
 /// The whole of `text` (surrounding blanks allowed, a leading '+' accepted) as a double, or
 /// empty when it is not a number. "nan" and "inf" parse: the core rejects them by name.
@@ -21,5 +21,7 @@ void append_number(std::string& out, long value);
 
 /// `text` without leading and trailing blanks (spaces, tabs, '\r').
 std::string_view trim(std::string_view text);
+/// `text` without leading blanks.
+std::string_view trim_start(std::string_view text);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,17 +1,19 @@
-#include "clients/cli/recording_csv.h"
+#include "analysis/recording_csv.h"
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
-#include "clients/cli/csv_fields.h"
-#include "clients/cli/number_text.h"
+#include "analysis/csv_fields.h"
+#include "analysis/format_error.h"
+#include "analysis/number_text.h"
 #include "core/model_error.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 constexpr std::size_t kRequiredCount = 6;  // time .. msz, the first quantities of the enum
@@ -64,19 +66,44 @@ std::string all_columns_text() {
                                 : fmt::format("{}:1: {}", source, message));
 }
 
-RecordingColumn parse_column(std::string_view name, std::string_view source, int column) {
+std::string lower_case(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+// The column `name` (as docs/recordings.md spells it), or nothing when it names no quantity.
+// Units match in any case ("kNm", "KNM"): the spellings are lower case.
+std::optional<RecordingColumn> parse_column(std::string_view name, std::string_view source,
+                                            int column) {
   std::string_view unit;
   const std::optional<Quantity> quantity = quantity_of(name, unit);
-  if (!quantity) {
-    header_error(source, column, name,
-                 fmt::format("unknown column '{}' (accepted: {})", name, all_columns_text()));
-  }
+  if (!quantity) return std::nullopt;
   for (const UnitSpelling& spelling : unit_spellings(*quantity)) {
-    if (spelling.unit == unit) return {*quantity, std::string(name), spelling};
+    if (spelling.unit == lower_case(unit)) return RecordingColumn{*quantity, std::string(name), spelling};
   }
   header_error(source, column, name,
-               fmt::format("unknown unit '{}' in column '{}' (accepted: {})", unit, name,
-                           spellings_text(*quantity)));
+               fmt::format("unknown unit '{}' in column '{}' (accepted, in any case: {}; "
+                           "--columns renames a column)", unit, name, spellings_text(*quantity)));
+}
+
+// The documented name the renames give the file's column `header`, or `header` itself.
+std::string_view renamed(std::string_view header, const std::vector<ColumnRename>& renames) {
+  for (const ColumnRename& rename : renames) {
+    if (rename.header == header) return rename.name;
+  }
+  return header;
+}
+
+void require_renamed_columns_present(const CsvFields& names, const std::vector<ColumnRename>& renames,
+                                     std::string_view source) {
+  for (const ColumnRename& rename : renames) {
+    if (std::find(names.fields().begin(), names.fields().end(), rename.header) == names.fields().end()) {
+      throw InvalidInput("recording.columns",
+                         fmt::format("{}:1: --columns {}={}: the header has no column '{}'", source,
+                                     rename.name, rename.header, rename.header));
+    }
+  }
 }
 
 void set_value(Quantity quantity, double value, RecordedSample& s) {
@@ -126,23 +153,49 @@ const std::vector<UnitSpelling>& unit_spellings(Quantity quantity) {
   }
 }
 
-std::vector<RecordingColumn> parse_recording_header(std::string_view header,
-                                                    std::string_view source_name) {
-  std::vector<std::string_view> names;
-  split_fields(header, names);
-  std::vector<RecordingColumn> columns;
+std::vector<ColumnRename> parse_column_renames(std::string_view text) {
+  std::vector<ColumnRename> renames;
+  CsvFields items;
+  if (auto problem = items.split(text)) throw FormatError(fmt::format("--columns '{}': {}", text, *problem));
+  for (std::string_view item : items.fields()) {
+    const std::size_t equals = item.find('=');
+    const std::string_view name = trim(item.substr(0, equals));
+    std::string_view unit;
+    if (equals == std::string_view::npos || trim(item.substr(equals + 1)).empty() ||
+        !quantity_of(name, unit)) {
+      throw FormatError(fmt::format("--columns '{}': '{}' is not name=header with a name of "
+                                    "docs/recordings.md (one of: {})", text, item, all_columns_text()));
+    }
+    renames.push_back({std::string(name), std::string(trim(item.substr(equals + 1)))});
+  }
+  return renames;
+}
+
+RecordingHeader parse_recording_header(std::string_view header, std::string_view source_name,
+                                       const std::vector<ColumnRename>& renames) {
+  CsvFields names;
+  if (auto problem = names.split(header)) header_error(source_name, 0, "header", *problem);
+  require_renamed_columns_present(names, renames, source_name);
+  RecordingHeader result;
+  result.field_count = names.size();
   std::array<int, kQuantityCount> seen{};
   for (std::size_t i = 0; i < names.size(); ++i) {
     const int column = static_cast<int>(i) + 1;
-    RecordingColumn parsed = parse_column(names[i], source_name, column);
-    int& first = seen[static_cast<std::size_t>(parsed.quantity)];
+    const std::string_view name = renamed(names[i], renames);
+    std::optional<RecordingColumn> parsed = parse_column(name, source_name, column);
+    if (!parsed) {
+      result.ignored.emplace_back(names[i]);
+      continue;
+    }
+    int& first = seen[static_cast<std::size_t>(parsed->quantity)];
     if (first != 0) {
-      header_error(source_name, column, names[i],
-                   fmt::format("column '{}' repeats {} (column {})", names[i],
-                               quantity_name(parsed.quantity), first));
+      header_error(source_name, column, name,
+                   fmt::format("column '{}' repeats {} (column {})", name,
+                               quantity_name(parsed->quantity), first));
     }
     first = column;
-    columns.push_back(std::move(parsed));
+    parsed->index = i;
+    result.columns.push_back(std::move(*parsed));
   }
   for (std::size_t q = 0; q < kRequiredCount; ++q) {
     if (seen[q] == 0) {
@@ -151,36 +204,40 @@ std::vector<RecordingColumn> parse_recording_header(std::string_view header,
                                quantity_name(kQuantities[q]), spellings_text(kQuantities[q])));
     }
   }
-  return columns;
+  return result;
 }
 
 RecordingReader::RecordingReader(const std::filesystem::path& path,
                                  LoadingDirectionOptions loading)
+    : RecordingReader(path, RecordingOptions{loading, {}}) {}
+
+RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
     : source_name_(path.filename().string()),
       in_(path, std::ios::binary),
-      loading_(0.0, loading.still_after_s) {
+      loading_(0.0, options.loading.still_after_s) {
   if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
-  if (!std::getline(in_, line_)) {
+  if (!next_csv_line(in_, line_, line_number_)) {
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }
-  columns_ = parse_recording_header(line_, source_name_);
-  has_speed_ = std::any_of(columns_.begin(), columns_.end(),
+  header_ = parse_recording_header(line_, source_name_, options.renames);
+  has_speed_ = std::any_of(header_.columns.begin(), header_.columns.end(),
                            [](const RecordingColumn& c) { return c.quantity == Quantity::speed; });
-  loading_dead_band_rad_ = scan_dead_band(loading);
-  loading_ = LoadingDirectionTracker(loading_dead_band_rad_, loading.still_after_s);
+  loading_dead_band_rad_ = scan_dead_band(options.loading);
+  loading_ = LoadingDirectionTracker(loading_dead_band_rad_, options.loading.still_after_s);
 }
 
 double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
   const std::streampos first_row = in_.tellg();
+  const long header_line = line_number_;
   std::vector<double> amplitudes;
   RecordedSample sample;
-  while (std::getline(in_, line_)) {
-    const std::string_view line = trim(line_);
-    if (line.empty() || parse_row(line, sample)) continue;  // problems are reported on pass 2
+  while (next_csv_line(in_, line_, line_number_)) {
+    if (parse_row(line_, sample)) continue;  // problems are reported on pass 2
     last_time_s_ = sample.input.time_s;
     amplitudes.push_back(sample.input.misalignment_rad);
   }
   last_time_s_.reset();
+  line_number_ = header_line;
   in_.clear();
   if (!in_.seekg(first_row)) {
     throw InvalidInput("recording", source_name_ + ": cannot be read twice (not a regular file?)");
@@ -189,32 +246,30 @@ double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
 }
 
 std::optional<RowProblem> RecordingReader::parse_row(std::string_view line, RecordedSample& s) {
-  split_fields(line, fields_);
-  if (fields_.size() != columns_.size()) {
+  if (auto problem = fields_.split(line)) return RowProblem{line_number_, 0, "", std::move(*problem)};
+  if (fields_.size() != header_.field_count) {
     return RowProblem{line_number_, 0, "",
-                      fmt::format("{} fields, the header has {}", fields_.size(), columns_.size())};
+                      fmt::format("{} fields, the header has {}", fields_.size(), header_.field_count)};
   }
   s = RecordedSample{};
-  for (std::size_t i = 0; i < fields_.size(); ++i) {
-    const RecordingColumn& column = columns_[i];
-    const std::optional<double> value = parse_double(fields_[i]);
-    const int column_number = static_cast<int>(i) + 1;
+  for (const RecordingColumn& column : header_.columns) {
+    const std::string_view cell = fields_[column.index];
+    const std::optional<double> value = parse_double(cell);
+    const int column_number = static_cast<int>(column.index) + 1;
     if (!value) {
       return RowProblem{line_number_, column_number, column.name,
-                        fmt::format("{} '{}'", cell_complaint(fields_[i]), fields_[i])};
+                        fmt::format("{} '{}'", cell_complaint(cell), cell)};
     }
     if (!std::isfinite(*value)) {
       return RowProblem{line_number_, column_number, column.name,
-                        fmt::format("'{}' is not a finite number", fields_[i])};
+                        fmt::format("'{}' is not a finite number", cell)};
     }
     set_value(column.quantity, *value * column.unit.scale + column.unit.offset, s);
   }
   if (last_time_s_ && s.input.time_s < *last_time_s_) {
-    const auto time_column = std::find_if(columns_.begin(), columns_.end(), [](const auto& c) {
-      return c.quantity == Quantity::time;
-    });
-    return RowProblem{line_number_, static_cast<int>(time_column - columns_.begin()) + 1,
-                      time_column->name,
+    const auto time_column = std::find_if(header_.columns.begin(), header_.columns.end(),
+                                          [](const auto& c) { return c.quantity == Quantity::time; });
+    return RowProblem{line_number_, static_cast<int>(time_column->index) + 1, time_column->name,
                       fmt::format("time goes backwards: {} s after {} s", s.input.time_s,
                                   *last_time_s_)};
   }
@@ -228,13 +283,10 @@ void RecordingReader::exclude(RowProblem problem) {
 
 bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size_t max_samples) {
   samples.clear();
-  while (samples.size() < max_samples && std::getline(in_, line_)) {
-    ++line_number_;
-    const std::string_view line = trim(line_);
-    if (line.empty()) continue;  // a blank line (e.g. the last) is no row
+  while (samples.size() < max_samples && next_csv_line(in_, line_, line_number_)) {
     ++rows_read_;
     RecordedSample sample;
-    if (auto problem = parse_row(line, sample)) {
+    if (auto problem = parse_row(line_, sample)) {
       exclude(std::move(*problem));
       continue;
     }
@@ -254,7 +306,11 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
 }
 
 Recording read_recording(const std::filesystem::path& path, LoadingDirectionOptions loading) {
-  RecordingReader reader(path, loading);
+  return read_recording(path, RecordingOptions{loading, {}});
+}
+
+Recording read_recording(const std::filesystem::path& path, const RecordingOptions& options) {
+  RecordingReader reader(path, options);
   Recording recording;
   std::vector<RecordedSample> chunk;
   while (reader.next_chunk(chunk, 65536)) {
@@ -263,6 +319,7 @@ Recording read_recording(const std::filesystem::path& path, LoadingDirectionOpti
   recording.problems = reader.problems();
   recording.rows_read = reader.rows_read();
   recording.excluded_rows = reader.excluded_rows();
+  recording.ignored_columns = reader.ignored_columns();
   return recording;
 }
 
@@ -292,4 +349,4 @@ void append_recording_row(std::string& out, const RecordedSample& s) {
   out.back() = '\n';
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

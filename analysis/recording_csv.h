@@ -1,7 +1,9 @@
-// Test-cell recordings as CSV (docs/recordings.md): a header naming each column as
-// <quantity>_<unit>, in any order, then one sample per line. Units are converted to SI on
-// reading. Required: time, torque, misalignment, direction, msy, msz. Optional: speed,
-// temperature, applied_my, applied_mz, hub_motion.
+// Test-cell recordings as CSV (docs/recordings.md; tokenized by analysis/csv_fields.h): a header
+// naming each column as <quantity>_<unit>, in any order, then one sample per line. Units (any
+// case: knm, kNm, KNM) are converted to SI on reading. Required: time, torque, misalignment,
+// direction, msy, msz. Optional: speed, temperature, applied_my, applied_mz, hub_motion. Columns
+// of no known quantity (a DAQ export's other channels) are ignored and listed; a rename map
+// (--columns msy_nm=Ch3_kNm) reads a column the file names otherwise.
 //
 // The reader streams: it holds one chunk of samples at a time. Malformed rows (wrong field
 // count, an empty, non-numeric, NaN or infinite cell, time going backwards) are excluded and
@@ -20,12 +22,13 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/csv_fields.h"
 #include "core/input_rate.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
 #include "core/rotation_phase.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 enum class Quantity {
   time, torque, misalignment, direction, msy, msz,                        // required
@@ -50,6 +53,31 @@ struct RecordingColumn {
   Quantity quantity;
   std::string name;        ///< as written in the header
   UnitSpelling unit;
+  std::size_t index = 0;   ///< its place among the file's fields, 0-based
+};
+
+/// A column the file names otherwise: `name` as docs/recordings.md spells it (e.g. "msy_knm")
+/// for the file's column `header` (e.g. "Ch3_kNm").
+struct ColumnRename {
+  std::string name;
+  std::string header;
+};
+
+/// "msy_knm=Ch3_kNm,torque_nm=T1" as renames. Throws FormatError naming the item that is not
+/// name=header, or a name that is no column of docs/recordings.md.
+std::vector<ColumnRename> parse_column_renames(std::string_view text);
+
+/// What a header holds: the columns read, and those ignored.
+struct RecordingHeader {
+  std::vector<RecordingColumn> columns;
+  std::vector<std::string> ignored;   ///< columns of no known quantity, as written
+  std::size_t field_count = 0;        ///< every row has this many fields
+};
+
+/// What a recording is read with.
+struct RecordingOptions {
+  LoadingDirectionOptions loading;
+  std::vector<ColumnRename> renames;
 };
 
 /// A row excluded from the recording, and why.
@@ -61,10 +89,10 @@ struct RowProblem {
 };
 
 /// Parses the header line. Throws gc::InvalidInput naming "recording.<column>" (with
-/// source:1:column) for an unknown column, an unknown unit, a column given twice, or a required
-/// quantity missing.
-std::vector<RecordingColumn> parse_recording_header(std::string_view header,
-                                                    std::string_view source_name);
+/// source:1:column) for an unknown unit of a known quantity, a quantity given twice, a required
+/// quantity missing, or "recording.columns" for a rename whose header the file lacks.
+RecordingHeader parse_recording_header(std::string_view header, std::string_view source_name,
+                                       const std::vector<ColumnRename>& renames = {});
 
 class RecordingReader {
  public:
@@ -72,12 +100,15 @@ class RecordingReader {
   /// the file cannot be read twice or is empty) and the misalignment of every good row, for the
   /// loading directions' dead band (loading_dead_band_rad, core/loading_direction.h).
   explicit RecordingReader(const std::filesystem::path& path, LoadingDirectionOptions loading = {});
+  RecordingReader(const std::filesystem::path& path, const RecordingOptions& options);
 
   /// Reads up to `max_samples` good samples into `samples` (cleared first). Returns false
   /// when the file had no more rows.
   bool next_chunk(std::vector<RecordedSample>& samples, std::size_t max_samples);
 
-  const std::vector<RecordingColumn>& columns() const { return columns_; }
+  const std::vector<RecordingColumn>& columns() const { return header_.columns; }
+  /// Columns of no known quantity, as written: not read.
+  const std::vector<std::string>& ignored_columns() const { return header_.ignored; }
   std::size_t rows_read() const { return rows_read_; }          ///< data rows, good and bad
   std::size_t excluded_rows() const { return excluded_rows_; }
   /// The loading directions' dead band for this recording [rad].
@@ -95,15 +126,15 @@ class RecordingReader {
 
   std::string source_name_;
   std::ifstream in_;
-  std::vector<RecordingColumn> columns_;
+  RecordingHeader header_;
   double loading_dead_band_rad_ = 0.0;
   LoadingDirectionTracker loading_;
   bool has_speed_ = false;
   RotationPhaseIntegrator phase_;
   InputRateTracker misalignment_rate_, torque_rate_;
   std::string line_;
-  std::vector<std::string_view> fields_;
-  long line_number_ = 1;
+  CsvFields fields_;
+  long line_number_ = 0;
   std::size_t rows_read_ = 0;
   std::size_t excluded_rows_ = 0;
   std::optional<double> last_time_s_;
@@ -116,12 +147,14 @@ struct Recording {
   std::vector<RowProblem> problems;   ///< the first RecordingReader::kKeptProblems
   std::size_t rows_read = 0;
   std::size_t excluded_rows = 0;
+  std::vector<std::string> ignored_columns;
 };
 Recording read_recording(const std::filesystem::path& path, LoadingDirectionOptions loading = {});
+Recording read_recording(const std::filesystem::path& path, const RecordingOptions& options);
 
 /// The CSV of `samples` with SI columns (time_s, torque_nm, misalignment_rad, direction_rad,
 /// msy_nm, msz_nm, then the optional ones the first sample has), shortest round-trip numbers.
 std::string recording_header(const RecordedSample& first);
 void append_recording_row(std::string& out, const RecordedSample& sample);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

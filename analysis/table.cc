@@ -1,10 +1,10 @@
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 // Code points, not bytes: units such as "N·m" hold a two-byte character.
@@ -57,4 +57,4 @@ Table quantity_table() { return Table({"quantity", "value", "unit"}); }
 
 std::string format_number(double value) { return fmt::format("{:.6g}", value); }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

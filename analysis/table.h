@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace gc::cli {
+namespace gc::analysis {
 
 class Table {
  public:
@@ -30,4 +30,4 @@ Table quantity_table();
 /// Six significant digits, as tables show numbers ("1.5e+06", "0.000123").
 std::string format_number(double value);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

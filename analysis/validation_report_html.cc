@@ -1,14 +1,17 @@
-#include "clients/cli/validation_report_html.h"
+#include "analysis/validation_report_html.h"
 
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/atomic_file.h"
+#include "analysis/report_scale.h"
 #include "codec/result_json.h"
+#include "codec/validation_messages.h"
 #include "validation_report_js.h"  // kValidationReportJs, generated from validation_report.js
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 constexpr std::string_view kStyle = R"css(
@@ -61,4 +64,21 @@ std::string validation_report_html(const gearcoupling::v1::ValidationReport& rep
   return html;
 }
 
-}  // namespace gc::cli
+gearcoupling::v1::ValidationReport validation_report(const gearcoupling::v1::ValidationResult& result,
+                                                     const std::vector<ModelRun>& runs) {
+  gearcoupling::v1::ValidationReport report;
+  *report.mutable_result() = result;
+  for (const ModelRun& run : runs) {
+    *report.add_plot_points() = codec::to_message(run.name, run.points.points());
+  }
+  report.set_colour_scale_max_nm(colour_scale_max_nm(result));
+  report.set_noise_level_nm(noise_level_nm(result));
+  return report;
+}
+
+void write_validation_report(const std::filesystem::path& path,
+                             const gearcoupling::v1::ValidationReport& report) {
+  write_file_atomically(path, validation_report_html(report), "--html");
+}
+
+}  // namespace gc::analysis

@@ -1,12 +1,13 @@
-#include "clients/cli/validation_run.h"
+#include "analysis/validation_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <thread>
 
 #include "core/model_error.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 struct Outcome {
@@ -49,6 +50,7 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
     const Outcome& outcome = outcomes[i];
     if (outcome.moments) {
       run.validation.add(samples[i], *outcome.moments);
+      run.scale.add(samples[i].measured, *outcome.moments);
     } else {
       run.validation.reject(samples[i], outcome.field, outcome.message);
     }
@@ -60,16 +62,21 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options) {
-  RecordingReader reader(path);
+  RecordingReader reader(path, RecordingOptions{{}, options.renames});
   std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
+  double largest_misalignment_rad = 0.0;
   while (reader.next_chunk(chunk, options.chunk_samples)) {
+    for (const RecordedSample& sample : chunk) {
+      largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
+    }
     for (ModelRun& run : runs) {
       predict_chunk(*run.model, chunk, options.threads, outcomes);
       accumulate(chunk, outcomes, run);
     }
   }
-  return {path.filename().string(), reader.rows_read(), reader.excluded_rows(), reader.problems()};
+  return {path.filename().string(), reader.rows_read(), reader.excluded_rows(), reader.problems(),
+          reader.ignored_columns(), largest_misalignment_rad};
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

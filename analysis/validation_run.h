@@ -8,18 +8,20 @@
 #include <string>
 #include <vector>
 
-#include "clients/cli/recording_csv.h"
+#include "analysis/recording_csv.h"
+#include "analysis/scale_check.h"
 #include "core/coupling_model.h"
 #include "core/validation/error_bins.h"
 #include "core/validation/plot_points.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 struct ModelRun {
   std::string name;
   const CouplingModel* model;
   ValidationAccumulator validation;
   PointSampler points;
+  MomentScale scale = {};   ///< measured against predicted RMS (analysis/scale_check.h)
 };
 
 struct RecordingSummary {
@@ -27,11 +29,14 @@ struct RecordingSummary {
   std::size_t rows_read = 0;
   std::size_t excluded_rows = 0;
   std::vector<RowProblem> problems;   ///< the first RecordingReader::kKeptProblems
+  std::vector<std::string> ignored_columns;
+  double largest_misalignment_rad = 0.0;   ///< of the rows read well, refused ones included
 };
 
 struct ValidationRunOptions {
   int threads = 1;
   std::size_t chunk_samples = 1u << 15;
+  std::vector<ColumnRename> renames = {};   ///< --columns
 };
 
 /// Compares every model of `runs` with the recording at `path`. Samples a model refuses are
@@ -39,4 +44,4 @@ struct ValidationRunOptions {
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -1,4 +1,4 @@
-#include "clients/cli/validation_summary.h"
+#include "analysis/validation_summary.h"
 
 #include <algorithm>
 #include <string>
@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 namespace v1 = gearcoupling::v1;
@@ -120,4 +120,4 @@ void print_validation_summary(const v1::ValidationResult& result, std::FILE* out
   print_row_problems(result, out);
 }
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -7,8 +7,8 @@
 
 #include "idl/validation.pb.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 
 void print_validation_summary(const gearcoupling::v1::ValidationResult& result, std::FILE* out);
 
-}  // namespace gc::cli
+}  // namespace gc::analysis

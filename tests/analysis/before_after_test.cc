@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/cli/validation_report_html.h"
-#include "clients/cli/validation_run.h"
-#include "clients/cli/validation_summary.h"
+#include "analysis/validation_report_html.h"
+#include "analysis/validation_run.h"
+#include "analysis/validation_summary.h"
 #include "codec/validation_messages.h"
 #include "test_models.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
 TEST(BeforeAfter, TheModelWithTheHiddenEffectFallsToTheNoiseSideBySide) {
@@ -60,4 +60,4 @@ TEST(BeforeAfter, TheModelWithTheHiddenEffectFallsToTheNoiseSideBySide) {
 }
 
 }  // namespace
-}  // namespace gc::cli
+}  // namespace gc::analysis

@@ -7,17 +7,18 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "clients/cli/recording_csv.h"
+#include "analysis/format_error.h"
+#include "analysis/recording_csv.h"
 #include "core/loading_direction.h"
 #include "core/model_error.h"
 #include "core/synthesis/synthesize.h"
 #include "run_process.h"
 
-namespace gc::cli {
+namespace gc::analysis {
 namespace {
 
-using testing::temp_path;
-using testing::write_file;
+using cli::testing::temp_path;
+using cli::testing::write_file;
 
 const std::string kHeader = "time_s,torque_nm,misalignment_deg,direction_deg,msy_nm,msz_nm\n";
 
@@ -43,11 +44,91 @@ TEST(RecordingReader, MissingRequiredColumnIsNamed) {
   EXPECT_NE(std::string(error.what()).find("msz_knm"), std::string::npos) << error.what();
 }
 
-TEST(RecordingReader, UnknownColumnIsNamedWithItsColumnNumber) {
-  const InvalidInput error =
-      header_error("time_s,torque_nm,misalignment_deg,direction_deg,msy_nm,msz_nm,humidity_pct");
-  EXPECT_EQ(error.field(), "recording.humidity_pct");
-  EXPECT_NE(std::string(error.what()).find(":1:7:"), std::string::npos) << error.what();
+// A DAQ export carries dozens of channels: those of no known quantity are ignored, named, and
+// never parsed (a text channel does not exclude the row).
+TEST(RecordingReader, UnknownColumnsAreIgnoredAndListed) {
+  const Recording recording = read_text(
+      "Ch1,time_s,torque_nm,humidity_pct,misalignment_deg,direction_deg,msy_nm,msz_nm\n"
+      "x,0.1,1e6,41,0.2,0,1,2\n"
+      "y,0.2,1.1e6,n/a,0.2,0,3,4\n");
+  EXPECT_EQ(recording.ignored_columns, (std::vector<std::string>{"Ch1", "humidity_pct"}));
+  ASSERT_EQ(recording.samples.size(), 2u);
+  EXPECT_EQ(recording.excluded_rows, 0u);
+  EXPECT_EQ(recording.samples[1].input.torque_nm, 1.1e6);
+  EXPECT_EQ(recording.samples[1].measured.z_nm, 4.0);
+}
+
+// msy_kNm, msy_Nm and msy_KNM are the listed units in another case: accepted, same scale.
+TEST(RecordingReader, UnitsMatchInAnyCase) {
+  const Recording recording = read_text(
+      "time_S,torque_MNm,misalignment_DEG,direction_Rad,msy_kNm,msz_KNM,speed_RPM\n"
+      "0.5,1.5,0.2,0.1,3,-4,12\n");
+  ASSERT_EQ(recording.samples.size(), 1u);
+  const RecordedSample& s = recording.samples[0];
+  EXPECT_EQ(s.input.time_s, 0.5);
+  EXPECT_EQ(s.input.torque_nm, 1.5e6);
+  EXPECT_NEAR(s.input.misalignment_rad, 0.2 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(s.input.direction_rad, 0.1);
+  EXPECT_EQ(s.measured.y_nm, 3e3);
+  EXPECT_EQ(s.measured.z_nm, -4e3);
+  EXPECT_EQ(s.input.speed_rpm, 12.0);
+}
+
+// --columns msy_knm=Ch3_kNm: a DAQ's channel names read as the documented columns.
+TEST(RecordingReader, RenamesReadTheFilesColumnsUnderDocumentedNames) {
+  const std::string path = temp_path("renamed") + ".csv";
+  write_file(path, "t,Torque,Mis,Dir,Ch3_kNm,Ch4_kNm,Ch5\n0.1,1e6,0.2,0,1.5,2.5,9\n");
+  RecordingOptions options;
+  options.renames = parse_column_renames(
+      "time_s=t,torque_nm=Torque,misalignment_deg=Mis,direction_deg=Dir,msy_knm=Ch3_kNm,msz_knm=Ch4_kNm");
+  const Recording recording = read_recording(path, options);
+  ASSERT_EQ(recording.samples.size(), 1u);
+  EXPECT_EQ(recording.samples[0].measured.y_nm, 1.5e3);
+  EXPECT_EQ(recording.samples[0].measured.z_nm, 2.5e3);
+  EXPECT_EQ(recording.ignored_columns, (std::vector<std::string>{"Ch5"}));
+}
+
+TEST(RecordingReader, RenameOfAColumnTheFileLacksIsNamed) {
+  const std::string path = temp_path("renamed") + ".csv";
+  write_file(path, kHeader + "0.1,1e6,0.2,0,1,2\n");
+  RecordingOptions options;
+  options.renames = parse_column_renames("msy_knm=Ch3_kNm");
+  try {
+    read_recording(path, options);
+    FAIL() << "accepted";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "recording.columns");
+    EXPECT_NE(std::string(error.what()).find("no column 'Ch3_kNm'"), std::string::npos) << error.what();
+  }
+}
+
+TEST(RecordingReader, MalformedRenamesAreAFormatErrorNamingTheItem) {
+  EXPECT_THROW(parse_column_renames("msy_knm"), FormatError);
+  EXPECT_THROW(parse_column_renames("moment_knm=Ch3"), FormatError);
+  EXPECT_THROW(parse_column_renames("msy_knm="), FormatError);
+  try {
+    parse_column_renames("msy_knm=Ch3,bogus=Ch4");
+    FAIL();
+  } catch (const FormatError& error) {
+    EXPECT_NE(std::string(error.what()).find("'bogus=Ch4'"), std::string::npos) << error.what();
+  }
+}
+
+// The same tokenizer as batch input (analysis/csv_fields.h): a byte-order mark, CRLF, blank
+// lines and quoted numbers read as in a plain file, and line numbers count the blank lines.
+TEST(RecordingReader, ByteOrderMarkCrlfBlankLinesAndQuotedNumbersReadAsPlain) {
+  const Recording plain = read_text(kHeader + "0.1,1e6,0.2,0,1,2\n0.2,1e6,0.2,0,3,4\n");
+  const Recording spreadsheet = read_text(
+      "\xEF\xBB\xBF" + kHeader.substr(0, kHeader.size() - 1) + "\r\n\r\n"
+      "\"0.1\",1e6,0.2,0,1,2\r\n  \r\n0.2,\"1e6\",0.2,0,3,4\r\n\r\n");
+  ASSERT_EQ(spreadsheet.samples.size(), plain.samples.size());
+  EXPECT_EQ(spreadsheet.excluded_rows, 0u);
+  EXPECT_EQ(spreadsheet.samples[1].measured.z_nm, plain.samples[1].measured.z_nm);
+  const Recording comma = read_text("\n" + kHeader + "\n0.1,1e6,\"0,2\",0,1,2\n");
+  ASSERT_EQ(comma.problems.size(), 1u);
+  EXPECT_EQ(comma.problems[0].line, 4);  // a blank line before the header, one after it
+  EXPECT_EQ(comma.problems[0].column, 3);
+  EXPECT_NE(comma.problems[0].message.find("not a number '0,2'"), std::string::npos) << comma.problems[0].message;
 }
 
 TEST(RecordingReader, UnknownUnitIsNamedWithTheAcceptedSpellings) {
@@ -228,4 +309,4 @@ TEST(RecordingReader, WrittenRowsReadBackExactly) {
 }
 
 }  // namespace
-}  // namespace gc::cli
+}  // namespace gc::analysis
