@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/table.h"
+#include "analysis/validation_summary.h"
 
 namespace gc::analysis {
 namespace {
@@ -79,6 +80,7 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
     fmt::print(out, "\n{}\n", round.verdict());
   }
   if (!result.written_model().empty()) fmt::print(out, "\nModel with the effects found: {}\n", result.written_model());
+  print_input_notes(result.warnings(), result.ignored_columns(), out);
 }
 
 }  // namespace gc::analysis

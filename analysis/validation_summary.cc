@@ -108,6 +108,19 @@ void print_row_problems(const v1::ValidationResult& result, std::FILE* out) {
 
 }  // namespace
 
+void print_input_notes(const google::protobuf::RepeatedPtrField<std::string>& warnings,
+                       const google::protobuf::RepeatedPtrField<std::string>& ignored_columns,
+                       std::FILE* out) {
+  if (!ignored_columns.empty()) {
+    std::string names;
+    for (const std::string& column : ignored_columns) names += (names.empty() ? "" : ", ") + column;
+    fmt::print(out, "\nIgnored columns (no known quantity): {}\n", names);
+  }
+  if (warnings.empty()) return;
+  fmt::print(out, "\nWarnings (a unit in the header, most likely):\n");
+  for (const std::string& warning : warnings) fmt::print(out, "  {}\n", warning);
+}
+
 void print_validation_summary(const v1::ValidationResult& result, std::FILE* out) {
   fmt::print(out, "Recording {}: {} rows; reference torque T_ref {:.3f} MN·m; errors are model - "
              "measurement\n\n", result.recording(), result.recording_rows(),
@@ -118,6 +131,7 @@ void print_validation_summary(const v1::ValidationResult& result, std::FILE* out
     print_rejections(model, out);
   }
   print_row_problems(result, out);
+  print_input_notes(result.warnings(), result.ignored_columns(), out);
 }
 
 }  // namespace gc::analysis

@@ -1,5 +1,6 @@
 // validate's terminal output: per model and channel the error metrics, the worst region of
-// every input in words, the samples the model refused and the rows excluded from the file.
+// every input in words, the samples the model refused, the rows excluded from the file, the
+// columns ignored and the scale warnings.
 // Several models (before/after) print side by side, one row each.
 #pragma once
 
@@ -10,5 +11,11 @@
 namespace gc::analysis {
 
 void print_validation_summary(const gearcoupling::v1::ValidationResult& result, std::FILE* out);
+
+/// The recording's ignored columns and scale warnings (analysis/scale_check.h), when any; the
+/// diagnosis summary prints them too.
+void print_input_notes(const google::protobuf::RepeatedPtrField<std::string>& warnings,
+                       const google::protobuf::RepeatedPtrField<std::string>& ignored_columns,
+                       std::FILE* out);
 
 }  // namespace gc::analysis
