@@ -1,5 +1,7 @@
 // The HTML report of `gearcoupling validate` (validation_report_html.cc inlines this file and
 // Chart.js). DATA is a gearcoupling.v1.ValidationReport in protobuf JSON (proto field names).
+// Moments and errors are in kN·m throughout. Charts of an input this recording does not vary
+// are left out, and the report says which. Every error map shares one colour scale.
 "use strict";
 const R = DATA.result;
 const MODELS = R.models || [];
@@ -8,7 +10,7 @@ const TREF = R.reference_torque_nm;
 const JAM = R.jam_angle_rad;
 const DEG = 180 / Math.PI;
 const CHANNELS = [["msy", "M_sy'"], ["msz", "M_sz'"]];
-// One colour per (model, channel); the measurement is grey.
+// One colour per (model, channel); the measurement is light grey, drawn beneath the models.
 const PALETTE = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"];
 const colour = (m, c) => PALETTE[(2 * m + c) % PALETTE.length];
 const num = (v) => (v === undefined ? NaN : Number(v));
@@ -55,7 +57,18 @@ const points0 = POINTS.length ? POINTS[0].points || [] : [];
 const base = (points0.find((p) => num(p.misalignment_rad) > 0) || { direction_rad: 0 }).direction_rad;
 const signedMis = (p) =>
   (100 * num(p.misalignment_rad) / JAM) * (Math.cos(num(p.direction_rad) - num(base)) >= 0 ? 1 : -1);
-const pctT = (v) => (100 * v) / TREF;
+const kNm = (v) => v / 1e3;
+// An input this recording holds constant: its charts would be one vertical stripe.
+const spread = (values) => {
+  const finite = values.filter(Number.isFinite);
+  if (finite.length < 2) return 0;
+  const lo = Math.min(...finite), hi = Math.max(...finite);
+  return hi - lo > 1e-9 * (Math.abs(hi) + Math.abs(lo)) ? hi - lo : 0;
+};
+const LEFT_OUT = [];   // "residual against direction", ... : charts without spread
+const MEASURED_STYLE = { backgroundColor: "rgba(150,150,150,0.35)", pointRadius: 1.5, order: 2 };
+const modelStyle = (m, c) => ({ backgroundColor: colour(m, c), borderColor: colour(m, c),
+  pointStyle: "rectRot", pointRadius: 3, order: 1 });   // lower order is drawn on top
 
 function header() {
   const names = MODELS.map((m) => m.model).join(" vs ");
@@ -63,21 +76,20 @@ function header() {
   main.append(el("p", { class: "note" },
     `${R.recording_rows} rows, ${R.excluded_rows} excluded as malformed. Reference torque ` +
     `T_ref = ${fmt(TREF / 1e6, 3)} MN·m; jam angle ${fmt(JAM * DEG, 4)} deg. ` +
-    `Errors are model - measurement.`));
+    `Errors are model - measurement; moments and errors in kN·m.`));
 }
 
 function metricsTable() {
   main.append(el("h2", {}, "Error per channel"));
   const t = el("table", { class: "metrics" });
-  t.append(el("tr", {}, ...["model", "channel", "samples", "RMSE kN·m", "RMSE % T_ref", "bias kN·m",
-    "bias % T_ref", "R²", "max |err| kN·m", "max % T_ref", "refused"].map((h) => el("th", {}, h))));
+  t.append(el("tr", {}, ...["model", "channel", "samples", "RMSE kN·m", "bias kN·m", "R²",
+    "max |err| kN·m", "refused"].map((h) => el("th", {}, h))));
   for (const m of MODELS) {
     for (const [key, name] of CHANNELS) {
       const e = m.overall[key];
       const r2 = e.r_squared === undefined ? "n/a" : fmt(num(e.r_squared), 4);
       t.append(el("tr", {}, ...[m.model, name, num(e.count), fmt(num(e.rmse_nm) / 1e3, 2),
-        fmt(num(e.rmse_pct), 3), fmt(num(e.bias_nm) / 1e3, 2), fmt(num(e.bias_pct), 3), r2,
-        fmt(num(e.max_abs_error_nm) / 1e3, 2), fmt(num(e.max_abs_error_pct), 3),
+        fmt(num(e.bias_nm) / 1e3, 2), r2, fmt(num(e.max_abs_error_nm) / 1e3, 2),
         num(m.rejected_samples)].map((v) => el("td", {}, String(v)))));
     }
   }
@@ -126,21 +138,27 @@ function whereItFails() {
   }
 }
 
-// Measured points, then each model's predictions: Figures 10-13's axes.
+// Measured points beneath each model's predictions: Figures 10-13's axes.
 function modelVsMeasurement() {
   const grid = section("Model against measurement",
-    "Bending moment at the sensors in % of T_ref, against the misalignment in % of the jam angle " +
+    "Bending moment at the sensors [kN·m] against the misalignment in % of the jam angle " +
     "(negative: direction turned by 180 deg), as the paper's Figures 10-11, and against torque, " +
-    "as Figures 12-13. Grey: measurement; colours: models. A bounded, evenly spaced subset of the samples.");
+    "as Figures 12-13. Grey: measurement; coloured diamonds, drawn on top: models. A bounded, " +
+    "evenly spaced subset of the samples.");
   for (const [xName, xOf] of [["misalignment [% of jam angle]", signedMis],
                               ["torque [MN·m]", (p) => num(p.torque_nm) / 1e6]]) {
+    const input = xName.split(" [")[0];
+    if (!spread(points0.map(xOf))) {
+      LEFT_OUT.push(`model against measurement by ${input}`);
+      continue;
+    }
     CHANNELS.forEach(([key, name], c) => {
-      const sets = [{ label: `${name} measured`, backgroundColor: "rgba(90,90,90,0.45)",
-        data: points0.map((p) => ({ x: xOf(p), y: pctT(num(p[key + "_nm"])) })) }];
-      POINTS.forEach((mp, m) => sets.push({ label: `${name} ${mp.model}`, backgroundColor: colour(m, c),
+      const sets = [{ label: `${name} measured`, ...MEASURED_STYLE,
+        data: points0.map((p) => ({ x: xOf(p), y: kNm(num(p[key + "_nm"])) })) }];
+      POINTS.forEach((mp, m) => sets.push({ label: `${name} ${mp.model}`, ...modelStyle(m, c),
         data: (mp.points || []).filter((p) => p["model_" + key + "_nm"] !== undefined)
-          .map((p) => ({ x: xOf(p), y: pctT(num(p["model_" + key + "_nm"])) })) }));
-      chart(grid, `${name} against ${xName.split(" [")[0]}`, xName, `${name} [% of T_ref]`, sets);
+          .map((p) => ({ x: xOf(p), y: kNm(num(p["model_" + key + "_nm"])) })) }));
+      chart(grid, `${name} against ${input}`, xName, `${name} [kN·m]`, sets);
     });
   }
 }
@@ -153,12 +171,17 @@ function residuals() {
     ["loading direction (-1 falling, 0 still, +1 rising)", (p) => num(p.loading_direction || 0)],
     ["time [s]", (p) => num(p.time_s)]];
   for (const [xName, xOf] of inputs) {
+    const input = xName.split(" [")[0].split(" (")[0];
+    if (!spread(points0.map(xOf))) {
+      LEFT_OUT.push(`residual against ${input}`);
+      continue;
+    }
     const sets = [];
     POINTS.forEach((mp, m) => CHANNELS.forEach(([key, name], c) => sets.push({
       label: `${name} ${mp.model}`, backgroundColor: colour(m, c),
       data: (mp.points || []).filter((p) => p["model_" + key + "_nm"] !== undefined)
-        .map((p) => ({ x: xOf(p), y: (num(p["model_" + key + "_nm"]) - num(p[key + "_nm"])) / 1e3 })) })));
-    chart(grid, `Residual against ${xName.split(" [")[0].split(" (")[0]}`, xName, "model - measurement [kN·m]", sets);
+        .map((p) => ({ x: xOf(p), y: kNm(num(p["model_" + key + "_nm"]) - num(p[key + "_nm"])) })) })));
+    chart(grid, `Residual against ${input}`, xName, "model - measurement [kN·m]", sets);
   }
 }
 
@@ -181,6 +204,10 @@ function binnedErrors() {
   for (const dimension of dimensions) {
     const bins0 = MODELS[0].binnings.find((b) => b.dimension === dimension).bins;
     const used = bins0.map((b, i) => i).filter((i) => num(bins0[i].errors.msy.count) > 0);
+    if (used.length < 2) {
+      LEFT_OUT.push(`RMSE by ${dimension}`);
+      continue;
+    }
     const datasets = [];
     MODELS.forEach((m, mi) => {
       const bins = m.binnings.find((b) => b.dimension === dimension).bins;
@@ -192,18 +219,39 @@ function binnedErrors() {
   }
 }
 
-// Torque x misalignment cells coloured by RMSE, white (zero) to red (the worst cell).
+// Torque x misalignment cells coloured by RMSE on one absolute scale for every map: white at
+// zero, deep red at the worst cell of all models and channels (DATA.colour_scale_max_nm), so a
+// model at the noise level reads pale beside one that fails. The noise level is marked on the
+// scale. The page exposes the scale in data attributes (tests/validation/report_browser_test.cc).
+const SCALE_MAX = Math.max(1e-9, num(DATA.colour_scale_max_nm));
+const NOISE = num(DATA.noise_level_nm) || 0;
+const alphaOf = (rmse) => 0.05 + 0.85 * Math.min(1, rmse / SCALE_MAX);
+
+function colourScale() {
+  const box = el("div", { class: "scale", id: "colour-scale",
+    "data-scale-max-nm": String(SCALE_MAX), "data-noise-level-nm": String(NOISE) });
+  const bar = el("div", { class: "bar" });
+  const noiseAt = Math.min(100, (100 * NOISE) / SCALE_MAX);
+  bar.append(el("div", { class: "noise", style: `left: ${fmt(noiseAt, 2)}%`,
+    title: `noise level ${fmt(NOISE / 1e3, 2)} kN·m` }));
+  box.append(el("span", {}, "0"), bar, el("span", {}, `${fmt(SCALE_MAX / 1e3, 1)} kN·m`),
+    el("span", { class: "note" }, ` RMSE; the black mark is the noise level, ${fmt(NOISE / 1e3, 2)} kN·m: ` +
+      "a cell near it is as good as the measurement allows."));
+  return box;
+}
+
 function errorMaps() {
   main.append(el("h2", {}, "Error map: torque x misalignment"));
-  main.append(el("p", { class: "note" }, "RMSE [kN·m] per cell (samples in brackets); rows torque, columns misalignment amplitude."));
-  const wrap = el("div", { class: "maps" });
+  main.append(el("p", { class: "note" }, "RMSE [kN·m] per cell (samples in brackets); rows torque, " +
+    "columns misalignment amplitude. One colour scale for every map:"));
+  main.append(colourScale());
+  const wrap = el("div", { class: "maps", "data-scale-max-nm": String(SCALE_MAX) });
   main.append(wrap);
   for (const m of MODELS) {
     const map = m.error_map, te = map.torque_edges_nm.map(num), me = map.misalignment_edges_rad.map(num);
     for (const [key, name] of CHANNELS) {
       const cols = me.length - 1;
-      const worst = Math.max(1e-9, ...map.cells.map((c) => num(c[key].rmse_nm)));
-      const t = el("table", { class: "map" });
+      const t = el("table", { class: "map", "data-model": m.model, "data-channel": name });
       t.append(el("caption", {}, `${name}, ${m.model}`));
       t.append(el("tr", {}, el("th", {}, "T [MN·m] \\ ζ [% jam]"),
         ...me.slice(0, -1).map((lo, j) => el("th", {}, `${fmt(100 * lo / JAM, 0)}-${fmt(100 * me[j + 1] / JAM, 0)}`))));
@@ -211,9 +259,12 @@ function errorMaps() {
         const row = el("tr", {}, el("th", {}, `${fmt(te[i] / 1e6, 2)}-${fmt(te[i + 1] / 1e6, 2)}`));
         for (let j = 0; j < cols; ++j) {
           const cell = map.cells[i * cols + j][key], n = num(cell.count);
-          const share = n > 0 ? num(cell.rmse_nm) / worst : 0;
-          const td = el("td", { style: n > 0 ? `background: rgba(214,39,40,${fmt(0.05 + 0.85 * share, 2)})` : "" },
-            n > 0 ? `${fmt(num(cell.rmse_nm) / 1e3, 1)} (${n})` : "");
+          const rmse = num(cell.rmse_nm);
+          const td = n > 0
+            ? el("td", { style: `background: rgba(214,39,40,${fmt(alphaOf(rmse), 3)})`,
+                "data-rmse-nm": String(rmse), "data-alpha": fmt(alphaOf(rmse), 3) },
+                `${fmt(rmse / 1e3, 1)} (${n})`)
+            : el("td", {}, "");
           row.append(td);
         }
         t.append(row);
@@ -223,10 +274,26 @@ function errorMaps() {
   }
 }
 
+// What was left out and why, above the charts: a placeholder filled once they are drawn.
+function leftOutNote() {
+  const note = el("p", { class: "note", id: "left-out" });
+  main.append(note);
+  return note;
+}
+function fillLeftOut(note) {
+  note.setAttribute("data-left-out", LEFT_OUT.join(";"));
+  if (LEFT_OUT.length) {
+    note.append(`Left out, as this recording holds the input constant (one vertical stripe, or ` +
+      `a single bin): ${LEFT_OUT.join(", ")}.`);
+  }
+}
+
 header();
 metricsTable();
 whereItFails();
+const leftOut = leftOutNote();
 modelVsMeasurement();
 residuals();
 binnedErrors();
 errorMaps();
+fillLeftOut(leftOut);

@@ -24,6 +24,10 @@ table { border-collapse: collapse; margin: 8px 0; }
 th, td { border: 1px solid #ccc; padding: 4px 8px; text-align: right; font-size: 13px; }
 .maps { display: grid; grid-template-columns: 1fr 1fr; gap: 16px; }
 caption { font-weight: bold; padding: 4px; }
+.scale { display: flex; align-items: center; gap: 8px; margin: 8px 0; }
+.scale .bar { position: relative; width: 320px; height: 16px; border: 1px solid #ccc;
+  background: linear-gradient(to right, rgba(214,39,40,0.05), rgba(214,39,40,0.9)); }
+.scale .noise { position: absolute; top: -4px; bottom: -4px; width: 3px; background: #000; }
 )css";
 
 std::string read_file(const std::filesystem::path& path) {
