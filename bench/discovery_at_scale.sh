@@ -7,7 +7,8 @@
 #   bench/discovery_at_scale.sh [BUILD_DIR] [N]      (defaults: build, 100)
 #
 # GEARCOUPLING / GEARCOUPLING_SERVICE override the binaries (to measure another build).
-# Bounded: every process runs under timeout (the CLI waits at most 30 s for its reply).
+# BENCH_CYCLONEDDS_URI overrides the service's configuration. Bounded: every process runs under
+# timeout (the CLI waits at most 30 s for its reply).
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -15,9 +16,12 @@ n=${2:-100}
 cli=${GEARCOUPLING:-$build/clients/cli/gearcoupling}
 service_bin=${GEARCOUPLING_SERVICE:-$build/service/gearcoupling-service}
 export CYCLONEDDS_URI="${BENCH_CYCLONEDDS_URI:-file://$here/deploy/cyclonedds-loopback.xml}"
+# The CLI processes use the client configuration (no participant-index port, so clients do not
+# discover each other; BENCH_CLIENT_CYCLONEDDS_URI overrides it, e.g. with the service's).
+client_uri=${BENCH_CLIENT_CYCLONEDDS_URI:-file://$here/deploy/cyclonedds-loopback-client.xml}
 domain=$((1 + $$ % 200))
 work=$(mktemp -d)
-echo "# $n CLI processes at once; $CYCLONEDDS_URI, domain $domain, $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# $n CLI processes at once; service $CYCLONEDDS_URI, clients $client_uri, domain $domain, $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 "$service_bin" --domain "$domain" --log-level warn 2>"$work/service.log" &
 service=$!
@@ -30,7 +34,7 @@ start=$(date +%s.%N)
 i=0
 while [ $i -lt "$n" ]; do
   ( rc=0
-    CYCLONEDDS_URI=${BENCH_CLIENT_CYCLONEDDS_URI:-$CYCLONEDDS_URI} timeout 40 "$cli" jam-angle --remote --domain "$domain" --coupling nrel_upwind \
+    CYCLONEDDS_URI=$client_uri timeout 40 "$cli" jam-angle --remote --domain "$domain" --coupling nrel_upwind \
       --timeout 30 >"$work/out.$i" 2>&1 || rc=$?
     echo "$rc $(date +%s.%N)" >"$work/done.$i" ) &
   i=$((i + 1))
