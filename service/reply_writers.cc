@@ -35,28 +35,39 @@ ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5>
       on_first_parked_(std::move(on_first_parked)) {}
 
 void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation) {
-  std::lock_guard lock(mutex_);
   const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
-  departed_.erase(client_id);
-  Writer& entry = writers_[key];
-  entry.readers += 1;
-  if (entry.writer) return;
+  {
+    std::lock_guard lock(mutex_);
+    departed_.erase(client_id);
+    Writer& entry = writers_[key];
+    entry.readers += 1;
+    if (entry.writer) return;
+  }
+  // Created without mutex_: the request listener takes it (admit), and creating a writer may
+  // wait for Cyclone's receive thread, which runs that listener (announcing the writer is a
+  // reliable write). Only the dispatch loop creates and deletes writers, so none races this.
   const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(client_id));
-  entry.publisher = Entity(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
-                                     "dds_create_publisher"));
+  Entity publisher(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
+                             "dds_create_publisher"));
   // Max blocking time 0: a write never waits for a client's acknowledgements; a full window
   // returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog instead.
   const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, 0.0);
-  entry.writer = Entity(check_dds(
-      dds_create_writer(entry.publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
+  Entity writer(check_dds(
+      dds_create_writer(publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
       "dds_create_writer"));
+  std::lock_guard lock(mutex_);
+  Writer& entry = writers_[key];
+  entry.publisher = std::move(publisher);
+  entry.writer = std::move(writer);
 }
 
 void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation) {
+  Writer gone;  // deleted after mutex_ is released, for the reason given in reader_appeared
   std::lock_guard lock(mutex_);
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
   if (found == writers_.end()) return;
   if (--found->second.readers > 0) return;
+  gone = std::move(found->second);
   writers_.erase(found);
   const auto next = writers_.lower_bound({client_id, 0});
   if (next == writers_.end() || next->first.first != client_id) {
