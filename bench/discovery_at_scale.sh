@@ -55,6 +55,10 @@ if [ "$ok" -gt 0 ]; then
     printf "wall time from start, answered processes: median %.2f s, 90%% %.2f s, max %.2f s\n",
            t[int((NR + 1) / 2)], t[i9], t[NR] }' "$work/times"
 fi
+if ! kill -0 "$service" 2>/dev/null; then
+  wait "$service" && status=0 || status=$?
+  echo "the service exited (status $status) during the run; its log ends:"; tail -5 "$work/service.log"
+fi
 first_failure=$(grep -l -v '^0 ' "$work"/done.* 2>/dev/null | head -1 || true)
 if [ -n "$first_failure" ]; then
   echo "first failure: $(cat "$work/out.${first_failure##*.}" | head -3)"
