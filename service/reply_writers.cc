@@ -12,71 +12,162 @@ using protocol::Calculation;
 using protocol::check_dds;
 using protocol::Entity;
 
+namespace {
+
+/// departed_ entries with a finite hold are pruned once there are this many: a flood of made-up
+/// client ids must not grow the map without bound.
+constexpr std::size_t kDepartedPruneSize = 4096;
+
+ReplyWriters::Clock::time_point after(double s) {
+  return ReplyWriters::Clock::now() + std::chrono::duration_cast<ReplyWriters::Clock::duration>(
+                                          std::chrono::duration<double>(s));
+}
+
+}  // namespace
+
 ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-                           std::string instance_tag, double max_blocking_s)
+                           std::string instance_tag, std::size_t max_parked,
+                           std::function<void()> on_first_parked)
     : participant_(participant),
       reply_topics_(reply_topics),
       instance_tag_(std::move(instance_tag)),
-      max_blocking_s_(max_blocking_s) {}
-
-dds_entity_t ReplyWriters::writer_locked(const Key& key) {
-  Writer& entry = writers_[key];
-  if (!entry.writer) {
-    const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(key.first));
-    entry.publisher =
-        Entity(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
-                         "dds_create_publisher"));
-    const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, max_blocking_s_);
-    entry.writer = Entity(check_dds(
-        dds_create_writer(entry.publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
-        "dds_create_writer"));
-  }
-  return entry.writer.get();
-}
+      max_parked_(max_parked),
+      on_first_parked_(std::move(on_first_parked)) {}
 
 void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation) {
-  std::lock_guard lock(mutex_);
   const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
-  departed_.erase(client_id);
-  writer_locked(key);
-  writers_[key].readers += 1;
+  {
+    std::lock_guard lock(mutex_);
+    departed_.erase(client_id);
+    Writer& entry = writers_[key];
+    entry.readers += 1;
+    if (entry.writer) return;
+  }
+  // Created without mutex_: the request listener takes it (admit), and creating a writer may
+  // wait for Cyclone's receive thread, which runs that listener (announcing the writer is a
+  // reliable write). Only the dispatch loop creates and deletes writers, so none races this.
+  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(client_id));
+  Entity publisher(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
+                             "dds_create_publisher"));
+  // Max blocking time 0: a write never waits for a client's acknowledgements; a full window
+  // returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog instead.
+  const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, 0.0);
+  Entity writer(check_dds(
+      dds_create_writer(publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
+      "dds_create_writer"));
+  std::lock_guard lock(mutex_);
+  Writer& entry = writers_[key];
+  entry.publisher = std::move(publisher);
+  entry.writer = std::move(writer);
 }
 
 void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation) {
+  Writer gone;  // deleted after mutex_ is released, for the reason given in reader_appeared
   std::lock_guard lock(mutex_);
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
   if (found == writers_.end()) return;
   if (--found->second.readers > 0) return;
+  gone = std::move(found->second);
   writers_.erase(found);
   const auto next = writers_.lower_bound({client_id, 0});
   if (next == writers_.end() || next->first.first != client_id) {
-    departed_[client_id] = std::chrono::steady_clock::time_point::max();  // ids are never reused
+    departed_[client_id] = Clock::time_point::max();  // ids are never reused
   }
 }
 
 void ReplyWriters::mark_departed(std::uint64_t client_id, double hold_s) {
   std::lock_guard lock(mutex_);
-  auto& until = departed_[client_id];
-  until = std::max(until, std::chrono::steady_clock::now() +
-                              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                  std::chrono::duration<double>(hold_s)));
+  mark_departed_locked(client_id, after(hold_s));
 }
 
-dds_entity_t ReplyWriters::matched_writer(std::uint64_t client_id, Calculation calculation,
-                                          std::chrono::steady_clock::time_point deadline) {
-  dds_entity_t writer = 0;
+void ReplyWriters::mark_departed_locked(std::uint64_t client_id, Clock::time_point until) {
+  auto& held = departed_[client_id];
+  held = std::max(held, until);
+}
+
+bool ReplyWriters::departed_locked(std::uint64_t client_id, Clock::time_point now) {
+  const auto departed = departed_.find(client_id);
+  if (departed == departed_.end()) return false;
+  if (now < departed->second) return true;
+  departed_.erase(departed);
+  return false;
+}
+
+bool ReplyWriters::matched_locked(const Key& key) {
+  const auto found = writers_.find(key);
+  if (found == writers_.end()) return false;
+  Writer& entry = found->second;
+  // Matching is asynchronous to the writer's creation, so ask Cyclone until it says yes.
+  if (!entry.matched) entry.matched = protocol::matched_reader_count(entry.writer.get()) > 0;
+  return entry.matched;
+}
+
+ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation calculation,
+                                            std::uint64_t sequence_number, Job& job,
+                                            Clock::time_point park_until) {
+  bool first = false;
   {
     std::lock_guard lock(mutex_);
-    const auto departed = departed_.find(client_id);
-    if (departed != departed_.end()) {
-      if (std::chrono::steady_clock::now() < departed->second) return 0;
-      departed_.erase(departed);
+    if (departed_locked(client_id, Clock::now())) {
+      drops_.departed += 1;
+      return Admission::kDropped;
     }
-    writer = writer_locked({client_id, static_cast<int>(protocol::index_of(calculation))});
+    const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
+    if (matched_locked(key)) return Admission::kRun;
+    if (parked_count_ >= max_parked_) {
+      drops_.parked_full += 1;
+      return Admission::kDropped;
+    }
+    parked_[key].push_back({sequence_number, park_until, std::move(job)});
+    first = parked_count_++ == 0;
   }
-  const bool matched =
-      protocol::wait_until([&] { return protocol::matched_reader_count(writer) > 0; }, deadline);
-  return matched ? writer : 0;
+  if (first && on_first_parked_) on_first_parked_();
+  return Admission::kParked;
+}
+
+std::vector<ReplyWriters::Job> ReplyWriters::release(Clock::time_point now, double hold_s,
+                                                     std::vector<UnmatchedRequest>& expired) {
+  std::vector<Job> ready;
+  std::lock_guard lock(mutex_);
+  for (auto it = parked_.begin(); it != parked_.end();) {
+    std::deque<Parked>& queue = it->second;
+    const bool matched = matched_locked(it->first);
+    while (!queue.empty() && (matched || queue.front().until <= now)) {
+      if (matched) {
+        ready.push_back(std::move(queue.front().job));
+      } else {
+        expired.push_back({it->first.first, queue.front().sequence_number,
+                           protocol::kAllCalculations[it->first.second]});
+        drops_.unmatched += 1;
+        mark_departed_locked(it->first.first, after(hold_s));
+      }
+      queue.pop_front();
+      parked_count_ -= 1;
+    }
+    it = queue.empty() ? parked_.erase(it) : std::next(it);
+  }
+  if (departed_.size() >= kDepartedPruneSize) {
+    std::erase_if(departed_, [now](const auto& entry) {
+      return entry.second != Clock::time_point::max() && entry.second <= now;
+    });
+  }
+  return ready;
+}
+
+std::size_t ReplyWriters::parked() const {
+  std::lock_guard lock(mutex_);
+  return parked_count_;
+}
+
+AdmissionDrops ReplyWriters::drops() const {
+  std::lock_guard lock(mutex_);
+  return drops_;
+}
+
+dds_entity_t ReplyWriters::writer(std::uint64_t client_id, Calculation calculation) const {
+  std::lock_guard lock(mutex_);
+  const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
+  return found == writers_.end() ? 0 : found->second.writer.get();
 }
 
 std::size_t ReplyWriters::clients() const {

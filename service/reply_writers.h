@@ -1,46 +1,86 @@
 // One reply writer per (client, calculation), each in that client's own reply partition
 // ("gearcoupling.reply.<client id>"), so a reply travels only to the client that asked, on the
-// wire. Writers are created when discovery reports a client's reply reader (before the client
-// may send, see docs/protocol.md) or, for a client that did not wait, at its first request; they
-// are deleted when the reader goes. Every writer carries this instance's id as USER_DATA, by
-// which a client knows this instance's writer has matched its reader.
+// wire. Writers are created only when discovery reports a client's reply reader (before the
+// client may send, see docs/protocol.md) and deleted when the reader goes: a request carrying an
+// id no reader has (made up, 0, or a client that did not wait for discovery) creates nothing.
+// Every writer carries this instance's id as USER_DATA, by which a client knows this instance's
+// writer has matched its reader.
+//
+// Match before compute: admit() lets a request reach the workers only once its reply writer is
+// matched. Until then the request is parked here, outside the workers, for a bounded time and in
+// a bounded number; release() hands over those whose reader appeared and drops the expired.
+// Nothing here blocks.
 #pragma once
 
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "protocol/calculation.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::service {
 
+/// Requests dropped before any work was spent on them, since the start.
+struct AdmissionDrops {
+  std::uint64_t unmatched = 0;    ///< parked until their deadline, no reply reader appeared
+  std::uint64_t parked_full = 0;  ///< arrived while the parked requests were at their limit
+  std::uint64_t departed = 0;     ///< from a client whose readers went or stopped acknowledging
+};
+
+/// A parked request given up on, for the log.
+struct UnmatchedRequest {
+  std::uint64_t client_id = 0;
+  std::uint64_t sequence_number = 0;
+  protocol::Calculation calculation{};
+};
+
 class ReplyWriters {
  public:
-  /// `reply_topics[index_of(c)]` is calculation c's reply topic on `participant`.
-  /// Writes block at most `max_blocking_s` for an unacknowledging client.
+  using Clock = std::chrono::steady_clock;
+  using Job = std::function<void()>;
+  enum class Admission { kRun, kParked, kDropped };
+
+  /// `reply_topics[index_of(c)]` is calculation c's reply topic on `participant`. At most
+  /// `max_parked` requests wait for their client's reader at once. `on_first_parked` is called
+  /// (under no lock of this class) when a request is parked while none was: the dispatch loop
+  /// then polls release() until none is left.
   ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-               std::string instance_tag, double max_blocking_s);
+               std::string instance_tag, std::size_t max_parked,
+               std::function<void()> on_first_parked);
 
   /// A reader of `calculation`'s replies appeared in `client_id`'s partition: make its writer.
   void reader_appeared(std::uint64_t client_id, protocol::Calculation calculation);
   /// That reader went (the client left): delete the writer once no reader of it remains.
   void reader_gone(std::uint64_t client_id, protocol::Calculation calculation);
 
-  /// The writer for (client, calculation), created if discovery has not reported the reader
-  /// yet, after waiting until `deadline` for a reader to match it. 0 when none matched (the
-  /// client is gone or never waited for discovery) or the client has departed (its readers
-  /// went): the reply cannot be delivered.
-  dds_entity_t matched_writer(std::uint64_t client_id, protocol::Calculation calculation,
-                              std::chrono::steady_clock::time_point deadline);
+  /// Without blocking: kRun when (client, calculation)'s writer is matched (the caller runs
+  /// `job`); kParked when it is not (yet): `job` is kept until `park_until`; kDropped when the
+  /// client has departed or the parked requests are at their limit (`job` is left as it was).
+  Admission admit(std::uint64_t client_id, protocol::Calculation calculation,
+                  std::uint64_t sequence_number, Job& job, Clock::time_point park_until);
 
-  /// A reply to `client_id` could not be written in time (a killed client whose reader has not
-  /// yet expired): drop its further replies at once, for `hold_s` or until one of its readers
-  /// appears again, instead of blocking a worker on each.
+  /// Parked jobs whose writer has matched since (for the workers); drops the parked requests
+  /// past their time into `expired`, and marks their clients departed for `hold_s`.
+  std::vector<Job> release(Clock::time_point now, double hold_s,
+                           std::vector<UnmatchedRequest>& expired);
+  /// Requests parked now.
+  std::size_t parked() const;
+  AdmissionDrops drops() const;
+
+  /// The writer for (client, calculation), or 0 when it is gone (the client left).
+  dds_entity_t writer(std::uint64_t client_id, protocol::Calculation calculation) const;
+
+  /// A reply to `client_id` could not be delivered in time (a killed client whose reader has not
+  /// yet expired): drop its further requests at once, for `hold_s` or until one of its readers
+  /// appears again, instead of spending work on them.
   void mark_departed(std::uint64_t client_id, double hold_s);
 
   /// Clients with at least one writer.
@@ -50,20 +90,32 @@ class ReplyWriters {
   struct Writer {
     protocol::Entity publisher;
     protocol::Entity writer;
-    int readers = 0;  ///< discovered readers of this (client, calculation)
+    int readers = 0;       ///< discovered readers of this (client, calculation)
+    bool matched = false;  ///< a reader has matched it (sticky: it goes only with the reader)
+  };
+  struct Parked {
+    std::uint64_t sequence_number;
+    Clock::time_point until;
+    Job job;
   };
   using Key = std::pair<std::uint64_t, int>;
 
-  dds_entity_t writer_locked(const Key& key);
+  bool matched_locked(const Key& key);
+  bool departed_locked(std::uint64_t client_id, Clock::time_point now);
+  void mark_departed_locked(std::uint64_t client_id, Clock::time_point until);
 
   dds_entity_t participant_;
   std::array<dds_entity_t, 5> reply_topics_;
   std::string instance_tag_;
-  double max_blocking_s_;
+  std::size_t max_parked_;
+  std::function<void()> on_first_parked_;
   mutable std::mutex mutex_;
   std::map<Key, Writer> writers_;
+  std::map<Key, std::deque<Parked>> parked_;
+  std::size_t parked_count_ = 0;
+  AdmissionDrops drops_;
   /// Clients whose readers all went (forever) or who stopped acknowledging (until then).
-  std::map<std::uint64_t, std::chrono::steady_clock::time_point> departed_;
+  std::map<std::uint64_t, Clock::time_point> departed_;
 };
 
 }  // namespace gc::service

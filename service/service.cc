@@ -27,6 +27,14 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+/// Requests waiting for their client's reply reader, at most: a flood of made-up client ids
+/// costs a bounded amount of memory and then one admission check per request.
+constexpr std::size_t kMaxParkedRequests = 1024;
+/// Replies waiting for a client that does not acknowledge, at most.
+constexpr std::size_t kMaxBackloggedReplies = 4096;
+/// How often the dispatch loop looks at parked requests while there are some.
+constexpr std::chrono::milliseconds kParkedPoll{10};
+
 unsigned worker_count(unsigned configured) {
   if (configured > 0) return configured;
   return std::max(1u, std::thread::hardware_concurrency());
@@ -74,8 +82,13 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
                              "dds_create_participant")),
       request_topics_(protocol::make_request_topics(participant_.get())),
       reply_topics_(protocol::make_reply_topics(participant_.get())),
-      reply_writers_(participant_.get(), protocol::handles(reply_topics_), protocol::hex_id(instance_id_),
-                     config.reply_block_s),
+      reply_writers_(participant_.get(), protocol::handles(reply_topics_),
+                     protocol::hex_id(instance_id_), kMaxParkedRequests,
+                     [this] { dds_set_guardcondition(guard_.get(), true); }),
+      reply_backlog_(config.reply_block_s, kMaxBackloggedReplies,
+                     [this](std::uint64_t client_id) {
+                       reply_writers_.mark_departed(client_id, config_.departed_hold_s);
+                     }),
       status_(participant_.get(), instance_id_, worker_count(config.threads),
               config.liveliness_lease_s, catalogue_, stats_),
       pool_(worker_count(config.threads)) {
@@ -83,6 +96,10 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
   request_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
   waitset_ = Entity(check_dds(dds_create_waitset(participant_.get()), "dds_create_waitset"));
+  // Before the request readers: parking a request sets it to wake the dispatch loop.
+  guard_ = Entity(check_dds(dds_create_guardcondition(participant_.get()),
+                            "dds_create_guardcondition"));
+  check_dds(dds_waitset_attach(waitset_.get(), guard_.get(), 0), "dds_waitset_attach");
   // Requests are taken in Cyclone's delivery thread (a data-available listener), not by a
   // thread woken through a waitset: one thread hop less on every round trip.
   const protocol::Qos qos = protocol::request_reply_qos();
@@ -104,9 +121,6 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
   dds_set_status_mask(subscriptions_reader_.get(), DDS_DATA_AVAILABLE_STATUS);
   check_dds(dds_waitset_attach(waitset_.get(), subscriptions_reader_.get(), 0),
             "dds_waitset_attach");
-  guard_ = Entity(check_dds(dds_create_guardcondition(participant_.get()),
-                            "dds_create_guardcondition"));
-  check_dds(dds_waitset_attach(waitset_.get(), guard_.get(), 0), "dds_waitset_attach");
 }
 
 Service::~Service() { pool_.drain_and_stop(); }
@@ -124,7 +138,7 @@ void Service::take_requests() {
     protocol::LoanedSamples<typename T::WireRequest> samples(reader);
     if (samples.size() == 0) return;
     const Clock::time_point received = Clock::now();
-    std::vector<std::function<void()>> jobs;
+    std::vector<std::pair<gearcoupling_Correlation, std::function<void()>>> jobs;
     jobs.reserve(samples.size());
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!samples.info(i).valid_data) continue;
@@ -140,14 +154,14 @@ void Service::take_requests() {
       } catch (...) {
         malformed = std::current_exception();
       }
-      jobs.emplace_back([this, correlation, requester, request = std::move(request), malformed,
-                         received] {
+      jobs.emplace_back(correlation, [this, correlation, requester, request = std::move(request),
+                                      malformed, received] {
         answer<kCalculation>(correlation, requester, request, malformed, received);
       });
     }
-    // Never answered here: in the listener this is Cyclone's receive thread, and a reliable
-    // write blocked on flow control would wait for acknowledgements only this thread can read.
-    for (auto& job : jobs) pool_.submit(std::move(job));
+    // Never computed here, in Cyclone's receive thread: a costly request would hold up every
+    // other client's requests and replies.
+    for (auto& [correlation, job] : jobs) admit(kCalculation, correlation, std::move(job));
   }
 }
 
@@ -157,8 +171,15 @@ void Service::answer(const gearcoupling_Correlation& correlation,
                      const std::optional<typename CalculationTraits<kCalculation>::Request>& request,
                      std::exception_ptr malformed, Clock::time_point received) {
   using T = CalculationTraits<kCalculation>;
-  protocol::OwnedSample<typename T::WireReply> sample(T::reply_type());
-  typename T::WireReply& reply = sample.get();
+  // Admitted only once the client's reply writer matched (admit()): before any computing, the
+  // reply must reach the participant that wrote the request, or the client_id was forged.
+  const dds_entity_t writer = reply_writers_.writer(correlation.client_id, kCalculation);
+  if (writer != 0 && (!requester || !requesters_.reaches(writer, *requester))) {
+    refuse_forged(kCalculation, correlation);
+    return;
+  }
+  auto sample = std::make_shared<protocol::OwnedSample<typename T::WireReply>>(T::reply_type());
+  typename T::WireReply& reply = sample->get();
   reply.correlation = correlation;
   bool ok = false;
   try {
@@ -188,30 +209,7 @@ void Service::answer(const gearcoupling_Correlation& correlation,
                 protocol::to_string(error.status), error.field, error.message);
   }
 
-  const dds_entity_t writer = reply_writers_.matched_writer(
-      correlation.client_id, kCalculation, Clock::now() + seconds(config_.reply_match_timeout_s));
-  if (writer == 0) {
-    spdlog::warn("{} client={} seq={}: reply not delivered: the client's reply reader is not "
-                 "matched (client gone or did not wait for discovery)",
-                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
-                 correlation.sequence_number);
-    reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
-  } else if (!requester || !requesters_.reaches(writer, *requester)) {
-    refuse_forged(kCalculation, correlation);
-    return;
-  } else if (const dds_return_t rc = dds_write(writer, &reply);
-             rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
-    spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
-                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
-                 correlation.sequence_number);
-  } else if (rc < 0) {
-    spdlog::error("{} client={} seq={}: dds_write of the reply failed: {}",
-                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
-                  correlation.sequence_number, dds_strretcode(rc));
-    if (rc == DDS_RETCODE_TIMEOUT) {
-      reply_writers_.mark_departed(correlation.client_id, config_.departed_hold_s);
-    }
-  }
+  write_reply<kCalculation>(correlation, std::shared_ptr<const void>(sample, &reply));
   const double service_time_s = std::chrono::duration<double>(Clock::now() - received).count();
   stats_.record(kCalculation, ok, service_time_s);
   spdlog::debug("{} client={} seq={} {} {:.1f} us", protocol::to_string(kCalculation),
@@ -229,6 +227,74 @@ void Service::refuse_forged(Calculation calculation, const gearcoupling_Correlat
                "participant that reads client {}'s replies (a forged client_id)",
                protocol::to_string(calculation), protocol::hex_id(correlation.client_id),
                correlation.sequence_number, protocol::hex_id(correlation.client_id));
+}
+
+void Service::admit(Calculation calculation, const gearcoupling_Correlation& correlation,
+                    std::function<void()> job) {
+  const Clock::time_point park_until = Clock::now() + seconds(config_.reply_match_timeout_s);
+  switch (reply_writers_.admit(correlation.client_id, calculation, correlation.sequence_number,
+                               job, park_until)) {
+    case ReplyWriters::Admission::kRun:
+      pool_.submit(std::move(job));
+      return;
+    case ReplyWriters::Admission::kParked:
+      return;
+    case ReplyWriters::Admission::kDropped:
+      // Debug only: a flood would otherwise flood the log; the counts are in the stats line.
+      spdlog::debug("{} client={} seq={}: dropped unanswered: the client has departed or {} "
+                    "requests already wait for their clients' reply readers",
+                    protocol::to_string(calculation), protocol::hex_id(correlation.client_id),
+                    correlation.sequence_number, kMaxParkedRequests);
+      return;
+  }
+}
+
+void Service::release_parked(bool final) {
+  std::vector<UnmatchedRequest> expired;
+  std::vector<ReplyWriters::Job> ready =
+      reply_writers_.release(Clock::now(), config_.departed_hold_s, expired);
+  for (ReplyWriters::Job& job : ready) pool_.submit(std::move(job));
+  if (!expired.empty() && unlogged_unmatched_ == 0) first_unlogged_unmatched_ = expired.front();
+  unlogged_unmatched_ += expired.size();
+  // At most one line a second: a flood of made-up ids must not flood the log.
+  const Clock::time_point now = Clock::now();
+  if (unlogged_unmatched_ == 0 || (!final && now < next_unmatched_log_)) return;
+  const UnmatchedRequest& e = first_unlogged_unmatched_;
+  spdlog::warn("{} request(s) dropped unanswered: no reply reader of their client matched within "
+               "{} s (--reply-match-timeout; a made-up client_id, or a client that did not wait "
+               "for discovery), the first: {} client={} seq={}",
+               unlogged_unmatched_, config_.reply_match_timeout_s,
+               protocol::to_string(e.calculation), protocol::hex_id(e.client_id),
+               e.sequence_number);
+  unlogged_unmatched_ = 0;
+  next_unmatched_log_ = now + std::chrono::seconds(1);
+}
+
+template <Calculation kCalculation>
+void Service::write_reply(const gearcoupling_Correlation& correlation,
+                          std::shared_ptr<const void> sample) {
+  const dds_entity_t writer = reply_writers_.writer(correlation.client_id, kCalculation);
+  // The writer never blocks (max blocking time 0): a full window is DDS_RETCODE_TIMEOUT.
+  const dds_return_t rc = writer == 0 ? DDS_RETCODE_ALREADY_DELETED : dds_write(writer, sample.get());
+  if (rc == DDS_RETCODE_OK) return;
+  if (rc == DDS_RETCODE_TIMEOUT) {
+    if (!reply_backlog_.hold({correlation.client_id, correlation.sequence_number, kCalculation,
+                              writer, std::move(sample)})) {
+      // Debug only: counted in the stats line, and a deaf client would flood the log.
+      spdlog::debug("{} client={} seq={}: reply dropped: {} replies already wait for clients that "
+                   "do not acknowledge",
+                   protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                   correlation.sequence_number, kMaxBackloggedReplies);
+    }
+  } else if (rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
+    spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
+                 protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                 correlation.sequence_number);
+  } else {
+    spdlog::error("{} client={} seq={}: dds_write of the reply failed: {}",
+                  protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                  correlation.sequence_number, dds_strretcode(rc));
+  }
 }
 
 void Service::take_all_requests() {
@@ -284,8 +350,13 @@ void Service::log_stats() const {
                         protocol::to_string(calculation), s.served, s.failed,
                         s.p50_service_time_s * 1e6, s.p99_service_time_s * 1e6);
   }
-  spdlog::info("stats: clients={} queued={} forged={}{}", reply_writers_.clients(), pool_.queued(),
-               stats_.forged(), line.empty() ? " no requests yet" : line);
+  const AdmissionDrops drops = reply_writers_.drops();
+  spdlog::info("stats: clients={} queued={} parked={} backlog={}{}; dropped before work: "
+               "unmatched={} parked_full={} departed={} forged={}; replies written late={} dropped={}",
+               reply_writers_.clients(), pool_.queued(), reply_writers_.parked(),
+               reply_backlog_.size(), line.empty() ? " no requests yet" : line, drops.unmatched,
+               drops.parked_full, drops.departed, stats_.forged(), reply_backlog_.written_late(),
+               reply_backlog_.dropped());
 }
 
 void Service::run() {
@@ -307,12 +378,14 @@ void Service::run() {
     if (stop_at && now >= *stop_at) break;
     Clock::time_point wake = std::min(next_status, next_stats);
     if (stop_at) wake = std::min(wake, *stop_at);
+    if (reply_writers_.parked() > 0) wake = std::min(wake, now + kParkedPoll);
     const auto timeout = std::chrono::duration_cast<std::chrono::nanoseconds>(wake - now).count();
     dds_waitset_wait(waitset_.get(), nullptr, 0, std::max<int64_t>(timeout, 0));
     bool triggered = false;
     dds_take_guardcondition(guard_.get(), &triggered);
     take_subscriptions();
     take_all_requests();
+    release_parked(false);
     now = Clock::now();
     if (now >= next_status) {
       status_.publish(!stop_at);
@@ -325,7 +398,9 @@ void Service::run() {
   }
   for (const Entity& reader : request_readers_) dds_set_listener(reader.get(), nullptr);
   take_all_requests();
+  release_parked(true);
   pool_.drain_and_stop();
+  reply_backlog_.stop();
   log_stats();
   status_.dispose();
   spdlog::info("instance {} stopped", protocol::hex_id(instance_id_));

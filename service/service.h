@@ -16,6 +16,7 @@
 #include "protocol/dds_entity.h"
 #include "protocol/requests.h"
 #include "service/catalogue.h"
+#include "service/reply_backlog.h"
 #include "service/reply_writers.h"
 #include "service/requesters.h"
 #include "service/service_config.h"
@@ -52,6 +53,16 @@ class Service {
               std::exception_ptr malformed, std::chrono::steady_clock::time_point received);
   void refuse_forged(protocol::Calculation calculation,
                      const gearcoupling_Correlation& correlation);
+  /// Hands `job` (a request of `client_id`) to the workers if its reply writer is matched, else
+  /// parks it (ReplyWriters::admit) or drops it: no worker waits for a client's reader.
+  void admit(protocol::Calculation calculation, const gearcoupling_Correlation& correlation,
+             std::function<void()> job);
+  /// Parked requests whose reader matched go to the workers; the expired are logged, at most
+  /// once a second unless `final`.
+  void release_parked(bool final);
+  template <protocol::Calculation kCalculation>
+  void write_reply(const gearcoupling_Correlation& correlation,
+                   std::shared_ptr<const void> sample);
   void take_all_requests();
   void take_subscriptions();
   void log_stats() const;
@@ -71,8 +82,13 @@ class Service {
   ServiceStats stats_;
   Requesters requesters_;  ///< who wrote each request; whether a reply writer reaches them
   ReplyWriters reply_writers_;
+  ReplyBacklog reply_backlog_;
   StatusPublisher status_;
   std::atomic<bool> stop_requested_{false};
+  // Parked requests dropped and not yet logged (dispatch loop only).
+  std::uint64_t unlogged_unmatched_ = 0;
+  UnmatchedRequest first_unlogged_unmatched_;
+  std::chrono::steady_clock::time_point next_unmatched_log_{};
   WorkerPool pool_;  ///< last: destroyed (drained) first
 };
 

@@ -167,10 +167,11 @@ usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalo
   --status-interval S    status topic period in seconds (default 1)
   --stats-interval S     periodic stats log line in seconds (default 10)
   --lease S              liveliness lease of the status writer in seconds (default 2)
-  --reply-match-timeout S  longest wait for a client's reply reader (default 1)
-  --reply-block S        longest a reply write waits for a client that does not acknowledge
-                         (killed, lease not yet expired) (default 0.5)
-  --departed-hold S      then drop that client's replies for this long (default 5)
+  --reply-match-timeout S  longest a request waits (parked, before any work) for its
+                         client's reply reader, then it is dropped (default 1)
+  --reply-block S        longest a reply waits, retried without blocking a worker, for a
+                         client that does not acknowledge (slow, stopped, killed) (default 0.5)
+  --departed-hold S      then drop that client's requests for this long (default 5)
   --shutdown-grace S     after SIGINT/SIGTERM keep answering this long, then exit (default 0.2)
   --deadline S           a request not answered this long after it arrived (queued or
                          computing) gets STATUS_DEADLINE_EXCEEDED, 1e-6..60 (default 1)

@@ -16,10 +16,11 @@ struct ServiceConfig {
   double stats_log_interval_s = 10.0; ///< periodic stats log line [s]
   double liveliness_lease_s = 2.0;    ///< status writer lease: a killed instance is noticed
                                       ///< within this time [s]
-  double reply_match_timeout_s = 1.0; ///< longest wait for a client's reply reader [s]
-  double reply_block_s = 0.5;         ///< longest a reply write blocks on an unacknowledging
-                                      ///< (killed) client before its replies are dropped [s]
-  double departed_hold_s = 5.0;       ///< how long such a client's replies are then dropped;
+  double reply_match_timeout_s = 1.0; ///< longest a request waits, parked outside the
+                                      ///< workers, for its client's reply reader [s]
+  double reply_block_s = 0.5;         ///< longest a reply waits (retried, never blocking a
+                                      ///< worker) for an unacknowledging client [s]
+  double departed_hold_s = 5.0;       ///< how long such a client's requests are then dropped;
                                       ///< longer than any participant lease in use [s]
   double shutdown_grace_s = 0.2;      ///< after SIGINT/SIGTERM: keep answering requests already
                                       ///< on their way this long, then drain and exit [s]

@@ -1,14 +1,8 @@
 #include "service/worker_pool.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace gc::service {
-namespace {
-
-constexpr std::chrono::microseconds kSpin{200};
-
-}  // namespace
 
 WorkerPool::WorkerPool(std::size_t threads) {
   threads = std::max<std::size_t>(threads, 1);
@@ -22,7 +16,6 @@ void WorkerPool::submit(std::function<void()> job) {
   {
     std::lock_guard lock(mutex_);
     jobs_.push_back(std::move(job));
-    queued_.store(jobs_.size(), std::memory_order_release);
   }
   wake_.notify_one();
 }
@@ -46,20 +39,15 @@ std::size_t WorkerPool::queued() const {
 void WorkerPool::work() {
   for (;;) {
     std::function<void()> job;
-    // Before sleeping, look for a new job for a little while (yielding the core): waking a
-    // sleeping thread costs tens of microseconds, as much as a DDS round trip.
-    const auto spin_until = std::chrono::steady_clock::now() + kSpin;
-    while (queued_.load(std::memory_order_acquire) == 0 &&
-           std::chrono::steady_clock::now() < spin_until) {
-      std::this_thread::yield();
-    }
+    // Sleep on the condition variable (a futex), never spin: a thread that sleeps keeps the
+    // scheduler's wake-up preference, so on a busy host a request preempts the CPU hogs instead
+    // of waiting for a time slice behind them (docs/benchmarks.md, "Latency on a busy host").
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
       if (jobs_.empty()) return;  // stopping and drained
       job = std::move(jobs_.front());
       jobs_.pop_front();
-      queued_.store(jobs_.size(), std::memory_order_release);
     }
     job();
   }

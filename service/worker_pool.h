@@ -1,7 +1,6 @@
 // A fixed pool of threads running submitted jobs in order of submission.
 #pragma once
 
-#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -33,7 +32,6 @@ class WorkerPool {
  private:
   void work();
 
-  std::atomic<std::size_t> queued_{0};  ///< jobs_.size(), readable without the lock
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<std::function<void()>> jobs_;

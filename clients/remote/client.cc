@@ -22,6 +22,11 @@ namespace {
 constexpr std::chrono::milliseconds kDisposedResendDelay{500};
 /// How often the receive loop checks deadlines and readiness when nothing arrives.
 constexpr dds_duration_t kTick = DDS_MSECS(10);
+/// Longest a caller waiting for a ready instance sleeps between looks. Matching events wake it
+/// at once (matched listeners); this only bounds a wake-up lost to the race between a look and
+/// the wait. Looking costs a copy of every matched writer's QoS: a hundred clients discovering
+/// at once and looking every millisecond kept a 2-core host saturated (docs/benchmarks.md).
+constexpr std::chrono::milliseconds kReadyPoll{20};
 
 }  // namespace
 
@@ -47,22 +52,15 @@ Client::Client(ClientOptions options)
   reply_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), reply_partition.get(), nullptr),
       "dds_create_subscriber(replies)"));
-  // Replies are taken in Cyclone's delivery thread (a data-available listener) and handed
-  // straight to the waiting caller: no extra thread between the network and the caller.
-  const protocol::Qos qos = protocol::request_reply_qos();
-  protocol::for_each_calculation([&](auto calculation) {
-    constexpr Calculation kCalculation = decltype(calculation)::value;
-    dds_listener_t* listener = dds_create_listener(this);
-    dds_lset_data_available(listener, [](dds_entity_t, void* client) {
-      static_cast<Client*>(client)->take_replies<kCalculation>();
-    });
-    const std::size_t i = protocol::index_of(kCalculation);
-    const dds_entity_t reader =
-        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener);
-    dds_delete_listener(listener);
-    if (reader == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(reader);
-    reply_readers_[i] = Entity(check_dds(reader, "dds_create_reader(reply)"));
-  });
+  // Reply readers are made on a calculation's first use; under DDS Security, find out now, not
+  // at the first call, whether this identity may read its reply partition (a wrong prefix).
+  if (options_.client_id_prefix != 0) {
+    const protocol::Qos qos = protocol::request_reply_qos();
+    const dds_entity_t probe = dds_create_reader(
+        reply_subscriber_.get(), reply_topics_[0].get(), qos.get(), nullptr);
+    if (probe == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(probe);
+    if (probe > 0) dds_delete(probe);
+  }
   const protocol::Qos status_partition = protocol::partition_qos(protocol::kStatusPartition);
   status_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), status_partition.get(), nullptr),
@@ -87,7 +85,9 @@ Client::~Client() {
   instances_changed_.notify_all();
   dds_set_guardcondition(guard_.get(), true);
   receiver_.join();
-  for (const Entity& reader : reply_readers_) dds_set_listener(reader.get(), nullptr);
+  for (const Entity& reader : reply_readers_) {
+    if (reader) dds_set_listener(reader.get(), nullptr);
+  }
   std::map<std::uint64_t, Pending> pending;
   {
     std::lock_guard lock(mutex_);
@@ -98,6 +98,51 @@ Client::~Client() {
         "{} request {} abandoned: the client closed", protocol::to_string(p.calculation),
         sequence))));
   }
+}
+
+void Client::use_locked(Calculation calculation) {
+  const std::size_t i = protocol::index_of(calculation);
+  if (reply_readers_[i]) return;
+  // Replies are taken in Cyclone's delivery thread (a data-available listener) and handed
+  // straight to the waiting caller: no extra thread between the network and the caller.
+  protocol::for_each_calculation([&](auto c) {
+    constexpr Calculation kCalculation = decltype(c)::value;
+    if (kCalculation != calculation) return;
+    dds_listener_t* listener = dds_create_listener(this);
+    dds_lset_data_available(listener, [](dds_entity_t reader, void* client) {
+      static_cast<Client*>(client)->take_replies<kCalculation>(reader);
+    });
+    dds_lset_subscription_matched(listener, [](dds_entity_t, dds_subscription_matched_status_t,
+                                               void* client) {
+      static_cast<Client*>(client)->matching_changed();
+    });
+    const protocol::Qos qos = protocol::request_reply_qos();
+    const dds_entity_t reader =
+        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener);
+    dds_delete_listener(listener);
+    if (reader == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(reader);
+    reply_readers_[i] = Entity(check_dds(reader, "dds_create_reader(reply)"));
+  });
+  for (auto& [id, instance] : instances_) create_request_writer_locked(*instance, i);
+}
+
+void Client::create_request_writer_locked(Instance& instance, std::size_t i) {
+  const protocol::Qos qos = protocol::request_reply_qos();
+  dds_listener_t* listener = dds_create_listener(this);
+  dds_lset_publication_matched(listener, [](dds_entity_t, dds_publication_matched_status_t,
+                                            void* client) {
+    static_cast<Client*>(client)->matching_changed();
+  });
+  instance.writers[i] = Entity(check_dds(
+      dds_create_writer(instance.publisher.get(), request_topics_[i].get(), qos.get(), listener),
+      "dds_create_writer(request)"));
+  dds_delete_listener(listener);
+}
+
+void Client::matching_changed() {
+  // Without mutex_: Cyclone may call this inside dds_create_writer, which take_status() calls
+  // with mutex_ held. A wake-up lost to that is made up by kReadyPoll.
+  instances_changed_.notify_all();
 }
 
 std::uint64_t Client::next_sequence() {
@@ -117,7 +162,7 @@ protocol::DdsError Client::reply_reader_refused(dds_return_t code) const {
 
 bool Client::ready_locked(Instance& instance, Calculation calculation) {
   const std::size_t i = protocol::index_of(calculation);
-  if (!instance.ready[i]) {
+  if (!instance.ready[i] && instance.writers[i]) {
     instance.ready[i] =
         protocol::matched_reader_count(instance.writers[i].get()) > 0 &&
         protocol::matched_with_tagged_writer(reply_readers_[i].get(),
@@ -142,6 +187,7 @@ Client::Instance* Client::pick_ready_locked(Calculation calculation) {
 
 void Client::send(std::uint64_t sequence, Pending pending) {
   std::unique_lock lock(mutex_);
+  use_locked(pending.calculation);
   for (;;) {
     if (closing_) {
       lock.unlock();
@@ -177,21 +223,21 @@ void Client::send(std::uint64_t sequence, Pending pending) {
           options_.timeout.count(), known))));
       return;
     }
-    // Readiness is polled: matching is not announced through the status topic.
-    instances_changed_.wait_until(lock, std::min(pending.deadline,
-                                                 now + std::chrono::milliseconds(1)));
+    // Woken by status samples and matching events (matching_changed()).
+    instances_changed_.wait_until(lock, std::min(pending.deadline, now + kReadyPoll));
   }
 }
 
 bool Client::wait_for_service(Calculation calculation, std::chrono::milliseconds timeout) {
   const Clock::time_point deadline = Clock::now() + timeout;
   std::unique_lock lock(mutex_);
+  use_locked(calculation);
   for (;;) {
     for (auto& [id, instance] : instances_) {
       if (instance->info.accepting && ready_locked(*instance, calculation)) return true;
     }
     if (Clock::now() >= deadline || closing_) return false;
-    instances_changed_.wait_until(lock, std::min(deadline, Clock::now() + std::chrono::milliseconds(1)));
+    instances_changed_.wait_until(lock, std::min(deadline, Clock::now() + kReadyPoll));
   }
 }
 
@@ -216,9 +262,8 @@ ClientCounters Client::counters() const {
 }
 
 template <Calculation kCalculation>
-void Client::take_replies() {
+void Client::take_replies(dds_entity_t reader) {
   using T = protocol::CalculationTraits<kCalculation>;
-  const dds_entity_t reader = reply_readers_[protocol::index_of(kCalculation)].get();
   for (;;) {
     protocol::LoanedSamples<typename T::WireReply> samples(reader);
     if (samples.size() == 0) return;
@@ -283,12 +328,8 @@ void Client::take_status() {
         instance->publisher = Entity(check_dds(
             dds_create_publisher(participant_.get(), partition.get(), nullptr),
             "dds_create_publisher(requests)"));
-        const protocol::Qos qos = protocol::request_reply_qos();
         for (std::size_t c = 0; c < instance->writers.size(); ++c) {
-          instance->writers[c] = Entity(check_dds(
-              dds_create_writer(instance->publisher.get(), request_topics_[c].get(), qos.get(),
-                                nullptr),
-              "dds_create_writer(request)"));
+          if (reply_readers_[c]) create_request_writer_locked(*instance, c);
         }
       }
       instance->info.host = status.host != nullptr ? status.host : "";

@@ -103,19 +103,13 @@ class Client {
   std::future<typename protocol::CalculationTraits<kCalculation>::Result> call_async(
       const typename protocol::CalculationTraits<kCalculation>::Request& request);
 
-  /// call_async(request).get(): the result, or throws the error. Looks for the reply for a
-  /// short while (yielding the core) before sleeping: a sleeping thread takes tens of
-  /// microseconds to wake, as long as a loopback round trip.
+  /// call_async(request).get(): the result, or throws the error. The caller sleeps in the
+  /// future (a futex) and never spins: a sleeping thread keeps the scheduler's wake-up
+  /// preference, so on a busy host the reply wakes it ahead of CPU hogs.
   template <protocol::Calculation kCalculation>
   typename protocol::CalculationTraits<kCalculation>::Result call(
       const typename protocol::CalculationTraits<kCalculation>::Request& request) {
-    auto future = call_async<kCalculation>(request);
-    const Clock::time_point spin_until = Clock::now() + std::chrono::microseconds(200);
-    while (future.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
-           Clock::now() < spin_until) {
-      std::this_thread::yield();
-    }
-    return future.get();
+    return call_async<kCalculation>(request).get();
   }
 
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.
@@ -139,9 +133,18 @@ class Client {
   /// The error for a reply reader DDS Security refused (a client id prefix not this identity's).
   protocol::DdsError reply_reader_refused(dds_return_t code) const;
   std::uint64_t next_sequence();
+  /// A request writer or reply reader matched or lost a peer: wake the callers waiting for a
+  /// ready instance.
+  void matching_changed();
   void receive_loop();
   template <protocol::Calculation kCalculation>
-  void take_replies();
+  void take_replies(dds_entity_t reader);
+  /// Creates `calculation`'s reply reader and request writers on its first use. A client makes
+  /// only the endpoints it uses (rule 2 of docs/protocol.md), and the service a reply writer
+  /// only for those: with a hundred clients discovering at once every endpoint counts, since
+  /// each is announced to every participant (docs/benchmarks.md, "Discovery at scale").
+  void use_locked(protocol::Calculation calculation);
+  void create_request_writer_locked(Instance& instance, std::size_t calculation_index);
   void take_status();
   /// Fails requests past their deadline and sends orphaned ones (instance gone) to another.
   void maintain();
@@ -155,7 +158,7 @@ class Client {
   std::array<protocol::Entity, 5> reply_topics_;
   protocol::Entity status_topic_;
   protocol::Entity reply_subscriber_;
-  std::array<protocol::Entity, 5> reply_readers_;
+  std::array<protocol::Entity, 5> reply_readers_;  ///< created on first use (use_locked)
   protocol::Entity status_subscriber_;
   protocol::Entity status_reader_;
   protocol::Entity guard_;
