@@ -10,6 +10,7 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libjs-chart.js  # Chart.js, inlined into validate's HTML report
+  clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do
