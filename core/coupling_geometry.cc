@@ -77,6 +77,14 @@ void validate_definition(const CouplingDefinition& d) {
   require_in_range(field("tool_tip_radius_m"), d.tool_tip_radius_m, 0.0, kMaxLengthM);
   require_positive(field("facewidth_m"), d.facewidth_m);
   require_in_range(field("facewidth_m"), d.facewidth_m, kMinLengthM, kMaxLengthM);
+  // Below the jam angle the contact offset f_d stays within F/2 (eq 30); eq 39's moment arm
+  // sqrt(R^2 - f_d^2) is real only while that is within the pitch radius R. A 5.1 m facewidth
+  // on a 1 m coupling made it NaN (found by fuzz/coupling_text_fuzzer).
+  if (d.facewidth_m >= d.pitch_diameter_m) {
+    throw InvalidInput(field("facewidth_m"), d.facewidth_m,
+                       "< the pitch diameter D = " + format_number(d.pitch_diameter_m) +
+                           " m (eq 39 needs the contact offset, up to F/2, within R = D/2)");
+  }
   require_in_range(field("profile_tip_relief_m"), d.profile_tip_relief_m, 0.0, kMaxLengthM);
   require_finite(field("profile_relief_start_roll_rad"), d.profile_relief_start_roll_rad);
   if (d.crown_radius_m) {

@@ -72,6 +72,15 @@ TEST(InputValidation, CouplingSizesOutsideTheirRangesAreRejectedNamingTheField) 
             }),
             "coupling.facewidth_m");
   EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = 2000.0; }), "coupling.facewidth_m");
+  // Found by fuzz/coupling_text_fuzzer: nrel_upwind with a 5.127 m facewidth (and a 1.836 m
+  // outer diameter) validated, and its induced moments at half the jam angle were NaN (eq 39).
+  EXPECT_EQ(coupling_field([](auto& d) {
+              d.facewidth_m = 5.127;
+              d.outer_diameter_m = 1.83632;
+            }),
+            "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = d.pitch_diameter_m; }),
+            "coupling.facewidth_m");
   EXPECT_EQ(coupling_field([](auto& d) { d.youngs_modulus_pa = 1e300; }),
             "coupling.youngs_modulus_pa");
   EXPECT_EQ(coupling_field([](auto& d) { d.youngs_modulus_pa = 1e-300; }),
