@@ -122,6 +122,45 @@ void set_value(Quantity quantity, double value, RecordedSample& s) {
   }
 }
 
+// Largest magnitude of a quantity in SI, where a larger one would make a derived input
+// overflow: the rotation phase integrates speed over time (a speed of 1e308 rpm gave an
+// infinite phase, found by fuzz/recording_csv_fuzzer). 1e9 s is 31 years of recording;
+// 1e5 rpm is beyond any drivetrain. The others need only be finite in SI.
+std::optional<double> si_limit(Quantity quantity) {
+  switch (quantity) {
+    case Quantity::time: return 1.0e9;
+    case Quantity::speed: return 1.0e5;
+    default: return std::nullopt;
+  }
+}
+
+std::string_view si_unit(Quantity quantity) {
+  switch (quantity) {
+    case Quantity::time: return "s";
+    case Quantity::torque: case Quantity::msy: case Quantity::msz:
+    case Quantity::applied_my: case Quantity::applied_mz: return "N·m";
+    case Quantity::misalignment: case Quantity::direction: return "rad";
+    case Quantity::speed: return "rpm";
+    case Quantity::temperature: return "deg C";
+    case Quantity::hub_motion: return "m";
+  }
+  return "";
+}
+
+// Why a finite cell's value in SI is not accepted, or nullopt: a unit's scale can take a finite
+// cell past the largest double (1e308 knm).
+std::optional<std::string> si_complaint(std::string_view cell, Quantity quantity, double si) {
+  if (!std::isfinite(si)) {
+    return fmt::format("'{}' is not a finite number in {}", cell, si_unit(quantity));
+  }
+  const std::optional<double> limit = si_limit(quantity);
+  if (limit && std::abs(si) > *limit) {
+    return fmt::format("'{}' is out of range: {:g} {}, allowed [-{:g}, {:g}] {}", cell, si,
+                       si_unit(quantity), *limit, *limit, si_unit(quantity));
+  }
+  return std::nullopt;
+}
+
 std::string_view cell_complaint(std::string_view cell) {
   if (cell.empty()) return "empty cell";
   return "not a number";
@@ -264,7 +303,11 @@ std::optional<RowProblem> RecordingReader::parse_row(std::string_view line, Reco
       return RowProblem{line_number_, column_number, column.name,
                         fmt::format("'{}' is not a finite number", cell)};
     }
-    set_value(column.quantity, *value * column.unit.scale + column.unit.offset, s);
+    const double si = *value * column.unit.scale + column.unit.offset;
+    if (auto complaint = si_complaint(cell, column.quantity, si)) {
+      return RowProblem{line_number_, column_number, column.name, std::move(*complaint)};
+    }
+    set_value(column.quantity, si, s);
   }
   if (last_time_s_ && s.input.time_s < *last_time_s_) {
     const auto time_column = std::find_if(header_.columns.begin(), header_.columns.end(),

@@ -9,8 +9,12 @@
 namespace gc {
 namespace {
 
+// No stress is infinite safety, reported as the largest double (stress.h). A stress so small
+// that the ratio overflows (a torque of 1e-306 N·m, found by fuzz/wire_request_fuzzer) is
+// reported the same way, never as infinity.
 double safety(double allowable_pa, double stress_pa) {
-  return stress_pa > 0.0 ? allowable_pa / stress_pa : std::numeric_limits<double>::max();
+  constexpr double kLargest = std::numeric_limits<double>::max();
+  return stress_pa > 0.0 ? std::min(allowable_pa / stress_pa, kLargest) : kLargest;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libjs-chart.js  # Chart.js, inlined into validate's HTML report
   chromium        # headless, checks the HTML report in the suite (tests/validation/report_browser_test.cc)
+  clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README's test command: installs the packages, builds everything and runs every test, then
 # the core suite again under AddressSanitizer + UndefinedBehaviorSanitizer and under
-# ThreadSanitizer. ctest's summary of the full suite is printed last.
+# ThreadSanitizer, and the libFuzzer targets for a few seconds each. ctest's summary of the
+# full suite is printed last.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash deploy/install-deps.sh
@@ -18,6 +19,9 @@ echo "== core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 sanitized_core_tests address
 echo "== core tests under ThreadSanitizer"
 sanitized_core_tests thread
+
+echo "== fuzz targets, 5 s each (libFuzzer + ASan + UBSan, clang; docs/fuzzing.md)"
+bash tests/run_fuzz.sh 5
 
 echo "== full build and test suite"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null

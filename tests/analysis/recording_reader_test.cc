@@ -175,6 +175,34 @@ INSTANTIATE_TEST_SUITE_P(
                       BadRow{"0.1,1e6,0.1,0,1", 0, "5 fields, the header has 6"},
                       BadRow{"-0.5,1e6,0.1,0,1,2", 1, "time goes backwards"}));
 
+// Found by fuzz/recording_csv_fuzzer's checks: a finite cell whose unit takes it past the
+// largest double came through as an infinite torque, and a speed of 1e308 rpm (or a time of
+// 1e300 s) as an infinite rotation phase. Each is now an excluded row naming its column.
+TEST(RecordingReader, ValuesInfiniteInSiOrBeyondThePhaseLimitsAreExcludedAndReported) {
+  const Recording recording = read_text(
+      "time_s,torque_knm,misalignment_deg,direction_deg,msy_nm,msz_nm,speed_rpm\n"
+      "0,1e3,0.1,0,1,2,12\n"
+      "0.1,1e308,0.1,0,1,2,12\n"      // 1e311 N·m
+      "0.2,1e3,0.1,0,1,2,1e308\n"     // speed over 1e5 rpm
+      "1e300,1e3,0.1,0,1,2,12\n"      // time over 1e9 s
+      "0.3,1e3,0.1,0,1,2,-1e5\n");    // the limits themselves are allowed
+  ASSERT_EQ(recording.samples.size(), 2u);
+  ASSERT_EQ(recording.excluded_rows, 3u);
+  EXPECT_EQ(recording.problems[0].column, 2);
+  EXPECT_NE(recording.problems[0].message.find("'1e308' is not a finite number in N·m"),
+            std::string::npos) << recording.problems[0].message;
+  EXPECT_EQ(recording.problems[1].column, 7);
+  EXPECT_NE(recording.problems[1].message.find("allowed [-100000, 100000] rpm"),
+            std::string::npos) << recording.problems[1].message;
+  EXPECT_EQ(recording.problems[2].column, 1);
+  EXPECT_NE(recording.problems[2].message.find("allowed [-1e+09, 1e+09] s"), std::string::npos)
+      << recording.problems[2].message;
+  // 0.3 s at the mean of 12 and -1e5 rpm: finite, and negative.
+  ASSERT_TRUE(recording.samples[1].input.rotation_phase_rad.has_value());
+  EXPECT_TRUE(std::isfinite(*recording.samples[1].input.rotation_phase_rad));
+  EXPECT_LT(*recording.samples[1].input.rotation_phase_rad, 0.0);
+}
+
 TEST(RecordingReader, ConvertsDocumentedUnitsToSi) {
   const Recording recording = read_text(
       "time_ms,torque_mnm,misalignment_mrad,direction_deg,msy_knm,msz_mnm,speed_rad_s,"

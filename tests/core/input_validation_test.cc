@@ -7,6 +7,7 @@
 #include "core/coupling_geometry.h"
 #include "core/induced_moments.h"
 #include "core/model_error.h"
+#include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "tests/core/nrel_couplings.h"
 
@@ -57,6 +58,67 @@ TEST(InputValidation, CouplingDefinitionErrorsNameTheField) {
             "coupling.coupling_weight_n");
   EXPECT_EQ(coupling_field([](auto& d) { d.allowables.contact_stress_pa = 0.0; }),
             "coupling.allowables.contact_stress_pa");
+}
+
+// Found by fuzz/wire_request_fuzzer: an inline coupling with a 4.8e228 m shaft gave an
+// infinite induced moment (self-weight, eq 48), one with a 1e-322 m facewidth an infinite sag
+// and restoring torque (eqs 49-53). Sizes, weights and moduli now have physical ranges.
+TEST(InputValidation, CouplingSizesOutsideTheirRangesAreRejectedNamingTheField) {
+  EXPECT_EQ(coupling_field([](auto& d) { d.shaft_length_m = 4.8241085992082403e228; }),
+            "coupling.shaft_length_m");
+  EXPECT_EQ(coupling_field([](auto& d) {
+              d.facewidth_m = 1e-322;
+              d.crown_radius_m = 2.772226230469085e-307;  // > F/2, as the fuzzer gave it
+            }),
+            "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = 2000.0; }), "coupling.facewidth_m");
+  // Found by fuzz/coupling_text_fuzzer: nrel_upwind with a 5.127 m facewidth (and a 1.836 m
+  // outer diameter) validated, and its induced moments at half the jam angle were NaN (eq 39).
+  EXPECT_EQ(coupling_field([](auto& d) {
+              d.facewidth_m = 5.127;
+              d.outer_diameter_m = 1.83632;
+            }),
+            "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.facewidth_m = d.pitch_diameter_m; }),
+            "coupling.facewidth_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.youngs_modulus_pa = 1e300; }),
+            "coupling.youngs_modulus_pa");
+  EXPECT_EQ(coupling_field([](auto& d) { d.youngs_modulus_pa = 1e-300; }),
+            "coupling.youngs_modulus_pa");
+  EXPECT_EQ(coupling_field([](auto& d) { d.coupling_weight_n = 1e300; }),
+            "coupling.coupling_weight_n");
+  EXPECT_EQ(coupling_field([](auto& d) { d.shaft_weight_per_length_n_per_m = 1e300; }),
+            "coupling.shaft_weight_per_length_n_per_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.allowables.bending_stress_pa = 1e300; }),
+            "coupling.allowables.bending_stress_pa");
+  EXPECT_EQ(coupling_field([](auto& d) { d.backlash_m = 1e-300; }), "coupling.backlash_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.outer_diameter_m = 1e300; }),
+            "coupling.outer_diameter_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.sleeve_root_diameter_m = 1e300; }),
+            "coupling.sleeve_root_diameter_m");
+  EXPECT_EQ(coupling_field([](auto& d) { d.crown_radius_m = 1e300; }), "coupling.crown_radius_m");
+  // A derived crown radius over 1e4 m is the lead modification's: that field is named.
+  EXPECT_EQ(coupling_field([](auto& d) { d.lead_modification_m = 1e-300; }),
+            "coupling.lead_modification_m");
+  EXPECT_EQ(coupling_field([](auto& d) {
+              d.teeth = 8;
+              d.module_m = 1e-300;
+              d.pitch_diameter_m = 8e-300;
+            }),
+            "coupling.pitch_diameter_m");
+}
+
+TEST(InputValidation, CouplingAtItsLargestWeightsAndShaftGivesFiniteResults) {
+  CouplingDefinition d = nrel_upwind();
+  d.coupling_weight_n = 1e9;
+  d.shaft_weight_per_length_n_per_m = 1e9;
+  d.shaft_length_m = 1000.0;
+  const CouplingGeometry g(d);
+  const OperatingPoint p{1.5e6, 0.5 * g.jam_angle().angle_rad, 0.3, 0.1};
+  const InducedMoments m = induced_moments(g, p);
+  EXPECT_TRUE(std::isfinite(m.self_weight_moment_nm) && std::isfinite(m.magnitude_nm));
+  const RestoringTorque r = restoring_torque(g);
+  EXPECT_TRUE(std::isfinite(r.torque_nm) && std::isfinite(r.sag_m));
 }
 
 TEST(InputValidation, OperatingPointErrorsNameTheField) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "core/coupling_geometry.h"
@@ -55,6 +56,22 @@ TEST(ToothStress, MisalignmentRaisesTheGoverningStress) {
   // Hertz pressure grows as sqrt(P): ratio of pressures = sqrt(ratio of loads).
   EXPECT_NEAR(misaligned.max_stress.contact_stress_pa / aligned.max_stress.contact_stress_pa,
               std::sqrt(misaligned.max_tooth_load_n / aligned.max_tooth_load_n), 1e-12);
+}
+
+// Found by fuzz/wire_request_fuzzer: a torque of 4.7e-306 N·m (inside (0, 1e12]) gave a
+// bending stress so small that allowable / stress overflowed to an infinite safety factor.
+TEST(ToothStress, SafetyOfAVanishingStressIsTheLargestDoubleNotInfinity) {
+  const CouplingGeometry g(nrel_upwind());
+  ContactOptions options;
+  options.min_load_fraction = 0.0;  // as the fuzzer sent it: the loads reported as they are
+  const ToothContact c = tooth_contact(
+      g, {4.720285590148793e-306, 2.635369688616265e-251, 0.3000489214830563, 3.4332275458837105e-05},
+      options);
+  EXPECT_GT(c.max_stress.bending_stress_pa, 0.0);
+  EXPECT_EQ(c.max_stress.bending_safety_factor, std::numeric_limits<double>::max());
+  EXPECT_EQ(c.max_stress.contact_safety_factor,
+            g.definition().allowables.contact_stress_pa / c.max_stress.contact_stress_pa);
+  EXPECT_TRUE(std::isfinite(c.max_stress.contact_safety_factor));
 }
 
 }  // namespace
