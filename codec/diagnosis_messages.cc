@@ -1,5 +1,7 @@
 #include "codec/diagnosis_messages.h"
 
+#include "codec/count_field.h"
+
 namespace gc::codec {
 namespace {
 
@@ -45,7 +47,7 @@ v1::InputSignatureRecord to_message(const InputSignature& s) {
     v1::SignatureBinRecord& bin = *r.add_bins();
     bin.set_lower(b.lower);
     bin.set_upper(b.upper);
-    bin.set_count(b.count);
+    bin.set_count(count_field(b.count, "bins.count"));
     bin.set_mean_y_nm(b.mean_y_nm);
     bin.set_mean_z_nm(b.mean_z_nm);
   }
@@ -89,14 +91,14 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
 
 v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
   v1::DiagnosisResult r;
-  r.set_recording_rows(diagnosis.rows);
-  r.set_excluded_rows(diagnosis.excluded_rows.size());
+  r.set_recording_rows(count_field(diagnosis.rows, "recording_rows"));
+  r.set_excluded_rows(count_field(diagnosis.excluded_rows.size(), "excluded_rows"));
   r.set_exclusion_reason(diagnosis.exclusion_reason);
-  r.set_search_rows(diagnosis.search_rows);
-  r.set_refit_rows(diagnosis.refit_rows);
+  r.set_search_rows(count_field(diagnosis.search_rows, "search_rows"));
+  r.set_refit_rows(count_field(diagnosis.refit_rows, "refit_rows"));
   for (const DiagnosisRound& round : diagnosis.rounds) *r.add_rounds() = to_message(round);
   r.set_summary(diagnosis.summary);
-  r.set_outlier_rows(diagnosis.outlier_rows.size());
+  r.set_outlier_rows(count_field(diagnosis.outlier_rows.size(), "outlier_rows"));
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "codec/validation_messages.h"
 
+#include "codec/count_field.h"
+
 #include <algorithm>
 
 #include "core/validation/worst_regions.h"
@@ -78,7 +80,7 @@ v1::ErrorSignatureRecord signature_message(const ErrorSignature& signature) {
 v1::ErrorMetricsRecord to_message(const ErrorMetrics& metrics, double reference_torque_nm) {
   v1::ErrorMetricsRecord record;
   const double percent = 100.0 / reference_torque_nm;
-  record.set_count(metrics.count);
+  record.set_count(count_field(metrics.count, "count"));
   record.set_rmse_nm(metrics.rmse_nm);
   record.set_bias_nm(metrics.bias_nm);
   record.set_error_std_nm(metrics.error_std_nm);
@@ -102,12 +104,12 @@ v1::ModelValidation to_message(std::string_view model_name,
   const double reference = validation.options().reference_torque_nm;
   v1::ModelValidation record;
   record.set_model(std::string(model_name));
-  record.set_compared_samples(validation.overall().count());
-  record.set_rejected_samples(validation.rejected_count());
+  record.set_compared_samples(count_field(validation.overall().count(), "compared_samples"));
+  record.set_rejected_samples(count_field(validation.rejected_count(), "rejected_samples"));
   for (const auto& [field, rejection] : validation.rejections()) {
     v1::RejectionRecord* out = record.add_rejections();
     out->set_field(field);
-    out->set_count(rejection.count);
+    out->set_count(count_field(rejection.count, "rejections.count"));
     out->set_first_time_s(rejection.first_time_s);
     out->set_first_message(rejection.first_message);
   }

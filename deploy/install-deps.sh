@@ -10,6 +10,7 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libjs-chart.js  # Chart.js, inlined into validate's HTML report
+  chromium        # headless, checks the HTML report in the suite (tests/validation/report_browser_test.cc)
   dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
 )
 missing=()

@@ -8,18 +8,26 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <span>
 #include <thread>
 
 #include <fmt/format.h>
 
-#include "clients/cli/batch_csv.h"
-#include "clients/cli/number_text.h"
+#include "analysis/batch_csv.h"
 #include "clients/cli/operating_point_flags.h"
 #include "clients/cli/subcommand.h"
 #include "core/model_error.h"
 
 namespace gc::cli {
+
+using analysis::BatchColumns;
+using analysis::next_csv_line;
+using analysis::BatchRow;
+using analysis::append_error_row;
+using analysis::append_result_row;
+using analysis::batch_output_header;
+using analysis::describe_row_error;
+using analysis::parse_batch_header;
+using analysis::parse_batch_row;
 namespace {
 
 // Lines each thread takes per chunk: large enough to amortise starting the threads, small
@@ -73,41 +81,47 @@ void evaluate_line(std::string_view line, long number, const BatchJob& job, Batc
   ++part.failed_rows;
 }
 
-void evaluate_lines(std::span<const std::string> lines, long first_number, const BatchJob& job,
-                    ChunkPart& part) {
+// A chunk of input lines with their line numbers (blank lines are skipped, so they need not
+// be consecutive).
+struct InputLines {
+  std::vector<std::string> text;
+  std::vector<long> numbers;
+};
+
+void evaluate_lines(const InputLines& lines, std::size_t begin, std::size_t end,
+                    const BatchJob& job, ChunkPart& part) {
   part.output.clear();
   part.errors.clear();
   part.failed_rows = 0;
   BatchRow row;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    evaluate_line(lines[i], first_number + static_cast<long>(i), job, row, part);
+  for (std::size_t i = begin; i < end; ++i) {
+    evaluate_line(lines.text[i], lines.numbers[i], job, row, part);
   }
 }
 
-// Splits `lines` into parts.size() contiguous shares, one per thread, this thread taking the
-// first. Returns the number of failed rows.
-long evaluate_chunk(std::span<const std::string> lines, long first_number, const BatchJob& job,
+// Splits the first `count` lines into parts.size() contiguous shares, one per thread, this
+// thread taking the first. Returns the number of failed rows.
+long evaluate_chunk(const InputLines& lines, std::size_t count, const BatchJob& job,
                     std::vector<ChunkPart>& parts) {
-  const std::size_t share = (lines.size() + parts.size() - 1) / parts.size();
+  const std::size_t share = (count + parts.size() - 1) / parts.size();
   std::vector<std::jthread> workers;
   for (std::size_t k = 1; k < parts.size(); ++k) {
-    const std::size_t begin = std::min(lines.size(), k * share);
-    const std::size_t end = std::min(lines.size(), begin + share);
-    workers.emplace_back([&, k, begin, end] {
-      evaluate_lines(lines.subspan(begin, end - begin), first_number + static_cast<long>(begin),
-                     job, parts[k]);
-    });
+    const std::size_t begin = std::min(count, k * share);
+    const std::size_t end = std::min(count, begin + share);
+    workers.emplace_back([&, k, begin, end] { evaluate_lines(lines, begin, end, job, parts[k]); });
   }
-  evaluate_lines(lines.subspan(0, std::min(share, lines.size())), first_number, job, parts[0]);
+  evaluate_lines(lines, 0, std::min(share, count), job, parts[0]);
   workers.clear();  // joins
   long failed = 0;
   for (const ChunkPart& part : parts) failed += part.failed_rows;
   return failed;
 }
 
-std::size_t read_lines(std::istream& in, std::vector<std::string>& lines) {
+std::size_t read_lines(std::istream& in, long& line_number, InputLines& lines) {
   std::size_t count = 0;
-  while (count < lines.size() && std::getline(in, lines[count])) ++count;
+  while (count < lines.text.size() && next_csv_line(in, lines.text[count], line_number)) {
+    lines.numbers[count++] = line_number;
+  }
   return count;
 }
 
@@ -154,20 +168,24 @@ int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* stand
   const int threads = flags.integer("jobs", 1, 256);
   const std::unique_ptr<std::istream> in = open_input(flags.text("in"));
   std::string header;
-  if (!std::getline(*in, header)) throw UsageError("--in " + flags.text("in") + ": no header line");
+  long line_number = 0;
+  if (!next_csv_line(*in, header, line_number)) {
+    throw UsageError("--in " + flags.text("in") + ": no header line");
+  }
   BatchJob job{calculator, parse_batch_header(header), flags.text("coupling"),
                contact_options_from(flags)};
   const OutputFile out = open_output(flags.text("out"), flags.text("in"), standard_output);
   std::fputs(batch_output_header().c_str(), out.get());
 
-  std::vector<std::string> lines(kLinesPerThread * static_cast<std::size_t>(threads));
+  const std::size_t chunk_lines = kLinesPerThread * static_cast<std::size_t>(threads);
+  InputLines lines{std::vector<std::string>(chunk_lines), std::vector<long>(chunk_lines)};
   std::vector<ChunkPart> parts(static_cast<std::size_t>(threads));
-  long next_number = 2;  // the header is line 1
+  long rows = 0;
   long failed = 0;
-  while (const std::size_t count = read_lines(*in, lines)) {
-    failed += evaluate_chunk(std::span(lines).first(count), next_number, job, parts);
+  while (const std::size_t count = read_lines(*in, line_number, lines)) {
+    failed += evaluate_chunk(lines, count, job, parts);
     write_parts(parts, out.get());
-    next_number += static_cast<long>(count);
+    rows += static_cast<long>(count);
   }
   if (std::fflush(out.get()) != 0 || std::ferror(out.get())) {
     fmt::print(stderr, "gearcoupling batch: --out {}: write failed: {}\n", flags.text("out"),
@@ -175,7 +193,7 @@ int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* stand
     return 1;
   }
   if (failed > 0) {
-    fmt::print(stderr, "gearcoupling batch: {} of {} rows failed\n", failed, next_number - 2);
+    fmt::print(stderr, "gearcoupling batch: {} of {} rows failed\n", failed, rows);
     return 1;
   }
   return 0;

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "analysis/load_case.h"
 #include "core/friction_estimate.h"
 #include "core/induced_moments.h"
 #include "core/jam_angle.h"
@@ -14,11 +15,7 @@
 
 namespace gc::cli {
 
-/// Tooth contact and the moments computed from it (eqs 5-48), for one load case.
-struct LoadCase {
-  ToothContact contact;
-  InducedMoments moments;
-};
+using analysis::LoadCase;
 
 /// The jam angle with the crown radius it was computed for.
 struct JamAngleReport {

@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
-#include "clients/cli/number_text.h"
+#include "analysis/number_text.h"
 
 namespace gc::cli {
+
+using analysis::parse_double;
+using analysis::parse_int;
 
 Flags::Flags(std::vector<FlagSpec> specs, std::span<const char* const> args)
     : specs_(std::move(specs)), values_(specs_.size()) {

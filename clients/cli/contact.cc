@@ -3,11 +3,15 @@
 
 #include "clients/cli/operating_point_flags.h"
 #include "clients/cli/subcommand.h"
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 #include "codec/angle_units.h"
 #include "codec/result_messages.h"
 
 namespace gc::cli {
+
+using analysis::Table;
+using analysis::format_number;
+using analysis::quantity_table;
 namespace {
 
 using codec::degrees_from_radians;

@@ -1,24 +1,31 @@
 // gearcoupling diagnose: which effect of the library the model lacks (docs/diagnosis.md).
-#include <fstream>
 #include <thread>
 
 #include <fmt/format.h>
 
-#include "clients/cli/diagnosis_summary.h"
+#include "analysis/atomic_file.h"
+#include "analysis/diagnosis_summary.h"
+#include "analysis/recording_csv.h"
+#include "analysis/validation_result.h"
 #include "clients/cli/model_flags.h"
-#include "clients/cli/recording_csv.h"
+#include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
 #include "codec/diagnosis_messages.h"
 #include "core/diagnosis/diagnose.h"
 #include "parallel/thread_parallel_for.h"
 
 namespace gc::cli {
+
+using analysis::Recording;
+using analysis::print_diagnosis_summary;
+using analysis::read_recording;
 namespace {
 
 std::vector<FlagSpec> diagnose_flags() {
   return {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
+      columns_flag(),
       {"write-model", "FILE", "also write the model with the effects found (text format)", ""},
       {"threads", "N", "threads for the model evaluations",
        std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
@@ -33,24 +40,30 @@ void write_model(const std::string& path, const codec::ModelFile& file, const Di
     model = model.with_effect(effect);
     added += (added.empty() ? "" : ", ") + effect->name();
   }
-  std::ofstream out(path, std::ios::binary);
   std::string description = file.description;
   if (!added.empty()) {
     if (!description.empty() && !description.ends_with('.')) description += '.';
     description += (description.empty() ? "" : " ") + std::string("Added or refined by diagnose: ") + added + ".";
   }
-  out << codec::write_model_text(file.name + (added.empty() ? "" : "_diagnosed"), description, file.coupling, model);
-  if (!out.flush()) throw std::runtime_error("cannot write --write-model " + path);
+  analysis::write_file_atomically(
+      path, codec::write_model_text(file.name + (added.empty() ? "" : "_diagnosed"), description, file.coupling, model),
+      "--write-model");
 }
 
 int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
-  const Recording recording = read_recording(flags.text("data"));
+  const Recording recording = read_recording(flags.text("data"), analysis::RecordingOptions{{}, column_renames(flags)});
+  const analysis::RecordingCheck check = analysis::check_recording(model.model, model.name, recording.samples);
+  print_recording_notes("diagnose", recording.ignored_columns, check.warnings);
+  analysis::require_compared_samples(flags.text("data"), model.name, check.compared, recording.rows_read,
+                                     recording.excluded_rows, recording.samples.size(), check.first_refusal);
   const Diagnosis diagnosis =
       diagnose(model.model, recording.samples, thread_parallel_for(flags.integer("threads", 1, 1024)));
   gearcoupling::v1::DiagnosisResult result = codec::to_message(diagnosis);
   result.set_recording(flags.text("data"));
   result.set_model(model.name);
+  for (const std::string& warning : check.warnings) result.add_warnings(warning);
+  for (const std::string& column : recording.ignored_columns) result.add_ignored_columns(column);
   if (!flags.text("write-model").empty()) {
     write_model(flags.text("write-model"), model, diagnosis);
     result.set_written_model(flags.text("write-model"));

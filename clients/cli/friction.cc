@@ -1,10 +1,13 @@
 // gearcoupling friction: the friction coefficient from test-cell measurements (eqs 1-4).
 #include "clients/cli/subcommand.h"
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 #include "codec/angle_units.h"
 #include "codec/result_messages.h"
 
 namespace gc::cli {
+
+using analysis::Table;
+using analysis::quantity_table;
 namespace {
 
 std::vector<FlagSpec> friction_flags() {

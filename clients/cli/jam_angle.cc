@@ -1,10 +1,13 @@
 // gearcoupling jam-angle: the three criteria of eqs 23-35 and the one that governs.
 #include "clients/cli/subcommand.h"
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 #include "codec/angle_units.h"
 #include "codec/result_messages.h"
 
 namespace gc::cli {
+
+using analysis::Table;
+using analysis::quantity_table;
 namespace {
 
 using codec::degrees_from_radians;

@@ -10,11 +10,15 @@
 #include <fmt/format.h>
 
 #include "clients/cli/make_calculator.h"
-#include "clients/cli/input_names.h"
+#include "analysis/format_error.h"
+#include "analysis/input_names.h"
 #include "clients/cli/subcommand.h"
 #include "core/model_error.h"
 
 namespace gc::cli {
+
+using analysis::describe_input_error;
+using analysis::flag_for_field;
 namespace {
 
 constexpr int kBadInput = 2;
@@ -75,6 +79,8 @@ int run(const Subcommand& subcommand, std::span<const char* const> args) {
     const std::unique_ptr<Calculator> calculator = make_calculator(*flags);
     return subcommand.run(*flags, *calculator, stdout);
   } catch (const UsageError& error) {
+    return fail(error.what());
+  } catch (const analysis::FormatError& error) {
     return fail(error.what());
   } catch (const InvalidInput& error) {
     return fail(flags ? describe(error, *flags) : error.what());

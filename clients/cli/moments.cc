@@ -1,11 +1,14 @@
 // gearcoupling moments: coupling-induced bending moments (eqs 36-48).
 #include "clients/cli/operating_point_flags.h"
 #include "clients/cli/subcommand.h"
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 #include "codec/angle_units.h"
 #include "codec/result_messages.h"
 
 namespace gc::cli {
+
+using analysis::Table;
+using analysis::quantity_table;
 namespace {
 
 using codec::degrees_from_radians;

@@ -2,10 +2,12 @@
 
 #include <limits>
 
-#include "clients/cli/number_text.h"
+#include "analysis/number_text.h"
 #include "codec/angle_units.h"
 
 namespace gc::cli {
+
+using analysis::append_number;
 namespace {
 
 std::string shortest(double value) {

@@ -1,9 +1,12 @@
 // gearcoupling restoring-torque: the torque that lifts and centres the hub (eqs 49-53).
 #include "clients/cli/subcommand.h"
-#include "clients/cli/table.h"
+#include "analysis/table.h"
 #include "codec/result_messages.h"
 
 namespace gc::cli {
+
+using analysis::Table;
+using analysis::quantity_table;
 namespace {
 
 std::vector<FlagSpec> no_flags() { return {}; }

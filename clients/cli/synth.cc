@@ -6,12 +6,15 @@
 #include <fmt/format.h>
 
 #include "clients/cli/model_flags.h"
-#include "clients/cli/recording_csv.h"
+#include "analysis/recording_csv.h"
 #include "clients/cli/subcommand.h"
 #include "core/synthesis/load_sequence.h"
 #include "core/synthesis/synthesize.h"
 
 namespace gc::cli {
+
+using analysis::append_recording_row;
+using analysis::recording_header;
 namespace {
 
 std::vector<FlagSpec> synth_flags() {

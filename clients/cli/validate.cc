@@ -1,22 +1,29 @@
 // gearcoupling validate: a recording against a model. Metrics per channel, where the model
 // fails, a terminal summary, --json, and a self-contained HTML report.
-#include <fstream>
 #include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
-#include "clients/cli/before_after_summary.h"
-#include "clients/cli/effect_spec.h"
+#include "analysis/before_after_summary.h"
+#include "analysis/effect_spec.h"
+#include "analysis/validation_report_html.h"
+#include "analysis/validation_result.h"
+#include "analysis/validation_run.h"
+#include "analysis/validation_summary.h"
 #include "clients/cli/model_flags.h"
+#include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
-#include "clients/cli/validation_report_html.h"
-#include "clients/cli/validation_run.h"
-#include "clients/cli/validation_summary.h"
-#include "codec/validation_messages.h"
 
 namespace gc::cli {
 namespace {
+
+using analysis::ModelRun;
+using analysis::parse_effect_spec;
+using analysis::print_before_after;
+using analysis::print_validation_summary;
+using analysis::RecordingSummary;
+using analysis::run_validation;
 
 namespace v1 = gearcoupling::v1;
 
@@ -24,6 +31,7 @@ std::vector<FlagSpec> validate_flags() {
   return {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
+      columns_flag(),
       {"reference-torque", "N·m", "T_ref: errors are also given in % of it", "1.5e6"},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
       {"add", "EFFECT[=p=v,...]",
@@ -32,41 +40,6 @@ std::vector<FlagSpec> validate_flags() {
       {"threads", "N", "threads for the model evaluations",
        std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
   };
-}
-
-v1::RowProblemRecord to_message(const RowProblem& problem) {
-  v1::RowProblemRecord record;
-  record.set_line(problem.line);
-  record.set_column(problem.column);
-  record.set_column_name(problem.column_name);
-  record.set_message(problem.message);
-  return record;
-}
-
-v1::ValidationResult to_message(const RecordingSummary& recording,
-                                const std::vector<ModelRun>& runs,
-                                const BinningOptions& binning) {
-  v1::ValidationResult result;
-  result.set_recording(recording.source);
-  result.set_recording_rows(recording.rows_read);
-  result.set_excluded_rows(recording.excluded_rows);
-  for (const RowProblem& problem : recording.problems) *result.add_row_problems() = to_message(problem);
-  result.set_reference_torque_nm(binning.reference_torque_nm);
-  result.set_jam_angle_rad(binning.jam_angle_rad);
-  for (const ModelRun& run : runs) *result.add_models() = codec::to_message(run.name, run.validation);
-  return result;
-}
-
-void write_html(const std::string& path, const v1::ValidationResult& result,
-                const std::vector<ModelRun>& runs) {
-  v1::ValidationReport report;
-  *report.mutable_result() = result;
-  for (const ModelRun& run : runs) {
-    *report.add_plot_points() = codec::to_message(run.name, run.points.points());
-  }
-  std::ofstream file(path, std::ios::binary);
-  file << validation_report_html(report);
-  if (!file.flush()) throw std::runtime_error("cannot write --html " + path);
 }
 
 int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
@@ -85,9 +58,14 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
                     PointSampler()});
   }
   const RecordingSummary recording = run_validation(
-      flags.text("data"), runs, {flags.integer("threads", 1, 1024)});
-  const v1::ValidationResult result = to_message(recording, runs, binning);
-  if (!flags.text("html").empty()) write_html(flags.text("html"), result, runs);
+      flags.text("data"), runs, {flags.integer("threads", 1, 1024), 1u << 15, column_renames(flags)});
+  const v1::ValidationResult result = analysis::validation_result(recording, runs, binning);
+  print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},
+                        {result.warnings().begin(), result.warnings().end()});
+  analysis::require_compared_samples(result);
+  if (!flags.text("html").empty()) {
+    analysis::write_validation_report(flags.text("html"), analysis::validation_report(result, runs));
+  }
   if (flags.enabled("json")) {
     print_json(result, out);
   } else {

@@ -146,6 +146,22 @@ TEST(CliBatch, AcceptsByteOrderMarkAndWindowsLineEnds) {
   expect_row_equals_core(rows[1], 2, "nrel_upwind", {1e6, 0.2 * kDegree, 90 * kDegree, 0.12});
 }
 
+// The tokenizer recordings use too (analysis/csv_fields.h): blank lines, a trailing one included,
+// are no rows; quoted fields are fields ("1e6" a number, "0,2" not); lines keep their numbers.
+TEST(CliBatch, BlankLinesAreSkippedAndQuotedNumbersRead) {
+  const std::string in = temp_path("gc_batch_blank");
+  write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n\n\"1e6\",0.2,\"90\",0.12\n  \n"
+                 "1e6,\"0,2\",90,0.12\n\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(run.exit_code, 1) << run.err;   // the decimal comma row fails, nothing else
+  const std::vector<std::string> rows = lines_of(run.out);
+  ASSERT_EQ(rows.size(), 3u) << run.out;
+  expect_row_equals_core(rows[1], 3, "nrel_upwind", {1e6, 0.2 * kDegree, 90 * kDegree, 0.12});
+  EXPECT_TRUE(rows[2].starts_with("5,nrel_upwind,")) << rows[2];
+  EXPECT_NE(rows[2].find("misalignment_deg '0,2' is not a number"), std::string::npos) << rows[2];
+  EXPECT_NE(run.err.find("1 of 2 rows failed"), std::string::npos) << run.err;
+}
+
 TEST(CliBatch, HeaderOnlyGivesHeaderOnlyAndNoHeaderIsAnError) {
   const std::string in = temp_path("gc_batch_header_only");
   write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n");

@@ -1,16 +1,10 @@
-// The CLI's small shared pieces: flag parsing, number text, tables.
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <random>
+// Flag parsing (number text and tables: tests/analysis/).
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "clients/cli/command_line.h"
-#include "clients/cli/number_text.h"
-#include "clients/cli/table.h"
 
 namespace gc::cli {
 namespace {
@@ -71,50 +65,6 @@ TEST(Flags, NumberAndIntegerErrorsNameTheFlag) {
   } catch (const UsageError& error) {
     EXPECT_STREQ(error.what(), "--jobs 9 is out of range: allowed a whole number in [1, 8]");
   }
-}
-
-TEST(NumberText, ParsesWholeFieldsOnly) {
-  EXPECT_EQ(parse_double(" +1.5 "), 1.5);
-  EXPECT_EQ(parse_double("-2e-3\r"), -2e-3);
-  EXPECT_FALSE(parse_double("1.5x"));
-  EXPECT_FALSE(parse_double(""));
-  EXPECT_FALSE(parse_double("1,5"));
-  EXPECT_EQ(parse_int("42"), 42);
-  EXPECT_FALSE(parse_int("4.2"));
-  EXPECT_FALSE(parse_int("99999999999"));
-}
-
-TEST(NumberText, PrintsDoublesThatReadBackExactly) {
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> exponent(-300.0, 300.0);
-  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
-  for (int i = 0; i < 100000; ++i) {
-    const double value = mantissa(random) * std::pow(10.0, exponent(random));
-    std::string text;
-    append_number(text, value);
-    ASSERT_EQ(std::strtod(text.c_str(), nullptr), value) << text;
-  }
-  std::string text;
-  append_number(text, 0.1);
-  EXPECT_EQ(text, "0.1");  // shortest form, not 0.10000000000000001
-}
-
-TEST(Table, AlignsColumnsByCharactersNotBytes) {
-  Table table({"quantity", "unit"});
-  table.add_row({"torque", "N·m"});
-  table.add_row({"misalignment", "deg"});
-  char* buffer = nullptr;
-  std::size_t size = 0;
-  std::FILE* out = open_memstream(&buffer, &size);
-  table.print(out);
-  std::fclose(out);
-  const std::string printed(buffer, size);
-  std::free(buffer);
-  EXPECT_EQ(printed,
-            "quantity      unit\n"
-            "------------  ----\n"
-            "torque        N·m\n"
-            "misalignment  deg\n");
 }
 
 }  // namespace

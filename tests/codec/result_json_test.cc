@@ -9,8 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "codec/coupling_catalog.h"
+#include "codec/count_field.h"
 #include "codec/result_messages.h"
 #include "core/coupling_geometry.h"
+#include "core/model_error.h"
+#include "idl/diagnosis.pb.h"
+#include "idl/validation.pb.h"
 
 namespace gc::codec {
 namespace {
@@ -35,6 +39,35 @@ Message parse_back(const std::string& json) {
   const auto status = pb::util::JsonStringToMessage(json, &parsed);
   EXPECT_TRUE(status.ok()) << status.ToString();
   return parsed;
+}
+
+// Counts of validate and diagnose are numbers in JSON, as in the calculation JSON: protobuf
+// writes 64-bit integers as strings, so the schemas hold them in 32 bits.
+TEST(ResultJson, ValidationAndDiagnosisCountsAreNumbers) {
+  gearcoupling::v1::DiagnosisResult diagnosis;
+  diagnosis.set_recording_rows(1000);
+  diagnosis.set_outlier_rows(3);
+  diagnosis.add_rounds()->add_signature()->add_bins()->set_count(17);
+  const std::string diagnosis_json = to_json(diagnosis);
+  EXPECT_NE(diagnosis_json.find("\"recording_rows\": 1000,"), std::string::npos) << diagnosis_json;
+  EXPECT_NE(diagnosis_json.find("\"outlier_rows\": 3"), std::string::npos) << diagnosis_json;
+  EXPECT_NE(diagnosis_json.find("\"count\": 17,"), std::string::npos) << diagnosis_json;
+  gearcoupling::v1::ValidationResult validation;
+  validation.set_recording_rows(4000000000u);
+  validation.add_row_problems()->set_line(12);
+  const std::string validation_json = to_json(validation);
+  EXPECT_NE(validation_json.find("\"recording_rows\": 4000000000,"), std::string::npos) << validation_json;
+  EXPECT_NE(validation_json.find("\"line\": 12,"), std::string::npos) << validation_json;
+}
+
+TEST(CountField, RefusesACountBeyondUint32RatherThanWrap) {
+  EXPECT_EQ(count_field(4294967295u, "recording_rows"), 4294967295u);
+  try {
+    count_field(4294967296u, "recording_rows");
+    FAIL();
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "recording_rows");
+  }
 }
 
 TEST(ResultJson, ToothContactParsesBackBitForBit) {

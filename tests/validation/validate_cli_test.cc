@@ -5,12 +5,15 @@
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
-#include "clients/cli/recording_csv.h"
+#include "analysis/recording_csv.h"
 #include "idl/validation.pb.h"
 #include "run_process.h"
 
 namespace gc::cli::testing {
 namespace {
+
+using analysis::read_recording;
+using analysis::Recording;
 
 const std::string kRecordings = GC_BUNDLED_RECORDINGS_DIR;
 

@@ -1,0 +1,86 @@
+#include "analysis/diagnosis_summary.h"
+
+#include <fmt/format.h>
+
+#include "analysis/table.h"
+#include "analysis/validation_summary.h"
+
+namespace gc::analysis {
+namespace {
+
+namespace v1 = gearcoupling::v1;
+
+std::string parameters_text(const google::protobuf::RepeatedPtrField<v1::ParameterEstimateRecord>& parameters) {
+  std::string text;
+  for (const v1::ParameterEstimateRecord& p : parameters) {
+    text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", p.name(), format_number(p.value()));
+    if (p.held()) text += " (held)";
+    if (p.has_standard_error()) text += fmt::format(" +/- {:.2g}", p.standard_error());
+  }
+  return text;
+}
+
+/// "hysteresis", "refine friction", "formula".
+std::string candidate_name(const v1::CandidateRecord& c) {
+  if (c.kind() == "refinement") return "refine " + c.effect();
+  if (c.kind() == "formula") return "formula";
+  return c.effect();
+}
+
+void print_ranking(const v1::RoundRecord& round, std::FILE* out) {
+  Table table({"rank", "candidate", "held-out RMSE [kN·m]", "change", "t", "fitted parameters (search rows)"});
+  int rank = 0;
+  for (const v1::CandidateRecord& c : round.ranking()) {
+    if (!c.failure().empty()) {
+      table.add_row({"-", candidate_name(c), "-", "-", "-", c.failure()});
+      continue;
+    }
+    table.add_row({std::to_string(++rank), candidate_name(c), fmt::format("{:.2f}", c.held_out_rmse_nm() / 1e3),
+                   fmt::format("{:+.0f} %", -100.0 * c.reduction()), fmt::format("{:.1f}", c.t()),
+                   parameters_text(c.parameters())});
+  }
+  if (round.has_formula()) {
+    const v1::CandidateRecord& f = round.formula();
+    table.add_row({"-", candidate_name(f), fmt::format("{:.2f}", f.held_out_rmse_nm() / 1e3),
+                   fmt::format("{:+.0f} %", -100.0 * f.reduction()), fmt::format("{:.1f}", f.t()),
+                   parameters_text(f.parameters())});
+  }
+  table.print(out);
+}
+
+void print_signature(const v1::RoundRecord& round, std::FILE* out) {
+  Table table({"input", "systematic", "share given the others", "share alone", "F", "trend M_sy' [N·m/unit]",
+               "trend M_sz' [N·m/unit]", "moves with"});
+  for (const v1::InputSignatureRecord& s : round.signature()) {
+    std::string with;
+    for (const std::string& c : s.confounded_with()) with += (with.empty() ? "" : ", ") + c;
+    table.add_row({fmt::format("{} [{}]", s.input(), s.unit()), s.systematic() ? "yes" : "no",
+                   fmt::format("{:.0f} %", 100.0 * s.explained_share()), fmt::format("{:.0f} %", 100.0 * s.marginal_share()),
+                   fmt::format("{:.1f}", s.f()), format_number(s.slope_y()), format_number(s.slope_z()), with});
+  }
+  fmt::print(out, "\nSignature of the residual (partial dependence by input, most explaining first):\n");
+  table.print(out);
+}
+
+}  // namespace
+
+void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) {
+  fmt::print(out, "Recording {}: {} rows ({} refused by the model), model {}; search on {} rows, "
+             "refit on {}\n", result.recording(), result.recording_rows(), result.excluded_rows(),
+             result.model(), result.search_rows(), result.refit_rows());
+  if (result.excluded_rows() > 0) fmt::print(out, "  first refusal: {}\n", result.exclusion_reason());
+  if (result.outlier_rows() > 0) fmt::print(out, "  {} rows excluded as outliers (spikes)\n", result.outlier_rows());
+  for (int i = 0; i < result.rounds_size(); ++i) {
+    const v1::RoundRecord& round = result.rounds(i);
+    fmt::print(out, "\nRound {}: RMSE {:.2f} kN·m, noise {:.2f} kN·m (M_sy' {:.2f}, M_sz' {:.2f}; lag-1 autocorrelation {:.2f}, {:.2f})\n",
+               i + 1, round.rmse_nm() / 1e3, round.noise_rmse_nm() / 1e3, round.noise_y_nm() / 1e3,
+               round.noise_z_nm() / 1e3, round.noise_phi_y(), round.noise_phi_z());
+    if (round.ranking_size() > 0) print_ranking(round, out);
+    if (round.outcome() == "unexplained") print_signature(round, out);
+    fmt::print(out, "\n{}\n", round.verdict());
+  }
+  if (!result.written_model().empty()) fmt::print(out, "\nModel with the effects found: {}\n", result.written_model());
+  print_input_notes(result.warnings(), result.ignored_columns(), out);
+}
+
+}  // namespace gc::analysis

@@ -1,0 +1,31 @@
+#include "analysis/effect_spec.h"
+
+#include <fmt/format.h>
+
+#include "analysis/format_error.h"
+#include "analysis/number_text.h"
+#include "core/effects/effect_registry.h"
+
+namespace gc::analysis {
+
+std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec) {
+  const std::size_t equals = spec.find('=');
+  const std::string name(trim(spec.substr(0, equals)));
+  if (name.empty()) throw FormatError(fmt::format("--add '{}': expected EFFECT[=parameter=value,...]", spec));
+  ParameterValues values;
+  std::string_view rest = equals == std::string_view::npos ? std::string_view() : spec.substr(equals + 1);
+  while (!rest.empty()) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    const std::size_t eq = item.find('=');
+    const auto value = eq == std::string_view::npos ? std::nullopt : parse_double(item.substr(eq + 1));
+    if (!value) {
+      throw FormatError(fmt::format("--add '{}': '{}' is not parameter=number (SI units)", spec, item));
+    }
+    values[std::string(trim(item.substr(0, eq)))] = *value;
+  }
+  return make_effect(name, values);
+}
+
+}  // namespace gc::analysis

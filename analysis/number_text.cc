@@ -1,0 +1,48 @@
+#include "analysis/number_text.h"
+
+#include <array>
+#include <charconv>
+
+namespace gc::analysis {
+namespace {
+
+template <typename Number>
+std::optional<Number> parse_whole(std::string_view text) {
+  text = trim(text);
+  if (text.starts_with('+')) text.remove_prefix(1);
+  if (text.empty()) return std::nullopt;
+  Number value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+template <typename Number>
+void append_shortest(std::string& out, Number value) {
+  std::array<char, 32> buffer;  // 24 characters hold any double's shortest form
+  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  out.append(buffer.data(), end);
+}
+
+}  // namespace
+
+std::string_view trim(std::string_view text) {
+  constexpr std::string_view kBlanks = " \t\r";
+  const auto first = text.find_first_not_of(kBlanks);
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(kBlanks);
+  return text.substr(first, last - first + 1);
+}
+
+std::string_view trim_start(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  return first == std::string_view::npos ? std::string_view() : text.substr(first);
+}
+
+std::optional<double> parse_double(std::string_view text) { return parse_whole<double>(text); }
+std::optional<int> parse_int(std::string_view text) { return parse_whole<int>(text); }
+
+void append_number(std::string& out, double value) { append_shortest(out, value); }
+void append_number(std::string& out, long value) { append_shortest(out, value); }
+
+}  // namespace gc::analysis

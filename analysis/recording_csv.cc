@@ -1,0 +1,352 @@
+#include "analysis/recording_csv.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "analysis/csv_fields.h"
+#include "analysis/format_error.h"
+#include "analysis/number_text.h"
+#include "core/model_error.h"
+
+namespace gc::analysis {
+namespace {
+
+constexpr std::size_t kRequiredCount = 6;  // time .. msz, the first quantities of the enum
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+constexpr std::array<Quantity, kQuantityCount> kQuantities{
+    Quantity::time,  Quantity::torque,      Quantity::misalignment, Quantity::direction,
+    Quantity::msy,   Quantity::msz,         Quantity::speed,        Quantity::temperature,
+    Quantity::applied_my, Quantity::applied_mz, Quantity::hub_motion};
+
+const std::vector<UnitSpelling> kMomentUnits{{"nm", 1.0}, {"knm", 1e3}, {"mnm", 1e6}};
+const std::vector<UnitSpelling> kAngleUnits{{"rad", 1.0}, {"deg", kDegree}, {"mrad", 1e-3}};
+
+// "applied_my_knm" -> quantity applied_my, unit "knm": the longest quantity name that is a
+// prefix followed by '_' wins, so "applied_my" is not read as a unit of "applied".
+std::optional<Quantity> quantity_of(std::string_view column, std::string_view& unit) {
+  std::optional<Quantity> found;
+  std::size_t found_length = 0;
+  for (Quantity quantity : kQuantities) {
+    const std::string_view name = quantity_name(quantity);
+    if (column.size() > name.size() + 1 && column.starts_with(name) &&
+        column[name.size()] == '_' && name.size() > found_length) {
+      found = quantity;
+      found_length = name.size();
+    }
+  }
+  if (found) unit = column.substr(found_length + 1);
+  return found;
+}
+
+std::string spellings_text(Quantity quantity) {
+  std::string text;
+  for (const UnitSpelling& spelling : unit_spellings(quantity)) {
+    text += fmt::format("{}{}_{}", text.empty() ? "" : ", ", quantity_name(quantity), spelling.unit);
+  }
+  return text;
+}
+
+std::string all_columns_text() {
+  std::string text;
+  for (Quantity quantity : kQuantities) text += (text.empty() ? "" : "; ") + spellings_text(quantity);
+  return text;
+}
+
+// Column 0: the header as a whole (a missing column has no place).
+[[noreturn]] void header_error(std::string_view source, int column, std::string_view name,
+                               const std::string& message) {
+  throw InvalidInput("recording." + std::string(name.empty() ? "header" : name),
+                     column > 0 ? fmt::format("{}:1:{}: {}", source, column, message)
+                                : fmt::format("{}:1: {}", source, message));
+}
+
+std::string lower_case(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+// The column `name` (as docs/recordings.md spells it), or nothing when it names no quantity.
+// Units match in any case ("kNm", "KNM"): the spellings are lower case.
+std::optional<RecordingColumn> parse_column(std::string_view name, std::string_view source,
+                                            int column) {
+  std::string_view unit;
+  const std::optional<Quantity> quantity = quantity_of(name, unit);
+  if (!quantity) return std::nullopt;
+  for (const UnitSpelling& spelling : unit_spellings(*quantity)) {
+    if (spelling.unit == lower_case(unit)) return RecordingColumn{*quantity, std::string(name), spelling};
+  }
+  header_error(source, column, name,
+               fmt::format("unknown unit '{}' in column '{}' (accepted, in any case: {}; "
+                           "--columns renames a column)", unit, name, spellings_text(*quantity)));
+}
+
+// The documented name the renames give the file's column `header`, or `header` itself.
+std::string_view renamed(std::string_view header, const std::vector<ColumnRename>& renames) {
+  for (const ColumnRename& rename : renames) {
+    if (rename.header == header) return rename.name;
+  }
+  return header;
+}
+
+void require_renamed_columns_present(const CsvFields& names, const std::vector<ColumnRename>& renames,
+                                     std::string_view source) {
+  for (const ColumnRename& rename : renames) {
+    if (std::find(names.fields().begin(), names.fields().end(), rename.header) == names.fields().end()) {
+      throw InvalidInput("recording.columns",
+                         fmt::format("{}:1: --columns {}={}: the header has no column '{}'", source,
+                                     rename.name, rename.header, rename.header));
+    }
+  }
+}
+
+void set_value(Quantity quantity, double value, RecordedSample& s) {
+  switch (quantity) {
+    case Quantity::time: s.input.time_s = value; break;
+    case Quantity::torque: s.input.torque_nm = value; break;
+    case Quantity::misalignment: s.input.misalignment_rad = value; break;
+    case Quantity::direction: s.input.direction_rad = value; break;
+    case Quantity::msy: s.measured.y_nm = value; break;
+    case Quantity::msz: s.measured.z_nm = value; break;
+    case Quantity::speed: s.input.speed_rpm = value; break;
+    case Quantity::temperature: s.input.temperature_c = value; break;
+    case Quantity::applied_my: s.input.applied_moment_y_nm = value; break;
+    case Quantity::applied_mz: s.input.applied_moment_z_nm = value; break;
+    case Quantity::hub_motion: s.hub_motion_m = value; break;
+  }
+}
+
+std::string_view cell_complaint(std::string_view cell) {
+  if (cell.empty()) return "empty cell";
+  return "not a number";
+}
+
+}  // namespace
+
+std::string_view quantity_name(Quantity quantity) {
+  static constexpr std::array<std::string_view, kQuantityCount> kNames{
+      "time", "torque", "misalignment", "direction", "msy", "msz",
+      "speed", "temperature", "applied_my", "applied_mz", "hub_motion"};
+  return kNames[static_cast<std::size_t>(quantity)];
+}
+
+const std::vector<UnitSpelling>& unit_spellings(Quantity quantity) {
+  static const std::vector<UnitSpelling> kTime{{"s", 1.0}, {"ms", 1e-3}};
+  static const std::vector<UnitSpelling> kSpeed{{"rpm", 1.0}, {"rad_s", 60.0 / (2.0 * std::numbers::pi)}};
+  // Temperature stays in deg C, as MeasurementSample holds it.
+  static const std::vector<UnitSpelling> kTemperature{{"c", 1.0}, {"k", 1.0, -273.15}};
+  static const std::vector<UnitSpelling> kLength{{"m", 1.0}, {"mm", 1e-3}, {"um", 1e-6}};
+  switch (quantity) {
+    case Quantity::time: return kTime;
+    case Quantity::misalignment:
+    case Quantity::direction: return kAngleUnits;
+    case Quantity::speed: return kSpeed;
+    case Quantity::temperature: return kTemperature;
+    case Quantity::hub_motion: return kLength;
+    default: return kMomentUnits;
+  }
+}
+
+std::vector<ColumnRename> parse_column_renames(std::string_view text) {
+  std::vector<ColumnRename> renames;
+  CsvFields items;
+  if (auto problem = items.split(text)) throw FormatError(fmt::format("--columns '{}': {}", text, *problem));
+  for (std::string_view item : items.fields()) {
+    const std::size_t equals = item.find('=');
+    const std::string_view name = trim(item.substr(0, equals));
+    std::string_view unit;
+    if (equals == std::string_view::npos || trim(item.substr(equals + 1)).empty() ||
+        !quantity_of(name, unit)) {
+      throw FormatError(fmt::format("--columns '{}': '{}' is not name=header with a name of "
+                                    "docs/recordings.md (one of: {})", text, item, all_columns_text()));
+    }
+    renames.push_back({std::string(name), std::string(trim(item.substr(equals + 1)))});
+  }
+  return renames;
+}
+
+RecordingHeader parse_recording_header(std::string_view header, std::string_view source_name,
+                                       const std::vector<ColumnRename>& renames) {
+  CsvFields names;
+  if (auto problem = names.split(header)) header_error(source_name, 0, "header", *problem);
+  require_renamed_columns_present(names, renames, source_name);
+  RecordingHeader result;
+  result.field_count = names.size();
+  std::array<int, kQuantityCount> seen{};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const int column = static_cast<int>(i) + 1;
+    const std::string_view name = renamed(names[i], renames);
+    std::optional<RecordingColumn> parsed = parse_column(name, source_name, column);
+    if (!parsed) {
+      result.ignored.emplace_back(names[i]);
+      continue;
+    }
+    int& first = seen[static_cast<std::size_t>(parsed->quantity)];
+    if (first != 0) {
+      header_error(source_name, column, name,
+                   fmt::format("column '{}' repeats {} (column {})", name,
+                               quantity_name(parsed->quantity), first));
+    }
+    first = column;
+    parsed->index = i;
+    result.columns.push_back(std::move(*parsed));
+  }
+  for (std::size_t q = 0; q < kRequiredCount; ++q) {
+    if (seen[q] == 0) {
+      header_error(source_name, 0, quantity_name(kQuantities[q]),
+                   fmt::format("required column {} missing (one of: {})",
+                               quantity_name(kQuantities[q]), spellings_text(kQuantities[q])));
+    }
+  }
+  return result;
+}
+
+RecordingReader::RecordingReader(const std::filesystem::path& path,
+                                 LoadingDirectionOptions loading)
+    : RecordingReader(path, RecordingOptions{loading, {}}) {}
+
+RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
+    : source_name_(path.filename().string()),
+      in_(path, std::ios::binary),
+      loading_(0.0, options.loading.still_after_s) {
+  if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
+  if (!next_csv_line(in_, line_, line_number_)) {
+    throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
+  }
+  header_ = parse_recording_header(line_, source_name_, options.renames);
+  has_speed_ = std::any_of(header_.columns.begin(), header_.columns.end(),
+                           [](const RecordingColumn& c) { return c.quantity == Quantity::speed; });
+  loading_dead_band_rad_ = scan_dead_band(options.loading);
+  loading_ = LoadingDirectionTracker(loading_dead_band_rad_, options.loading.still_after_s);
+}
+
+double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
+  const std::streampos first_row = in_.tellg();
+  const long header_line = line_number_;
+  std::vector<double> amplitudes;
+  RecordedSample sample;
+  while (next_csv_line(in_, line_, line_number_)) {
+    if (parse_row(line_, sample)) continue;  // problems are reported on pass 2
+    last_time_s_ = sample.input.time_s;
+    amplitudes.push_back(sample.input.misalignment_rad);
+  }
+  last_time_s_.reset();
+  line_number_ = header_line;
+  in_.clear();
+  if (!in_.seekg(first_row)) {
+    throw InvalidInput("recording", source_name_ + ": cannot be read twice (not a regular file?)");
+  }
+  return gc::loading_dead_band_rad(amplitudes, loading);
+}
+
+std::optional<RowProblem> RecordingReader::parse_row(std::string_view line, RecordedSample& s) {
+  if (auto problem = fields_.split(line)) return RowProblem{line_number_, 0, "", std::move(*problem)};
+  if (fields_.size() != header_.field_count) {
+    return RowProblem{line_number_, 0, "",
+                      fmt::format("{} fields, the header has {}", fields_.size(), header_.field_count)};
+  }
+  s = RecordedSample{};
+  for (const RecordingColumn& column : header_.columns) {
+    const std::string_view cell = fields_[column.index];
+    const std::optional<double> value = parse_double(cell);
+    const int column_number = static_cast<int>(column.index) + 1;
+    if (!value) {
+      return RowProblem{line_number_, column_number, column.name,
+                        fmt::format("{} '{}'", cell_complaint(cell), cell)};
+    }
+    if (!std::isfinite(*value)) {
+      return RowProblem{line_number_, column_number, column.name,
+                        fmt::format("'{}' is not a finite number", cell)};
+    }
+    set_value(column.quantity, *value * column.unit.scale + column.unit.offset, s);
+  }
+  if (last_time_s_ && s.input.time_s < *last_time_s_) {
+    const auto time_column = std::find_if(header_.columns.begin(), header_.columns.end(),
+                                          [](const auto& c) { return c.quantity == Quantity::time; });
+    return RowProblem{line_number_, static_cast<int>(time_column->index) + 1, time_column->name,
+                      fmt::format("time goes backwards: {} s after {} s", s.input.time_s,
+                                  *last_time_s_)};
+  }
+  return std::nullopt;
+}
+
+void RecordingReader::exclude(RowProblem problem) {
+  ++excluded_rows_;
+  if (problems_.size() < kKeptProblems) problems_.push_back(std::move(problem));
+}
+
+bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size_t max_samples) {
+  samples.clear();
+  while (samples.size() < max_samples && next_csv_line(in_, line_, line_number_)) {
+    ++rows_read_;
+    RecordedSample sample;
+    if (auto problem = parse_row(line_, sample)) {
+      exclude(std::move(*problem));
+      continue;
+    }
+    last_time_s_ = sample.input.time_s;
+    sample.input.loading_direction =
+        loading_.next(sample.input.time_s, sample.input.misalignment_rad);
+    sample.input.misalignment_rate_rad_s = misalignment_rate_.next(sample.input.time_s, sample.input.misalignment_rad);
+    sample.input.torque_rate_nm_s = torque_rate_.next(sample.input.time_s, sample.input.torque_nm);
+    // Every kept row has a speed when the column exists (an empty cell excludes the row), so
+    // the trapezoid runs over the kept rows, across any excluded between them.
+    if (has_speed_) {
+      sample.input.rotation_phase_rad = phase_.next(sample.input.time_s, *sample.input.speed_rpm);
+    }
+    samples.push_back(sample);
+  }
+  return !samples.empty() || !in_.eof();
+}
+
+Recording read_recording(const std::filesystem::path& path, LoadingDirectionOptions loading) {
+  return read_recording(path, RecordingOptions{loading, {}});
+}
+
+Recording read_recording(const std::filesystem::path& path, const RecordingOptions& options) {
+  RecordingReader reader(path, options);
+  Recording recording;
+  std::vector<RecordedSample> chunk;
+  while (reader.next_chunk(chunk, 65536)) {
+    recording.samples.insert(recording.samples.end(), chunk.begin(), chunk.end());
+  }
+  recording.problems = reader.problems();
+  recording.rows_read = reader.rows_read();
+  recording.excluded_rows = reader.excluded_rows();
+  recording.ignored_columns = reader.ignored_columns();
+  return recording;
+}
+
+std::string recording_header(const RecordedSample& first) {
+  std::string header = "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm";
+  if (first.input.speed_rpm) header += ",speed_rpm";
+  if (first.input.temperature_c) header += ",temperature_c";
+  if (first.input.applied_moment_y_nm) header += ",applied_my_nm";
+  if (first.input.applied_moment_z_nm) header += ",applied_mz_nm";
+  if (first.hub_motion_m) header += ",hub_motion_m";
+  return header + "\n";
+}
+
+void append_recording_row(std::string& out, const RecordedSample& s) {
+  for (double value : {s.input.time_s, s.input.torque_nm, s.input.misalignment_rad,
+                       s.input.direction_rad, s.measured.y_nm, s.measured.z_nm}) {
+    append_number(out, value);
+    out += ',';
+  }
+  for (const std::optional<double>& value :
+       {s.input.speed_rpm, s.input.temperature_c, s.input.applied_moment_y_nm,
+        s.input.applied_moment_z_nm, s.hub_motion_m}) {
+    if (!value) continue;
+    append_number(out, *value);
+    out += ',';
+  }
+  out.back() = '\n';
+}
+
+}  // namespace gc::analysis

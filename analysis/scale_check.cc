@@ -1,0 +1,92 @@
+#include "analysis/scale_check.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace gc::analysis {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+constexpr std::array<double, 4> kUnitSlips{10.0, 100.0, 1000.0, kDegreesPerRadian};
+// Within a factor of 1.5 of a slip: 10 matches 6.7-15, 57.3 matches 38-86. A model wrong by
+// 3-5 times (no unit at fault) matches none.
+constexpr double kSlipTolerance = 1.5;
+// Plausible misalignments in jam angles: a test cell runs within the jam angle.
+constexpr double kPlausibleLow = 0.1, kPlausibleHigh = 3.0;
+
+std::string_view channel_hint(double ratio) {
+  return ratio > 1.0 ? "too large" : "too small";
+}
+
+}  // namespace
+
+std::optional<double> unit_slip_factor(double ratio) {
+  if (!(ratio > 0.0) || !std::isfinite(ratio)) return std::nullopt;
+  const double distance_to_one = std::abs(std::log(ratio));
+  std::optional<double> nearest;
+  double nearest_distance = std::log(kSlipTolerance);
+  for (double slip : kUnitSlips) {
+    const double distance = std::abs(distance_to_one - std::log(slip));
+    if (distance < nearest_distance) {
+      nearest = slip;
+      nearest_distance = distance;
+    }
+  }
+  return nearest;
+}
+
+void MomentScale::add(const SensorMoments& measured, const SensorMoments& predicted) {
+  measured_y_ += measured.y_nm * measured.y_nm;
+  measured_z_ += measured.z_nm * measured.z_nm;
+  model_y_ += predicted.y_nm * predicted.y_nm;
+  model_z_ += predicted.z_nm * predicted.z_nm;
+  ++count_;
+}
+
+std::vector<std::string> MomentScale::warnings(std::string_view model_name) const {
+  std::vector<std::string> warnings;
+  if (count_ == 0) return warnings;
+  const double n = static_cast<double>(count_);
+  const double model_y = std::sqrt(model_y_ / n), model_z = std::sqrt(model_z_ / n);
+  const struct {
+    std::string_view name, column;
+    double measured, model, other_model;
+  } channels[] = {{"M_sy'", "msy", std::sqrt(measured_y_ / n), model_y, model_z},
+                  {"M_sz'", "msz", std::sqrt(measured_z_ / n), model_z, model_y}};
+  for (const auto& c : channels) {
+    if (!(c.model > 0.1 * c.other_model) || c.model <= 0.0) continue;
+    const double ratio = c.measured / c.model;
+    const std::optional<double> slip = unit_slip_factor(ratio);
+    if (!slip) continue;
+    warnings.push_back(fmt::format(
+        "{} measured RMS {:.4g} N·m is {:.4g} times the model {}'s {:.4g} N·m, {} by about {:g}: "
+        "check the unit of the {} column (N·m under _knm? kN·m under _nm?{})",
+        c.name, c.measured, ratio, model_name, c.model, channel_hint(ratio), *slip, c.column,
+        *slip == kUnitSlips.back() ? " or degrees and radians in the misalignment's" : ""));
+  }
+  return warnings;
+}
+
+std::optional<std::string> misalignment_scale_warning(double largest_misalignment_rad,
+                                                      double jam_angle_rad) {
+  if (!(largest_misalignment_rad > 0.0) || !(jam_angle_rad > 0.0)) return std::nullopt;
+  const double in_jam_angles = largest_misalignment_rad / jam_angle_rad;
+  const auto plausible = [](double x) { return x >= kPlausibleLow && x <= kPlausibleHigh; };
+  if (in_jam_angles > kPlausibleHigh && plausible(in_jam_angles / kDegreesPerRadian)) {
+    return fmt::format("misalignment reaches {:.3g} rad, {:.3g} times the jam angle ({:.3g} rad): "
+                       "degrees under a _rad header? (57.3 times too large)",
+                       largest_misalignment_rad, in_jam_angles, jam_angle_rad);
+  }
+  if (in_jam_angles < kPlausibleLow && plausible(in_jam_angles * kDegreesPerRadian)) {
+    return fmt::format("misalignment reaches only {:.3g} rad, {:.3g} of the jam angle ({:.3g} rad): "
+                       "radians under a _deg header? (57.3 times too small; ignore this if the "
+                       "test ran that close to aligned)",
+                       largest_misalignment_rad, in_jam_angles, jam_angle_rad);
+  }
+  return std::nullopt;
+}
+
+}  // namespace gc::analysis

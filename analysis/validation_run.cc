@@ -1,0 +1,82 @@
+#include "analysis/validation_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <thread>
+
+#include "core/model_error.h"
+
+namespace gc::analysis {
+namespace {
+
+struct Outcome {
+  std::optional<SensorMoments> moments;
+  std::string field;      // set when the model refused the sample
+  std::string message;
+};
+
+void predict_range(const CouplingModel& model, const std::vector<RecordedSample>& samples,
+                   std::size_t begin, std::size_t end, std::vector<Outcome>& outcomes) {
+  for (std::size_t i = begin; i < end; ++i) {
+    Outcome& outcome = outcomes[i];
+    try {
+      outcome.moments = model.predict(samples[i].input).moments;
+    } catch (const InvalidInput& error) {
+      outcome = {std::nullopt, error.field(), error.what()};
+    } catch (const ModelError& error) {
+      outcome = {std::nullopt, "model", error.what()};
+    }
+  }
+}
+
+// Each thread predicts one contiguous slice; outcomes keep the file order.
+void predict_chunk(const CouplingModel& model, const std::vector<RecordedSample>& samples,
+                   int threads, std::vector<Outcome>& outcomes) {
+  outcomes.assign(samples.size(), Outcome{});
+  const std::size_t slices = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, samples.size() / 256));
+  const std::size_t per_slice = (samples.size() + slices - 1) / slices;
+  std::vector<std::jthread> workers;
+  for (std::size_t s = 1; s < slices; ++s) {
+    const std::size_t begin = s * per_slice, end = std::min(samples.size(), begin + per_slice);
+    workers.emplace_back([&, begin, end] { predict_range(model, samples, begin, end, outcomes); });
+  }
+  predict_range(model, samples, 0, std::min(samples.size(), per_slice), outcomes);
+}
+
+void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Outcome>& outcomes,
+                ModelRun& run) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Outcome& outcome = outcomes[i];
+    if (outcome.moments) {
+      run.validation.add(samples[i], *outcome.moments);
+      run.scale.add(samples[i].measured, *outcome.moments);
+    } else {
+      run.validation.reject(samples[i], outcome.field, outcome.message);
+    }
+    run.points.add(samples[i], outcome.moments);
+  }
+}
+
+}  // namespace
+
+RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
+                                const ValidationRunOptions& options) {
+  RecordingReader reader(path, RecordingOptions{{}, options.renames});
+  std::vector<RecordedSample> chunk;
+  std::vector<Outcome> outcomes;
+  double largest_misalignment_rad = 0.0;
+  while (reader.next_chunk(chunk, options.chunk_samples)) {
+    for (const RecordedSample& sample : chunk) {
+      largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
+    }
+    for (ModelRun& run : runs) {
+      predict_chunk(*run.model, chunk, options.threads, outcomes);
+      accumulate(chunk, outcomes, run);
+    }
+  }
+  return {path.filename().string(), reader.rows_read(), reader.excluded_rows(), reader.problems(),
+          reader.ignored_columns(), largest_misalignment_rad};
+}
+
+}  // namespace gc::analysis

@@ -1,0 +1,34 @@
+#include "clients/cli/recording_flags.h"
+
+#include <cstdio>
+
+#include <fmt/format.h>
+
+namespace gc::cli {
+
+FlagSpec columns_flag() {
+  return {"columns", "NAME=HEADER,...",
+          "read the file's column HEADER as NAME of docs/recordings.md, e.g. msy_knm=Ch3_kNm", ""};
+}
+
+std::vector<analysis::ColumnRename> column_renames(const Flags& flags) {
+  const std::string& text = flags.text("columns");
+  if (text.empty()) return {};
+  return analysis::parse_column_renames(text);
+}
+
+void print_recording_notes(std::string_view subcommand, const std::vector<std::string>& ignored_columns,
+                           const std::vector<std::string>& warnings) {
+  if (!ignored_columns.empty()) {
+    std::string names;
+    for (const std::string& column : ignored_columns) names += (names.empty() ? "" : ", ") + column;
+    fmt::print(stderr, "gearcoupling {}: note: ignored {} column{} of no known quantity: {} "
+               "(--columns NAME=HEADER reads one as a known column)\n", subcommand,
+               ignored_columns.size(), ignored_columns.size() == 1 ? "" : "s", names);
+  }
+  for (const std::string& warning : warnings) {
+    fmt::print(stderr, "gearcoupling {}: warning: {}\n", subcommand, warning);
+  }
+}
+
+}  // namespace gc::cli

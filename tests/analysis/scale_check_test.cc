@@ -1,0 +1,74 @@
+// Unit slips in a recording's header (N·m under _knm, radians under _deg) are flagged by scale
+// against the model, and a model merely a few times off is not.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "analysis/scale_check.h"
+
+namespace gc::analysis {
+namespace {
+
+TEST(UnitSlipFactor, FindsPowersOfTenAndDegreesPerRadianEitherWay) {
+  EXPECT_EQ(unit_slip_factor(1000.0), 1000.0);
+  EXPECT_EQ(unit_slip_factor(1.0 / 1000.0), 1000.0);
+  EXPECT_EQ(unit_slip_factor(9.0), 10.0);        // 10 within a factor of 1.5
+  EXPECT_EQ(unit_slip_factor(130.0), 100.0);
+  EXPECT_EQ(unit_slip_factor(57.3), 57.29577951308232);
+  EXPECT_EQ(unit_slip_factor(1.0 / 60.0), 57.29577951308232);
+}
+
+TEST(UnitSlipFactor, LeavesAModelAFewTimesOffAlone) {
+  EXPECT_EQ(unit_slip_factor(1.0), std::nullopt);
+  EXPECT_EQ(unit_slip_factor(3.0), std::nullopt);
+  EXPECT_EQ(unit_slip_factor(1.0 / 4.0), std::nullopt);
+  EXPECT_EQ(unit_slip_factor(25.0), std::nullopt);   // between 15 and 38
+  EXPECT_EQ(unit_slip_factor(0.0), std::nullopt);
+}
+
+// The measured M_sy' is N·m read as kN·m: 1000 times the model's, with noise on top.
+TEST(MomentScale, WarnsForTheChannelAThousandTimesTheModel) {
+  MomentScale scale;
+  for (int i = 1; i <= 100; ++i) {
+    const double model_y = 2e4 * i / 100.0, model_z = 1e4 * i / 100.0;
+    scale.add({model_y * 1000.0 + 5e5, model_z + 300.0}, {model_y, model_z});
+  }
+  const std::vector<std::string> warnings = scale.warnings("paper");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("M_sy'"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("too large by about 1000"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("msy column"), std::string::npos) << warnings[0];
+}
+
+TEST(MomentScale, QuietForAModelWithinNoise) {
+  MomentScale scale;
+  for (int i = 1; i <= 100; ++i) scale.add({1e4 * i + 2e3, 5e3 - 2e3}, {1e4 * i, 5e3});
+  EXPECT_TRUE(scale.warnings("paper").empty());
+  EXPECT_TRUE(MomentScale().warnings("none").empty());
+}
+
+// A channel the model holds near zero says nothing of units: its noise over a tiny RMS can
+// land on any ratio.
+TEST(MomentScale, DoesNotJudgeAChannelTheModelHoldsNearZero) {
+  MomentScale scale;
+  for (int i = 1; i <= 100; ++i) scale.add({1e4 * i, 2e3}, {1e4 * i, 200.0});
+  EXPECT_TRUE(scale.warnings("paper").empty());
+}
+
+// Jam angle 0.0131 rad (the paper's upwind coupling); the bundled recordings reach 30-60 % of it.
+TEST(MisalignmentScale, FlagsRadiansUnderDegreesAndDegreesUnderRadians) {
+  const double jam = 0.0131;
+  const double radians_read_as_degrees = 0.6 * jam / 57.29577951308232;
+  const auto small = misalignment_scale_warning(radians_read_as_degrees, jam);
+  ASSERT_TRUE(small);
+  EXPECT_NE(small->find("radians under a _deg header"), std::string::npos) << *small;
+  const auto large = misalignment_scale_warning(0.6 * jam * 57.29577951308232, jam);
+  ASSERT_TRUE(large);
+  EXPECT_NE(large->find("degrees under a _rad header"), std::string::npos) << *large;
+  EXPECT_FALSE(misalignment_scale_warning(0.3 * jam, jam));
+  EXPECT_FALSE(misalignment_scale_warning(1.2 * jam, jam));
+  EXPECT_FALSE(misalignment_scale_warning(0.0, jam));   // an aligned test: nothing to judge
+}
+
+}  // namespace
+}  // namespace gc::analysis

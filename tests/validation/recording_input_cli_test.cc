@@ -1,0 +1,150 @@
+// What a measurement engineer hit, run as a user runs it: a DAQ export's other channels and
+// names, units in any case, unit slips that gave wrong results in silence, zero compared
+// samples read as a perfect fit, counts as JSON strings, and a failed --html left behind.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <google/protobuf/util/json_util.h>
+#include <gtest/gtest.h>
+
+#include "idl/validation.pb.h"
+#include "run_process.h"
+
+namespace gc::cli::testing {
+namespace {
+
+namespace v1 = ::gearcoupling::v1;
+
+const std::string kRecordings = GC_BUNDLED_RECORDINGS_DIR;
+const std::string kSweep = kRecordings + "/paper_torque_sweep.csv";
+
+// The bundled torque sweep under another header line.
+std::string with_header(const std::string& header, const std::string& suffix = "") {
+  std::ifstream in(kSweep);
+  std::string line, text = header + "\n";
+  std::getline(in, line);
+  while (std::getline(in, line)) text += line + suffix + "\n";
+  const std::string path = temp_path("gc_recording") + ".csv";
+  write_file(path, text);
+  return path;
+}
+
+v1::ValidationResult validate_json(const std::vector<std::string>& extra, ProcessResult& run) {
+  std::vector<std::string> args = {"validate", "--model", "paper", "--json"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  run = run_gearcoupling(args);
+  v1::ValidationResult result;
+  EXPECT_TRUE(google::protobuf::util::JsonStringToMessage(run.out, &result).ok()) << run.out << run.err;
+  return result;
+}
+
+TEST(RecordingInputCli, NewtonMetresUnderAKnmHeaderAreWarnedOnStderrAndInTheJson) {
+  ProcessResult run;
+  const v1::ValidationResult result = validate_json(
+      {"--data", with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy_knm,msz_knm")}, run);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_GE(result.warnings_size(), 1) << run.out;
+  EXPECT_NE(result.warnings(0).find("M_sy'"), std::string::npos) << result.warnings(0);
+  EXPECT_NE(result.warnings(0).find("by about 1000"), std::string::npos) << result.warnings(0);
+  EXPECT_NE(run.err.find("gearcoupling validate: warning: M_sy'"), std::string::npos) << run.err;
+  // The same recording with its own header: no warning at all.
+  ProcessResult plain;
+  EXPECT_EQ(validate_json({"--data", kSweep}, plain).warnings_size(), 0);
+  EXPECT_EQ(plain.err, "");
+}
+
+TEST(RecordingInputCli, RadiansUnderADegHeaderAreWarned) {
+  ProcessResult run;
+  const v1::ValidationResult result = validate_json(
+      {"--data", with_header("time_s,torque_nm,misalignment_deg,direction_rad,msy_nm,msz_nm")}, run);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  bool found = false;
+  for (const std::string& warning : result.warnings()) found |= warning.find("radians under a _deg header") != std::string::npos;
+  EXPECT_TRUE(found) << run.out;
+  EXPECT_NE(run.err.find("radians under a _deg header"), std::string::npos) << run.err;
+}
+
+TEST(RecordingInputCli, UnknownColumnsAreIgnoredWithANoteAndColumnsRenames) {
+  ProcessResult original;
+  const v1::ValidationResult expected = validate_json({"--data", kSweep}, original);
+  ProcessResult run;
+  const v1::ValidationResult result = validate_json(
+      {"--data", with_header("time_s,torque_nm,misalignment_rad,direction_rad,Ch3_kNm,msz_nm,Ch9,Ch10", ",7,x"),
+       "--columns", "msy_nm=Ch3_kNm"}, run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("note: ignored 2 columns of no known quantity: Ch9, Ch10"), std::string::npos) << run.err;
+  ASSERT_EQ(result.ignored_columns_size(), 2);
+  EXPECT_EQ(result.ignored_columns(1), "Ch10");
+  EXPECT_EQ(result.models(0).overall().msy().rmse_nm(), expected.models(0).overall().msy().rmse_nm());
+  EXPECT_EQ(result.models(0).compared_samples(), 1000u);
+}
+
+TEST(RecordingInputCli, UnitsInAnyCaseReadAsTheListedOnes) {
+  ProcessResult original, run;
+  const v1::ValidationResult expected = validate_json({"--data", kSweep}, original);
+  const v1::ValidationResult result = validate_json(
+      {"--data", with_header("time_S,torque_Nm,misalignment_RAD,direction_rad,msy_Nm,msz_NM")}, run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(result.models(0).overall().msz().rmse_nm(), expected.models(0).overall().msz().rmse_nm());
+}
+
+TEST(RecordingInputCli, AHeaderOnlyFileIsAnErrorNotAPerfectFit) {
+  const std::string path = temp_path("gc_header_only") + ".csv";
+  write_file(path, "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm\n");
+  for (const std::string subcommand : {"validate", "diagnose"}) {
+    const ProcessResult run = run_gearcoupling({subcommand, "--data", path, "--model", "paper"});
+    EXPECT_EQ(run.exit_code, 2) << subcommand;
+    EXPECT_EQ(run.out, "") << subcommand;
+    EXPECT_NE(run.err.find("paper compared no sample: the file has no data rows"), std::string::npos) << run.err;
+  }
+}
+
+TEST(RecordingInputCli, EverySampleBeyondTheJamAngleIsAnErrorNamingTheReason) {
+  const std::string path = temp_path("gc_beyond_jam") + ".csv";
+  write_file(path, "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm\n"
+                   "0,1e6,0.1,0,1,2\n0.1,1e6,0.1,0,1,2\n0.2,1e6,0.1,0,1,2\n");
+  const ProcessResult run = run_gearcoupling({"validate", "--data", path, "--model", "paper", "--json"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.out, "");
+  EXPECT_NE(run.err.find("the model refused all 3 samples read (first: operating_point.misalignment_rad"),
+            std::string::npos) << run.err;
+}
+
+// protobuf's JSON mapping writes 64-bit integers as strings; the counts are 32-bit now.
+TEST(RecordingInputCli, CountsInTheJsonAreNumbers) {
+  const ProcessResult run = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(std::regex_search(run.out, std::regex(R"("recording_rows": 1000,)"))) << run.out.substr(0, 300);
+  EXPECT_TRUE(std::regex_search(run.out, std::regex(R"("compared_samples": 1000,)")));
+  EXPECT_TRUE(std::regex_search(run.out, std::regex(R"("count": [0-9]+,)")));
+  EXPECT_FALSE(std::regex_search(run.out, std::regex(R"re("(count|recording_rows|compared_samples|rejected_samples|excluded_rows|line)": ")re")));
+}
+
+// Chart.js missing makes --html fail after the run: the target stays as it was.
+TEST(RecordingInputCli, AFailedHtmlLeavesNoFileAndAnOldOneUntouched) {
+  const std::string html = temp_path("gc_failed_report") + ".html";
+  ::setenv("GEARCOUPLING_CHART_JS", "/nonexistent/chart.min.js", 1);
+  const ProcessResult fresh = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper", "--html", html});
+  write_file(html, "an older report");
+  const ProcessResult over = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper", "--html", html});
+  ::unsetenv("GEARCOUPLING_CHART_JS");
+  EXPECT_NE(fresh.exit_code, 0);
+  EXPECT_NE(fresh.err.find("cannot read Chart.js"), std::string::npos) << fresh.err;
+  EXPECT_NE(over.exit_code, 0);
+  EXPECT_EQ(read_file(html), "an older report");
+  const std::filesystem::path dir = std::filesystem::path(html).parent_path();
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_FALSE(entry.path().filename().string().starts_with(std::filesystem::path(html).filename().string() + "."))
+        << "temporary file left: " << entry.path();
+  }
+  // And with Chart.js found, the report is written whole.
+  const ProcessResult good = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper", "--html", html});
+  EXPECT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_NE(read_file(html).find("</html>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gc::cli::testing
