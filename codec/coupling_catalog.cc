@@ -5,6 +5,7 @@
 #include <system_error>
 #include <vector>
 
+#include "codec/bundled_data.h"
 #include "codec/coupling_file.h"
 #include "core/model_error.h"
 
@@ -77,7 +78,7 @@ std::map<std::string, CouplingGeometry> load_coupling_catalog(const std::filesys
 std::filesystem::path default_catalog_dir() {
   const char* from_environment = std::getenv("GEARCOUPLING_CATALOG");
   if (from_environment != nullptr && *from_environment != '\0') return from_environment;
-  return GC_DEFAULT_CATALOG_DIR;
+  return bundled_data_dir("couplings");
 }
 
 }  // namespace gc::codec

@@ -17,8 +17,9 @@ std::map<std::string, CouplingGeometry> load_coupling_catalog(const std::filesys
 /// Loads one coupling file and validates it; errors name the field and the file.
 CouplingGeometry load_coupling_geometry(const std::filesystem::path& file);
 
-/// $GEARCOUPLING_CATALOG when set and not empty, else the bundled data/couplings of the source
-/// tree this was built from.
+/// $GEARCOUPLING_CATALOG when set and not empty, else the bundled couplings:
+/// bundled_data_dir("couplings") (installed share/gearcoupling/couplings, or the source tree's
+/// data/couplings for a program run from its build tree).
 std::filesystem::path default_catalog_dir();
 
 }  // namespace gc::codec

@@ -12,6 +12,7 @@ packages=(
   libjs-chart.js  # Chart.js, inlined into validate's HTML report
   chromium        # headless, checks the HTML report in the suite (tests/validation/report_browser_test.cc)
   clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
+  dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
 )
 missing=()
 for p in "${packages[@]}"; do

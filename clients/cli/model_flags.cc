@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "codec/bundled_data.h"
+
 namespace gc::cli {
 
 FlagSpec model_flag() {
@@ -13,7 +15,7 @@ FlagSpec model_flag() {
 std::filesystem::path default_models_dir() {
   const char* dir = std::getenv("GEARCOUPLING_MODELS");
   return dir != nullptr && *dir != '\0' ? std::filesystem::path(dir)
-                                        : std::filesystem::path(GC_DEFAULT_MODELS_DIR);
+                                        : codec::bundled_data_dir("models");
 }
 
 codec::ModelFile load_model_flag(const Flags& flags) {

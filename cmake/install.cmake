@@ -1,0 +1,76 @@
+# cmake --install (docs/deploy.md): the programs, the public libraries with their headers, the
+# CMake package (find_package(gearcoupling)) and pkg-config files, the bundled data, and the
+# deployment files. The .deb (cmake/package.cmake) is this install under /usr.
+include(CMakePackageConfigHelpers)
+
+set(gc_public_libraries gc_core gc_codec)
+set(gc_programs gearcoupling)
+if(GC_BUILD_SERVICE)
+  list(APPEND gc_public_libraries gc_client)
+  list(APPEND gc_programs gearcoupling-service)
+endif()
+install(TARGETS ${gc_programs})
+install(TARGETS ${gc_public_libraries} EXPORT gearcoupling-targets)
+
+# Public headers: what the public libraries' headers include, the generated ones too.
+set(gc_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/gearcoupling)
+install(DIRECTORY core codec DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
+  FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
+if(GC_BUILD_SERVICE)
+  install(DIRECTORY protocol DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
+  install(DIRECTORY clients/remote DESTINATION ${gc_include_dir}/clients
+    FILES_MATCHING PATTERN "*.h")
+  install(FILES ${PROJECT_BINARY_DIR}/idl/gearcoupling.h DESTINATION ${gc_include_dir})
+endif()
+
+# find_package(gearcoupling): the targets, and the packages their headers need.
+set(gc_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/gearcoupling)
+install(EXPORT gearcoupling-targets NAMESPACE gearcoupling:: DESTINATION ${gc_cmake_dir})
+configure_package_config_file(cmake/gearcoupling-config.cmake.in
+  ${PROJECT_BINARY_DIR}/gearcoupling-config.cmake INSTALL_DESTINATION ${gc_cmake_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/gearcoupling-config-version.cmake
+  COMPATIBILITY SameMajorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/gearcoupling-config.cmake
+  ${PROJECT_BINARY_DIR}/gearcoupling-config-version.cmake DESTINATION ${gc_cmake_dir})
+
+# pkg-config: gearcoupling-core, -codec, -client; relocatable (paths from ${pcfiledir}).
+file(RELATIVE_PATH gc_prefix_from_pcfiledir
+  ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" gc_prefix_from_pcfiledir ${gc_prefix_from_pcfiledir})
+set(gc_pc_core_requires "eigen3")
+set(gc_pc_codec_requires "gearcoupling-core protobuf")
+set(gc_pc_client_requires "gearcoupling-core CycloneDDS")
+foreach(target IN LISTS gc_public_libraries)
+  get_target_property(gc_pc_name ${target} EXPORT_NAME)
+  set(gc_pc_requires ${gc_pc_${gc_pc_name}_requires})
+  configure_file(cmake/gearcoupling.pc.in
+    ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endforeach()
+
+# Bundled couplings, models and recordings, where codec::bundled_data_dir looks for them.
+install(DIRECTORY data/couplings data/models DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling)
+install(DIRECTORY data/recordings DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling
+  PATTERN make_recordings.sh EXCLUDE)
+
+# Deployment: every Cyclone configuration and the DDS Security tools as examples; the systemd
+# unit and the default configuration in etc/gearcoupling (/etc under /usr), written at install
+# time because they name the install prefix (cmake/install_system_files.cmake).
+install(FILES deploy/cyclonedds-loopback.xml deploy/cyclonedds-lan.example.xml
+  deploy/cyclonedds-lan-multicast.xml deploy/cyclonedds-secure.example.xml deploy/service.conf
+  deploy/gearcoupling-service.service
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling/deploy)
+install(PROGRAMS deploy/security/make-security.sh
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling/deploy/security)
+install(FILES deploy/security/governance.xml
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling/deploy/security)
+install(CODE "set(GC_SOURCE_DIR \"${PROJECT_SOURCE_DIR}\")
+set(GC_BINARY_DIR \"${PROJECT_BINARY_DIR}\")
+set(GC_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
+set(GC_DOCDIR \"${CMAKE_INSTALL_DOCDIR}\")")
+install(SCRIPT cmake/install_system_files.cmake)
+
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})

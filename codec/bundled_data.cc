@@ -1,0 +1,43 @@
+#include "codec/bundled_data.h"
+
+#include <dlfcn.h>
+
+#include <array>
+#include <system_error>
+
+namespace gc::codec {
+namespace {
+
+// The folder of the file (shared library or program) this function was loaded from; empty when
+// the loader cannot say.
+std::filesystem::path loaded_from_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&loaded_from_dir), &info) == 0 ||
+      info.dli_fname == nullptr) {
+    return {};
+  }
+  std::error_code error;
+  const std::filesystem::path file = std::filesystem::absolute(info.dli_fname, error);
+  return error ? std::filesystem::path() : file.parent_path();
+}
+
+}  // namespace
+
+std::filesystem::path bundled_data_dir(std::string_view kind) {
+  const std::filesystem::path library_dir = loaded_from_dir();
+  const std::array<std::filesystem::path, 3> candidates = {
+      library_dir.empty() ? std::filesystem::path()
+                          : library_dir / GC_DATA_DIR_FROM_LIBDIR / kind,
+      std::filesystem::path(GC_SOURCE_DATA_DIR) / kind,
+      std::filesystem::path(GC_INSTALLED_DATA_DIR) / kind,
+  };
+  for (const auto& candidate : candidates) {
+    std::error_code error;
+    if (!candidate.empty() && std::filesystem::is_directory(candidate, error)) {
+      return candidate.lexically_normal();
+    }
+  }
+  return candidates.back();
+}
+
+}  // namespace gc::codec
