@@ -12,6 +12,14 @@
 namespace gc {
 namespace {
 
+/// Options with a tolerance and an iteration limit, never cancelled.
+LoadSharingOptions limits(double tolerance, int max_iterations) {
+  LoadSharingOptions options;
+  options.tolerance = tolerance;
+  options.max_iterations = max_iterations;
+  return options;
+}
+
 TEST(LoadSharing, Eq22BranchesJoinContinuously) {
   EXPECT_NEAR(load_sharing_ratio(0.4 - 1e-12), load_sharing_ratio(0.4), 2e-3);  // 0.2842 vs 0.284
   EXPECT_NEAR(load_sharing_ratio(1.0 - 1e-12), load_sharing_ratio(1.0), 1e-9);  // both 0.5
@@ -31,7 +39,7 @@ TEST(LoadSharing, Eq22IsIncreasingInX) {
 
 TEST(LoadSharing, IterationMeetsItsTolerance) {
   // Upwind at 1.5 MN·m and 0.5 deg: P_t' = 31.42 kN, C = 1.4635e9 N/m, z_o = 2.79e-5 m.
-  const LoadSharingOptions options{1e-12, 100};
+  const LoadSharingOptions options = limits(1e-12, 100);
   const double mean = 1.5e6 / (0.508 * std::cos(20 * M_PI / 180)) / 100;
   const double zo = 2.585159 * std::sin(20 * M_PI / 180) * std::pow(std::tan(0.5 * M_PI / 180), 2) /
                     (2 * std::tan(20 * M_PI / 180));
@@ -48,12 +56,12 @@ TEST(LoadSharing, AlignedCouplingSharesEqually) {
 }
 
 TEST(LoadSharing, NonConvergenceIsAnErrorNotAValue) {
-  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {1e-15, 1}), NotConverged);
+  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(1e-15, 1)), NotConverged);
 }
 
 TEST(LoadSharing, RejectsNonsenseOptions) {
-  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {0.0, 10}), InvalidInput);
-  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {1e-6, 0}), InvalidInput);
+  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(0.0, 10)), InvalidInput);
+  EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(1e-6, 0)), InvalidInput);
 }
 
 /// The InvalidInput `options` raise: its field and message.
@@ -68,36 +76,36 @@ std::pair<std::string, std::string> rejection(const LoadSharingOptions& options)
 
 TEST(LoadSharing, IterationsAreBoundedSoNoRequestRunsForever) {
   // Issue 9: 2147483647 iterations with an unreachable tolerance held a worker indefinitely.
-  const auto [field, message] = rejection({1e-9, 2147483647});
+  const auto [field, message] = rejection(limits(1e-9, 2147483647));
   EXPECT_EQ(field, "options.load_sharing.max_iterations");
   EXPECT_NE(message.find("2147483647"), std::string::npos) << message;
   EXPECT_NE(message.find("allowed [1, 10000]"), std::string::npos) << message;
-  EXPECT_EQ(rejection({1e-9, kMaxLoadSharingIterations + 1}).first,
+  EXPECT_EQ(rejection(limits(1e-9, kMaxLoadSharingIterations + 1)).first,
             "options.load_sharing.max_iterations");
-  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {1e-9, kMaxLoadSharingIterations}));
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(1e-9, kMaxLoadSharingIterations)));
 }
 
 TEST(LoadSharing, ToleranceOutsideItsRangeIsRejectedNamingIt) {
   for (double tolerance : {1e308, 2e-3, 1e-16, 1e-300, std::numeric_limits<double>::infinity(),
                            std::numeric_limits<double>::quiet_NaN()}) {
-    const auto [field, message] = rejection({tolerance, 100});
+    const auto [field, message] = rejection(limits(tolerance, 100));
     EXPECT_EQ(field, "options.load_sharing.tolerance") << tolerance;
     EXPECT_NE(message.find("allowed [1e-15, 0.001]"), std::string::npos) << message;
   }
-  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {kMinLoadSharingTolerance, 100}));
-  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, {kMaxLoadSharingTolerance, 100}));
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(kMinLoadSharingTolerance, 100)));
+  EXPECT_NO_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, limits(kMaxLoadSharingTolerance, 100)));
 }
 
 TEST(LoadSharing, CancelPredicateIsAskedBeforeEveryIterationAndStopsTheSolve) {
   int asked = 0;
-  LoadSharingOptions options{1e-15, 100};
+  LoadSharingOptions options = limits(1e-15, 100);
   options.cancelled = [&asked] { return ++asked == 2; };
   EXPECT_THROW(solve_load_sharing(31e3, 1.46e9, 2.8e-5, options), Cancelled);
   EXPECT_EQ(asked, 2);  // stopped at once, not at the end
 }
 
 TEST(LoadSharing, CancelPredicateThatNeverFiresChangesNothing) {
-  LoadSharingOptions plain{1e-12, 100};
+  LoadSharingOptions plain = limits(1e-12, 100);
   LoadSharingOptions watched = plain;
   int asked = 0;
   watched.cancelled = [&asked] {
