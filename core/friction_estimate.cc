@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "core/coupling_frame.h"
@@ -13,14 +12,6 @@
 
 namespace gc {
 namespace {
-
-// Ten significant digits, as InvalidInput prints values: a range a user can copy back.
-std::string precise(double value) {
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
 
 void validate(const CouplingGeometry& coupling, const FrictionMeasurement& measurement) {
   require_positive("measurement.torque_nm", measurement.torque_nm);
@@ -52,7 +43,7 @@ void validate(const CouplingGeometry& coupling, const FrictionMeasurement& measu
   const double a = (lo - rest) / coefficient - offset;
   const double b = (hi - rest) / coefficient - offset;
   std::string allowed = "[";  // appended, not "[" + ...: GCC 12's -Wrestrict misfires on that (PR 105651)
-  allowed += precise(std::min(a, b)) + ", " + precise(std::max(a, b)) +
+  allowed += format_precise(std::min(a, b)) + ", " + format_precise(std::max(a, b)) +
       "] N·m, the range that makes eq 4's mu = M_tz''/T - tan(zeta) a friction coefficient in "
       "[0, 1] with the other inputs as given; these give mu = " + format_number(mu);
   throw InvalidInput(blame_z ? "measurement.sensor_moment_z_nm" : "measurement.sensor_moment_y_nm",

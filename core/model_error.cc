@@ -6,20 +6,20 @@
 namespace gc {
 namespace {
 
+std::string describe(const std::string& field, double value, const std::string& allowed) {
+  return field + " = " + format_precise(value) + " is out of range: allowed " + allowed;
+}
+
+}  // namespace
+
 // Ten significant digits: what a user typed reads back as typed ("-0.1", not
 // "-0.10000000000000001"), and values differing in the tenth digit still differ.
-std::string format_value(double value) {
+std::string format_precise(double value) {
   std::ostringstream out;
   out.precision(10);
   out << value;
   return out.str();
 }
-
-std::string describe(const std::string& field, double value, const std::string& allowed) {
-  return field + " = " + format_value(value) + " is out of range: allowed " + allowed;
-}
-
-}  // namespace
 
 std::string format_number(double value) {
   std::ostringstream out;
@@ -35,7 +35,7 @@ InvalidInput::InvalidInput(std::string field, std::string message)
 
 void require_in_range(std::string_view field, double value, double lo, double hi) {
   if (!std::isfinite(value) || value < lo || value > hi) {
-    throw InvalidInput(std::string(field), value, "[" + format_value(lo) + ", " + format_value(hi) + "]");
+    throw InvalidInput(std::string(field), value, "[" + format_precise(lo) + ", " + format_precise(hi) + "]");
   }
 }
 

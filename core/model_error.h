@@ -44,6 +44,9 @@ class Cancelled : public ModelError {
 
 /// A number for an error message: 6 significant digits, no trailing zeros ("0.00064").
 std::string format_number(double value);
+/// A value as InvalidInput prints it: 10 significant digits, so what a user typed reads back as
+/// typed and a range can be copied back exactly.
+std::string format_precise(double value);
 
 /// Throws InvalidInput unless `value` is finite and lo <= value <= hi (bounds inclusive).
 void require_in_range(std::string_view field, double value, double lo, double hi);
