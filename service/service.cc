@@ -351,6 +351,7 @@ void Service::log_stats() const {
                         s.p50_service_time_s * 1e6, s.p99_service_time_s * 1e6);
   }
   const AdmissionDrops drops = reply_writers_.drops();
+  if (!line.empty()) line.pop_back();  // the last calculation's ';': the format adds one
   spdlog::info("stats: clients={} queued={} parked={} backlog={}{}; dropped before work: "
                "unmatched={} parked_full={} departed={} forged={}; replies written late={} dropped={}",
                reply_writers_.clients(), pool_.queued(), reply_writers_.parked(),
