@@ -22,20 +22,10 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "fuzz/fuzz_checks.h"
+#include "fuzz/scratch_file.h"
 #include "fuzz/load_cases.h"
 
 namespace {
-
-const std::filesystem::path& scratch_file() {
-  static const std::filesystem::path path = std::filesystem::temp_directory_path() /
-      ("gc_coupling_fuzz_" + std::to_string(::getpid()) + ".textproto");
-  return path;
-}
-
-void remove_scratch_file() {
-  std::error_code ignored;
-  std::filesystem::remove(scratch_file(), ignored);
-}
 
 void run_load_case(const gc::CouplingGeometry& coupling, const gc::OperatingPoint& point) {
   gc::fuzz::expect_result_or<gc::InvalidInput, gc::NotConverged>([&] {
@@ -47,19 +37,12 @@ void run_load_case(const gc::CouplingGeometry& coupling, const gc::OperatingPoin
 
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::atexit(remove_scratch_file);
-  return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  {
-    std::ofstream out(scratch_file(), std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  const gc::fuzz::ScratchFile scratch("gc_coupling_fuzz", ".textproto", data, size);
+  const std::filesystem::path& input = scratch.path();
   std::optional<gc::CouplingGeometry> coupling;
   gc::fuzz::expect_result_or<gc::InvalidInput>(
-      [&] { coupling.emplace(gc::codec::load_coupling_geometry(scratch_file())); });
+      [&] { coupling.emplace(gc::codec::load_coupling_geometry(input)); });
   if (!coupling) return 0;
   gc::fuzz::check(coupling->jam_angle());
   gc::fuzz::check_finite("crown_radius_m", coupling->crown_radius_m());

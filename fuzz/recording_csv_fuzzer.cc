@@ -19,19 +19,9 @@
 
 #include "analysis/recording_csv.h"
 #include "fuzz/fuzz_checks.h"
+#include "fuzz/scratch_file.h"
 
 namespace {
-
-const std::filesystem::path& scratch_file() {
-  static const std::filesystem::path path = std::filesystem::temp_directory_path() /
-      ("gc_recording_fuzz_" + std::to_string(::getpid()) + ".csv");
-  return path;
-}
-
-void remove_scratch_file() {
-  std::error_code ignored;
-  std::filesystem::remove(scratch_file(), ignored);
-}
 
 void check_optional(const char* name, const std::optional<double>& value) {
   if (value) gc::fuzz::check_finite(name, *value);
@@ -80,16 +70,9 @@ void read_all(const std::filesystem::path& path) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::atexit(remove_scratch_file);
-  return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  {
-    std::ofstream out(scratch_file(), std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
-  gc::fuzz::expect_result_or<gc::InvalidInput>([] { read_all(scratch_file()); });
+  const gc::fuzz::ScratchFile scratch("gc_recording_fuzz", ".csv", data, size);
+  const std::filesystem::path& input = scratch.path();
+  gc::fuzz::expect_result_or<gc::InvalidInput>([&] { read_all(input); });
   return 0;
 }
