@@ -86,6 +86,12 @@ CouplingDefinition parse_coupling_text(std::string_view text, std::string_view s
   return from_message(message);
 }
 
+CouplingDefinition parse_coupling_json(std::string_view json, std::string_view source_name) {
+  gearcoupling::v1::CouplingDefinition message;
+  return parse_coupling_text(text_format_from_json(json, source_name, "coupling", message),
+                             source_name);
+}
+
 CouplingDefinition load_coupling_file(const std::filesystem::path& path) {
   return parse_coupling_text(read_text_file(path, "coupling"), path.filename().string());
 }

@@ -17,6 +17,10 @@ namespace gc::codec {
 /// here: gc::CouplingGeometry does that.
 CouplingDefinition parse_coupling_text(std::string_view text, std::string_view source_name);
 
+/// Parses one coupling given as JSON with the file's fields (protobuf's JSON mapping of
+/// gearcoupling.v1.CouplingDefinition, e.g. a Python dict): the same checks and errors as the text.
+CouplingDefinition parse_coupling_json(std::string_view json, std::string_view source_name);
+
 /// Reads and parses `path`; errors name the file by its file name.
 CouplingDefinition load_coupling_file(const std::filesystem::path& path);
 

@@ -1,7 +1,10 @@
 #include "codec/model_file.h"
 
+#include <cstdlib>
+
 #include <google/protobuf/text_format.h>
 
+#include "codec/bundled_data.h"
 #include "codec/coupling_catalog.h"
 #include "codec/text_format.h"
 #include "core/effects/effect_registry.h"
@@ -106,6 +109,19 @@ ModelFile parse_model_text(std::string_view text, std::string_view source_name,
   } catch (const InvalidInput& error) {
     rethrow_in(error, "model." + error.field(), source_name);
   }
+}
+
+ModelFile parse_model_json(std::string_view json, std::string_view source_name,
+                           const std::filesystem::path& catalog_dir,
+                           const std::filesystem::path& base_dir) {
+  v1::ModelConfig message;
+  return parse_model_text(text_format_from_json(json, source_name, "model", message), source_name,
+                          catalog_dir, base_dir);
+}
+
+std::filesystem::path default_models_dir() {
+  const char* dir = std::getenv("GEARCOUPLING_MODELS");
+  return dir != nullptr && *dir != '\0' ? std::filesystem::path(dir) : bundled_data_dir("models");
 }
 
 ModelFile load_model_description(const std::filesystem::path& path,

@@ -28,6 +28,16 @@ ModelFile parse_model_text(std::string_view text, std::string_view source_name,
                            const std::filesystem::path& catalog_dir,
                            const std::filesystem::path& base_dir);
 
+/// Parses a model configuration given as JSON with the file's fields (protobuf's JSON mapping of
+/// gearcoupling.v1.ModelConfig, e.g. a Python dict): the same checks and errors as the text.
+ModelFile parse_model_json(std::string_view json, std::string_view source_name,
+                           const std::filesystem::path& catalog_dir,
+                           const std::filesystem::path& base_dir);
+
+/// $GEARCOUPLING_MODELS when set and not empty, else the bundled models
+/// (bundled_data_dir("models")): where a model named without a path is looked up.
+std::filesystem::path default_models_dir();
+
 /// Reads and parses `path`; errors name the file by its file name.
 ModelFile load_model_description(const std::filesystem::path& path,
                                  const std::filesystem::path& catalog_dir);

@@ -5,6 +5,7 @@
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
+#include <google/protobuf/util/json_util.h>
 
 #include "core/model_error.h"
 
@@ -64,6 +65,19 @@ void parse_text_format(std::string_view text, std::string_view source_name,
     throw InvalidInput(root, std::string(source_name) + ": not a " +
                                  message.GetDescriptor()->name() + " text proto");
   }
+}
+
+std::string text_format_from_json(std::string_view json, std::string_view source_name,
+                                  const std::string& root, pb::Message& message) {
+  message.Clear();
+  const auto status = pb::util::JsonStringToMessage(pb::StringPiece(json.data(), json.size()), &message);
+  if (!status.ok()) {
+    throw InvalidInput(root, std::string(source_name) + ": not a " + message.GetDescriptor()->name() +
+                                 ": " + std::string(status.message()));
+  }
+  std::string text;
+  pb::TextFormat::PrintToString(message, &text);
+  return text;
 }
 
 std::string read_text_file(const std::filesystem::path& path, const std::string& root) {

@@ -5,12 +5,12 @@
 
 #include "analysis/atomic_file.h"
 #include "analysis/diagnosis_summary.h"
+#include "analysis/model_diagnosis.h"
 #include "analysis/recording_csv.h"
 #include "analysis/validation_result.h"
 #include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
-#include "codec/diagnosis_messages.h"
 #include "core/diagnosis/diagnose.h"
 #include "parallel/thread_parallel_for.h"
 
@@ -34,19 +34,9 @@ std::vector<FlagSpec> diagnose_flags() {
 
 /// The model with every effect the diagnosis added, as a model file.
 void write_model(const std::string& path, const codec::ModelFile& file, const Diagnosis& diagnosis) {
-  CouplingModel model = file.model;
-  std::string added;
-  for (const auto& effect : diagnosis.added) {
-    model = model.with_effect(effect);
-    added += (added.empty() ? "" : ", ") + effect->name();
-  }
-  std::string description = file.description;
-  if (!added.empty()) {
-    if (!description.empty() && !description.ends_with('.')) description += '.';
-    description += (description.empty() ? "" : " ") + std::string("Added or refined by diagnose: ") + added + ".";
-  }
+  const codec::ModelFile diagnosed = analysis::diagnosed_model(file, diagnosis);
   analysis::write_file_atomically(
-      path, codec::write_model_text(file.name + (added.empty() ? "" : "_diagnosed"), description, file.coupling, model),
+      path, codec::write_model_text(diagnosed.name, diagnosed.description, diagnosed.coupling, diagnosed.model),
       "--write-model");
 }
 
@@ -59,11 +49,8 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
                                      recording.excluded_rows, recording.samples.size(), check.first_refusal);
   const Diagnosis diagnosis =
       diagnose(model.model, recording.samples, thread_parallel_for(flags.integer("threads", 1, 1024)));
-  gearcoupling::v1::DiagnosisResult result = codec::to_message(diagnosis);
-  result.set_recording(flags.text("data"));
-  result.set_model(model.name);
-  for (const std::string& warning : check.warnings) result.add_warnings(warning);
-  for (const std::string& column : recording.ignored_columns) result.add_ignored_columns(column);
+  gearcoupling::v1::DiagnosisResult result =
+      analysis::diagnosis_result(diagnosis, flags.text("data"), model.name, check, recording);
   if (!flags.text("write-model").empty()) {
     write_model(flags.text("write-model"), model, diagnosis);
     result.set_written_model(flags.text("write-model"));

@@ -1,9 +1,5 @@
 #include "clients/cli/model_flags.h"
 
-#include <cstdlib>
-
-#include "codec/bundled_data.h"
-
 namespace gc::cli {
 
 FlagSpec model_flag() {
@@ -12,11 +8,7 @@ FlagSpec model_flag() {
           std::nullopt};
 }
 
-std::filesystem::path default_models_dir() {
-  const char* dir = std::getenv("GEARCOUPLING_MODELS");
-  return dir != nullptr && *dir != '\0' ? std::filesystem::path(dir)
-                                        : codec::bundled_data_dir("models");
-}
+std::filesystem::path default_models_dir() { return codec::default_models_dir(); }
 
 codec::ModelFile load_model_flag(const Flags& flags) {
   const std::string& model = flags.text("model");

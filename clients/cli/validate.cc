@@ -1,12 +1,11 @@
 // gearcoupling validate: a recording against a model. Metrics per channel, where the model
 // fails, a terminal summary, --json, and a self-contained HTML report.
-#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "analysis/before_after_summary.h"
-#include "analysis/effect_spec.h"
+#include "analysis/model_validation.h"
 #include "analysis/validation_report_html.h"
 #include "analysis/validation_result.h"
 #include "analysis/validation_run.h"
@@ -19,11 +18,8 @@ namespace gc::cli {
 namespace {
 
 using analysis::ModelRun;
-using analysis::parse_effect_spec;
 using analysis::print_before_after;
 using analysis::print_validation_summary;
-using analysis::RecordingSummary;
-using analysis::run_validation;
 
 namespace v1 = gearcoupling::v1;
 
@@ -44,22 +40,11 @@ std::vector<FlagSpec> validate_flags() {
 
 int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
-  BinningOptions binning;
-  binning.reference_torque_nm = flags.number("reference-torque");
-  binning.jam_angle_rad = model.model.geometry().jam_angle().angle_rad;
-  std::vector<ModelRun> runs;
-  runs.push_back({model.name, &model.model, ValidationAccumulator(binning), PointSampler()});
-  // --add: the same recording through the model with one more effect, compared side by side.
-  std::optional<CouplingModel> with_added;
-  if (!flags.text("add").empty()) {
-    const auto effect = parse_effect_spec(flags.text("add"));
-    with_added.emplace(model.model.with_effect(effect));
-    runs.push_back({model.name + " + " + effect->name(), &*with_added, ValidationAccumulator(binning),
-                    PointSampler()});
-  }
-  const RecordingSummary recording = run_validation(
-      flags.text("data"), runs, {flags.integer("threads", 1, 1024), 1u << 15, column_renames(flags)});
-  const v1::ValidationResult result = analysis::validation_result(recording, runs, binning);
+  const auto validation = analysis::validate_model(
+      flags.text("data"), model, flags.text("add"), flags.number("reference-torque"),
+      {flags.integer("threads", 1, 1024), 1u << 15, column_renames(flags)});
+  const v1::ValidationResult& result = validation->result;
+  const std::vector<ModelRun>& runs = validation->runs;
   print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},
                         {result.warnings().begin(), result.warnings().end()});
   analysis::require_compared_samples(result);

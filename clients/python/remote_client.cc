@@ -1,0 +1,261 @@
+// gearcoupling.Client: the calculations through gearcoupling-service (clients/remote/client.h,
+// public methods only). Vectorised calls keep `in_flight` load cases' requests outstanding at
+// once (the service spreads them over its threads and instances), the GIL released while waiting.
+#include <chrono>
+#include <deque>
+#include <future>
+#include <memory>
+
+#include <pybind11/stl.h>
+
+#include "clients/python/bindings.h"
+#include "clients/python/case_arrays.h"
+#include "clients/python/coupling_argument.h"
+#include "clients/python/result_object.h"
+#include "clients/remote/client.h"
+#include "core/model_error.h"
+
+namespace py = pybind11;
+
+namespace gc::python {
+namespace {
+
+using protocol::Calculation;
+
+struct Client {
+  std::shared_ptr<client::Client> client;
+};
+
+protocol::CouplingRef coupling_ref(const RemoteCoupling& coupling) {
+  if (coupling.catalogue_name) return protocol::CatalogueName{*coupling.catalogue_name};
+  return coupling.inline_coupling->geometry->definition();
+}
+
+std::shared_ptr<client::Client> make_client(int domain, double timeout_s) {
+  if (!(timeout_s > 0.0 && timeout_s <= 86400.0)) {
+    throw InvalidInput("timeout", timeout_s, "(0, 86400] s");
+  }
+  client::ClientOptions options;
+  options.domain = domain;
+  options.timeout = std::chrono::milliseconds(static_cast<long long>(timeout_s * 1000.0 + 0.5));
+  py::gil_scoped_release release;
+  return std::make_shared<client::Client>(options);
+}
+
+template <Calculation kCalculation>
+auto call(const Client& self, const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+  py::gil_scoped_release release;
+  return self.client->call<kCalculation>(request);
+}
+
+// ---- one case ---------------------------------------------------------------------------------
+
+py::object tooth_contact(const Client& self, py::handle coupling, double torque_nm,
+                         double misalignment_rad, double direction_rad, double mu, int slices,
+                         double tolerance, int max_iterations) {
+  const RemoteCoupling c = remote_coupling_argument(coupling);
+  const OperatingPoint point{torque_nm, misalignment_rad, direction_rad, mu};
+  const ToothContact contact = call<Calculation::kToothContact>(
+      self, {coupling_ref(c), point, contact_options(slices, tolerance, max_iterations)});
+  return tooth_contact_result(c.name, point, contact);
+}
+
+// Both requests in flight at once, as the CLI's --remote does; the service computes the moments
+// from the same contact.
+analysis::LoadCase load_case(client::Client& client, const protocol::CouplingRef& ref,
+                             const OperatingPoint& point, const ContactOptions& options) {
+  auto contact = client.call_async<Calculation::kToothContact>({ref, point, options});
+  auto moments = client.call_async<Calculation::kInducedMoments>({ref, point, options});
+  return {contact.get(), moments.get()};
+}
+
+py::object induced_moments(const Client& self, py::handle coupling, double torque_nm,
+                           double misalignment_rad, double direction_rad, double mu, int slices,
+                           double tolerance, int max_iterations) {
+  const RemoteCoupling c = remote_coupling_argument(coupling);
+  const OperatingPoint point{torque_nm, misalignment_rad, direction_rad, mu};
+  const protocol::CouplingRef ref = coupling_ref(c);
+  analysis::LoadCase result;
+  {
+    py::gil_scoped_release release;
+    result = load_case(*self.client, ref, point, contact_options(slices, tolerance, max_iterations));
+  }
+  return induced_moments_result(c.name, point, result.contact, result.moments);
+}
+
+py::object jam_angle(const Client& self, py::handle coupling) {
+  const RemoteCoupling c = remote_coupling_argument(coupling);
+  const protocol::JamAngleResult result = call<Calculation::kJamAngle>(self, {coupling_ref(c)});
+  return jam_angle_result(c.name, result.jam, result.crown_radius_m, result.crown_radius_derived);
+}
+
+py::object restoring_torque(const Client& self, py::handle coupling) {
+  const RemoteCoupling c = remote_coupling_argument(coupling);
+  return restoring_torque_result(c.name, call<Calculation::kRestoringTorque>(self, {coupling_ref(c)}));
+}
+
+py::object estimate_friction(const Client& self, py::handle coupling, double torque_nm,
+                             double misalignment_rad, double direction_rad,
+                             double sensor_moment_y_nm, double sensor_moment_z_nm) {
+  const RemoteCoupling c = remote_coupling_argument(coupling);
+  const FrictionMeasurement measurement{torque_nm, misalignment_rad, direction_rad,
+                                        sensor_moment_y_nm, sensor_moment_z_nm};
+  return friction_estimate_result(
+      c.name, measurement, call<Calculation::kFrictionEstimate>(self, {coupling_ref(c), measurement}));
+}
+
+// ---- many cases -------------------------------------------------------------------------------
+
+// Sends case after case, keeping at most `in_flight` outstanding: when the window is full, the
+// oldest case's replies are collected first. `send(i)` returns a callable giving case i's result
+// (or throwing its error).
+template <typename Result, typename Send>
+py::dict run_remote_cases(const std::vector<Column<Result>>& columns, std::size_t count,
+                          std::size_t in_flight, FailedCases failed, const Send& send) {
+  if (in_flight < 1 || in_flight > 100000) {
+    throw InvalidInput("in_flight", static_cast<double>(in_flight), "[1, 100000]");
+  }
+  CaseArrays<Result> arrays(columns, count);
+  {
+    py::gil_scoped_release release;
+    using Pending = decltype(send(std::size_t{0}));
+    std::deque<std::pair<std::size_t, Pending>> window;
+    const auto collect_oldest = [&] {
+      auto& [index, pending] = window.front();
+      try {
+        arrays.set(index, pending());
+      } catch (const std::exception&) {
+        arrays.fail(index, std::current_exception());
+      }
+      window.pop_front();
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      if (window.size() >= in_flight) collect_oldest();
+      try {
+        window.emplace_back(i, send(i));
+      } catch (const std::exception&) {
+        arrays.fail(i, std::current_exception());
+      }
+    }
+    while (!window.empty()) collect_oldest();
+  }
+  return arrays.finish(failed);
+}
+
+// A future's result, called once.
+template <typename T>
+auto getter(std::future<T> future) {
+  return [f = std::make_shared<std::future<T>>(std::move(future))] { return f->get(); };
+}
+
+py::dict tooth_contact_many(const Client& self, py::handle coupling, py::handle torque_nm,
+                            py::handle misalignment_rad, py::handle direction_rad, int slices,
+                            double tolerance, int max_iterations, std::size_t in_flight,
+                            const std::string& errors) {
+  const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
+  const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad"},
+                      {torque_nm, misalignment_rad, direction_rad});
+  const ContactOptions options = contact_options(slices, tolerance, max_iterations);
+  client::Client& client = *self.client;
+  return run_remote_cases(tooth_contact_columns(), in.size(), in_flight, failed_cases_argument(errors),
+                          [&](std::size_t i) {
+                            const OperatingPoint point{in(0, i), in(1, i), in(2, i), 0.0};
+                            return getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
+                          });
+}
+
+py::dict induced_moments_many(const Client& self, py::handle coupling, py::handle torque_nm,
+                              py::handle misalignment_rad, py::handle direction_rad, py::handle mu,
+                              int slices, double tolerance, int max_iterations, std::size_t in_flight,
+                              const std::string& errors) {
+  const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
+  const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "mu"},
+                      {torque_nm, misalignment_rad, direction_rad, mu});
+  const ContactOptions options = contact_options(slices, tolerance, max_iterations);
+  client::Client& client = *self.client;
+  return run_remote_cases(
+      load_case_columns(), in.size(), in_flight, failed_cases_argument(errors), [&](std::size_t i) {
+        const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
+        auto contact = getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
+        auto moments = getter(client.call_async<Calculation::kInducedMoments>({ref, point, options}));
+        return [contact, moments] { return analysis::LoadCase{contact(), moments()}; };
+      });
+}
+
+py::dict estimate_friction_many(const Client& self, py::handle coupling, py::handle torque_nm,
+                                py::handle misalignment_rad, py::handle direction_rad,
+                                py::handle sensor_moment_y_nm, py::handle sensor_moment_z_nm,
+                                std::size_t in_flight, const std::string& errors) {
+  const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
+  const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "sensor_moment_y_nm",
+                       "sensor_moment_z_nm"},
+                      {torque_nm, misalignment_rad, direction_rad, sensor_moment_y_nm, sensor_moment_z_nm});
+  client::Client& client = *self.client;
+  return run_remote_cases(friction_estimate_columns(), in.size(), in_flight,
+                          failed_cases_argument(errors), [&](std::size_t i) {
+                            const FrictionMeasurement m{in(0, i), in(1, i), in(2, i), in(3, i), in(4, i)};
+                            return getter(client.call_async<Calculation::kFrictionEstimate>({ref, m}));
+                          });
+}
+
+bool wait_for_service(const Client& self, double timeout_s) {
+  py::gil_scoped_release release;
+  return self.client->wait_for_service(
+      Calculation::kToothContact, std::chrono::milliseconds(static_cast<long long>(timeout_s * 1000.0)));
+}
+
+py::dict counters(const Client& self) {
+  const client::ClientCounters c = self.client->counters();
+  py::dict out;
+  out["sent"] = c.sent;
+  out["replies"] = c.replies;
+  out["resent"] = c.resent;
+  out["duplicates"] = c.duplicates;
+  out["foreign"] = c.foreign;
+  out["timeouts"] = c.timeouts;
+  return out;
+}
+
+}  // namespace
+
+void bind_client(py::module_& m) {
+  constexpr std::size_t kInFlight = 256;
+  py::class_<Client>(m, "Client",
+                     "The calculations through gearcoupling-service over DDS (the network from "
+                     "$CYCLONEDDS_URI). Same calls and results as in process; thread-safe.")
+      .def(py::init([](int domain, double timeout) { return Client{make_client(domain, timeout)}; }),
+           py::arg("domain") = 0, py::arg("timeout") = 5.0,
+           "domain: DDS domain id [0, 232]; timeout: longest a call waits for its reply, discovery "
+           "included [s].")
+      .def("tooth_contact", &tooth_contact, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu") = 0.0,
+           GC_PYTHON_CONTACT_OPTION_ARGS, "gearcoupling.tooth_contact on the service.")
+      .def("induced_moments", &induced_moments, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
+           GC_PYTHON_CONTACT_OPTION_ARGS, "gearcoupling.induced_moments on the service.")
+      .def("jam_angle", &jam_angle, py::arg("coupling"), "gearcoupling.jam_angle on the service.")
+      .def("restoring_torque", &restoring_torque, py::arg("coupling"),
+           "gearcoupling.restoring_torque on the service.")
+      .def("estimate_friction", &estimate_friction, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
+           py::arg("sensor_moment_z_nm"), "gearcoupling.estimate_friction on the service.")
+      .def("tooth_contact_many", &tooth_contact_many, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(),
+           GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("in_flight") = kInFlight, py::arg("errors") = "raise",
+           "gearcoupling.tooth_contact_many on the service, in_flight cases outstanding at once.")
+      .def("induced_moments_many", &induced_moments_many, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
+           GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("in_flight") = kInFlight, py::arg("errors") = "raise",
+           "gearcoupling.induced_moments_many on the service, in_flight cases (two requests each) "
+           "outstanding at once.")
+      .def("estimate_friction_many", &estimate_friction_many, py::arg("coupling"), py::arg("torque_nm"),
+           py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
+           py::arg("sensor_moment_z_nm"), py::kw_only(), py::arg("in_flight") = kInFlight,
+           py::arg("errors") = "raise",
+           "gearcoupling.estimate_friction_many on the service, in_flight cases outstanding at once.")
+      .def("wait_for_service", &wait_for_service, py::arg("timeout"),
+           "Waits until an instance is ready (at most timeout [s]); False if none was.")
+      .def("counters", &counters, "What happened to this client's requests so far.");
+}
+
+}  // namespace gc::python
