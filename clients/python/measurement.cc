@@ -186,7 +186,7 @@ py::object validate(py::handle recording_argument, py::handle model_argument_, c
     validation = analysis::validate_model(
         recording.path, *model.file, add, reference_torque_nm,
         {static_cast<int>(threads_argument(threads)), 1u << 15, recording.renames});
-    validation->result.set_recording(recording.source);
+    if (recording.scratch) validation->result.set_recording(recording.source);  // not the scratch file
     analysis::require_compared_samples(validation->result);
     if (html) {
       analysis::write_validation_report(*html, analysis::validation_report(validation->result, validation->runs));

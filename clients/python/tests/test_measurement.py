@@ -1,0 +1,96 @@
+"""Model against measurement: validate and diagnose equal the CLI's --json; recordings from a
+file or a pandas DataFrame; models from a name, a file or a dict, with an effect added, written."""
+
+import pandas as pd
+import pytest
+
+import gearcoupling as gc
+from conftest import DATA
+
+SWEEP = str(DATA / "recordings" / "paper_torque_sweep.csv")
+ECCENTRIC = str(DATA / "recordings" / "hidden_eccentricity_torque_ramp.csv")
+
+
+def test_validate_equals_cli_json(cli):
+    result = gc.validate(SWEEP, "paper", threads=2)
+    assert isinstance(result, gc.ValidationResult)
+    assert result.to_json().encode() == cli("validate", "--data", SWEEP, "--model", "paper", "--json", "-j", "2")
+
+
+def test_validate_with_added_effect_equals_cli_json(cli):
+    result = gc.validate(SWEEP, "paper", add="hysteresis=lag_rad=6e-4", reference_torque_nm=2e6)
+    expected = cli("validate", "--data", SWEEP, "--model", "paper", "--add", "hysteresis=lag_rad=6e-4",
+                   "--reference-torque", "2e6", "--json")
+    assert result.to_json().encode() == expected
+    assert len(result.models) == 2
+
+
+def test_data_frame_validates_as_its_file():
+    frame = pd.read_csv(SWEEP, float_precision="round_trip")
+    from_frame = gc.validate(frame, "paper").to_dict()
+    from_file = gc.validate(SWEEP, "paper").to_dict()
+    assert from_frame.pop("recording") == "<DataFrame>"
+    from_file.pop("recording")
+    assert from_frame == from_file
+
+
+def test_read_recording_from_file_and_frame():
+    recording = gc.read_recording(SWEEP)
+    assert len(recording) == recording.rows_read == 1000
+    assert recording.excluded_rows == 0
+    arrays = recording.to_arrays()
+    frame = pd.read_csv(SWEEP, float_precision="round_trip")
+    assert (arrays["torque_nm"] == frame["torque_nm"].to_numpy()).all()
+    assert (arrays["msy_nm"] == frame["msy_nm"].to_numpy()).all()
+    from_frame = gc.read_recording(frame).to_arrays()
+    for column in arrays:
+        assert (from_frame[column] == arrays[column]).all(), column
+
+
+def test_malformed_rows_are_reported(tmp_path):
+    frame = pd.read_csv(SWEEP, float_precision="round_trip").head(50).astype(object)
+    frame.loc[7, "msz_nm"] = "n/a"
+    recording = gc.read_recording(frame)
+    assert recording.excluded_rows == 1
+    assert recording.problems[0]["line"] == 9  # header is line 1
+    assert recording.problems[0]["column_name"] == "msz_nm"
+
+
+def test_missing_column_names_the_field():
+    frame = pd.read_csv(SWEEP, float_precision="round_trip").drop(columns=["msz_nm"])
+    with pytest.raises(gc.InvalidInput) as error:
+        gc.read_recording(frame)
+    assert "msz" in error.value.field
+
+
+def test_diagnose_equals_cli_json_and_model_file(cli, tmp_path):
+    ours, theirs = tmp_path / "ours.textproto", tmp_path / "theirs.textproto"
+    result = gc.diagnose(ECCENTRIC, "paper", write_model=str(ours), threads=2)
+    expected = cli("diagnose", "--data", ECCENTRIC, "--model", "paper", "--write-model", str(theirs),
+                   "--json", "-j", "2")
+    assert result.to_json().replace(str(ours), str(theirs)).encode() == expected
+    assert ours.read_text() == theirs.read_text()
+    assert "eccentricity" in result.model.effects
+    assert result.model.to_text() == ours.read_text()
+
+
+def test_model_sources_and_effects(tmp_path):
+    paper = gc.Model("paper")
+    assert paper.name == "paper" and paper.coupling == "nrel_upwind"
+    assert gc.Model(DATA / "models" / "paper.textproto").to_text() == paper.to_text()
+    as_dict = {"name": "mine", "coupling": "nrel_upwind",
+               "effects": [{"name": "friction", "parameters": [{"name": "mu0", "value": 0.08}]}]}
+    mine = gc.Model(as_dict)
+    assert mine.effects == ["friction"]
+    assert mine.effect_parameters("friction")["mu0"] == 0.08
+    added = paper.with_effect("hysteresis=lag_rad=6e-4")
+    assert added.effects[-1] == "hysteresis"
+    assert "hysteresis" not in paper.effects
+    path = tmp_path / "added.textproto"
+    added.write(path)
+    assert gc.Model(str(path)).to_text() == added.to_text()
+    with pytest.raises(gc.InvalidInput) as error:
+        paper.with_effect("hysteresis=lag_rad=-1")
+    assert error.value.field.startswith("effects.hysteresis")
+    with pytest.raises(gc.InvalidInput):
+        gc.Model({"name": "x", "coupling": "nowhere"})
