@@ -7,6 +7,7 @@
 #include "core/model_error.h"
 #ifdef GC_PYTHON_REMOTE
 #include "clients/remote/client_error.h"
+#include "protocol/reply_status.h"
 #endif
 
 namespace py = pybind11;
@@ -41,6 +42,12 @@ py::object classify(const std::exception_ptr& error, std::string& message, py::o
     message = e.what();
     field = py::str(e.field());
     return types().invalid_input;
+#ifdef GC_PYTHON_REMOTE
+  } catch (const protocol::ServiceError& e) {  // the service's own refusal (unknown coupling, ...)
+    message = e.what();
+    if (!e.field().empty()) field = py::str(e.field());
+    return types().model_error;
+#endif
   } catch (const NotConverged& e) {
     message = e.what();
     return types().not_converged;

@@ -1,0 +1,99 @@
+"""Through gearcoupling-service equals in process: a real service on this test's own DDS
+domain, loopback only (deploy/cyclonedds-loopback.xml), as tests/service/ runs it."""
+
+import os
+import signal
+import subprocess
+
+import numpy as np
+import pytest
+
+import gearcoupling as gc
+from conftest import DATA, SOURCE_DIR, rad
+
+if not hasattr(gc, "Client"):
+    pytest.skip("built without the service", allow_module_level=True)
+
+
+@pytest.fixture(scope="module")
+def client():
+    binary = os.environ.get("GC_SERVICE")
+    if not binary:
+        pytest.skip("GC_SERVICE not set (run through ctest)")
+    domain = 1 + os.getpid() % 200  # as tests/service/service_process.h: one domain per process
+    os.environ["CYCLONEDDS_URI"] = f"file://{SOURCE_DIR}/deploy/cyclonedds-loopback.xml"
+    service = subprocess.Popen([binary, "--domain", str(domain), "--log-level", "warn"])
+    try:
+        client = gc.Client(domain=domain, timeout=20.0)
+        assert client.wait_for_service(20.0), "no service instance within 20 s"
+        yield client
+    finally:
+        service.send_signal(signal.SIGTERM)
+        try:
+            service.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            service.kill()
+            service.wait()
+
+
+def test_one_case_equals_in_process(client):
+    point = dict(torque_nm=1.5e6, misalignment_rad=rad(0.45), direction_rad=rad(20.0))
+    assert client.tooth_contact("nrel_upwind", **point).to_json() == gc.tooth_contact("nrel_upwind", **point).to_json()
+    assert (client.induced_moments("nrel_downwind", **point, mu=0.12).to_json()
+            == gc.induced_moments("nrel_downwind", **point, mu=0.12).to_json())
+    for coupling in ("nrel_upwind", "nrel_downwind"):
+        assert client.jam_angle(coupling).to_json() == gc.jam_angle(coupling).to_json()
+        assert client.restoring_torque(coupling).to_json() == gc.restoring_torque(coupling).to_json()
+    measured = (1.5e6, rad(0.45), 0.1, -62000.0, 136000.0)
+    assert (client.estimate_friction("nrel_upwind", *measured).to_json()
+            == gc.estimate_friction("nrel_upwind", *measured).to_json())
+
+
+def test_inline_couplings_equal_in_process(client):
+    path = DATA / "couplings" / "nrel_downwind.textproto"
+    assert client.jam_angle(path).to_json() == gc.jam_angle(path).to_json()
+    coupling = gc.Coupling(str(path))
+    point = dict(torque_nm=8e5, misalignment_rad=rad(0.2), mu=0.05)
+    assert client.induced_moments(coupling, **point).to_json() == gc.induced_moments(coupling, **point).to_json()
+
+
+def test_many_equal_in_process(client):
+    rng = np.random.default_rng(7)
+    n = 300
+    torque = rng.uniform(2e5, 2.5e6, n)
+    zeta = rng.uniform(0.0, rad(0.6), n)
+    beta = rng.uniform(-np.pi, np.pi, n)
+    mu = rng.uniform(0.0, 0.3, n)
+    remote = client.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu, in_flight=32)
+    local = gc.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu)
+    for column in local:
+        np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
+    remote = client.tooth_contact_many("nrel_downwind", torque, zeta, beta)
+    local = gc.tooth_contact_many("nrel_downwind", torque, zeta, beta)
+    for column in local:
+        np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
+    msy, msz = rng.uniform(-2e5, 0, n), rng.uniform(0, 2e5, n)
+    remote = client.estimate_friction_many("nrel_upwind", torque, zeta, beta, msy, msz, errors="mask")
+    local = gc.estimate_friction_many("nrel_upwind", torque, zeta, beta, msy, msz, errors="mask")
+    for column in local:
+        np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
+
+
+def test_remote_errors_are_the_core_errors(client):
+    with pytest.raises(gc.InvalidInput) as error:
+        client.induced_moments("nrel_upwind", 1e6, rad(5.0), mu=0.1)
+    assert error.value.field == "operating_point.misalignment_rad"
+    with pytest.raises(gc.InvalidInput) as error:
+        client.induced_moments_many("nrel_upwind", np.array([1e6, -1.0, 1e6]), 0.001, mu=0.1)
+    assert error.value.index == 1
+    assert error.value.field == "operating_point.torque_nm"
+    with pytest.raises(gc.ModelError) as error:  # the service's refusal, naming its field
+        client.jam_angle("no_such_coupling")
+    assert error.value.field == "coupling.catalogue_name"
+    assert "nrel_upwind" in str(error.value)
+
+
+def test_no_service_is_a_timeout():
+    lonely = gc.Client(domain=1 + (os.getpid() + 100) % 200, timeout=0.5)
+    with pytest.raises(gc.Timeout):
+        lonely.jam_angle("nrel_upwind")
