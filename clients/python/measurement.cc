@@ -24,6 +24,7 @@
 #include "clients/cli/coupling_reference.h"
 #include "clients/python/bindings.h"
 #include "clients/python/result_object.h"
+#include "codec/bundled_data.h"
 #include "codec/coupling_catalog.h"
 #include "codec/model_file.h"
 #include "core/model_error.h"
@@ -281,6 +282,10 @@ void bind_measurement(py::module_& m) {
            "loading_direction (+1 rising, -1 falling, 0 still), msy_nm, msz_nm.")
       .def("__len__", [](const Recording& r) { return r.data->samples.size(); });
 
+  m.def("bundled_data_dir", [](const std::string& kind) { return codec::bundled_data_dir(kind); },
+        py::arg("kind"),
+        "The bundled data's folder of `kind` ('couplings', 'models', 'recordings'): the installed "
+        "share/gearcoupling/<kind>, or the source tree's data/<kind> for a build-tree module.");
   m.def("read_recording", &read_recording, py::arg("source"), py::kw_only(),
         py::arg("columns") = py::none(),
         "Reads a recording: a CSV file (docs/recordings.md) or a pandas DataFrame with its columns "

@@ -20,7 +20,14 @@ from gearcoupling._gearcoupling import (  # noqa: F401
     tooth_contact,
     tooth_contact_many,
 )
-from gearcoupling._gearcoupling import Model, Recording, diagnose, read_recording, validate  # noqa: F401
+from gearcoupling._gearcoupling import (  # noqa: F401
+    Model,
+    Recording,
+    bundled_data_dir,
+    diagnose,
+    read_recording,
+    validate,
+)
 from gearcoupling._results import (  # noqa: F401
     DiagnosisResult,
     FrictionEstimateResult,

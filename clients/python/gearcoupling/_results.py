@@ -68,9 +68,7 @@ class Result:
     def __repr__(self) -> str:
         shown = []
         for key, value in self._dict.items():
-            if isinstance(value, (dict, list)):
-                continue
-            shown.append(f"{key}={value!r}")
+            shown.append(f"{key}=..." if isinstance(value, (dict, list)) else f"{key}={value!r}")
             if len(shown) == 8:
                 shown.append("...")
                 break
