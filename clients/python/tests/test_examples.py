@@ -13,7 +13,8 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def run_example(name: str, *args: str, cwd: Path) -> str:
-    environment = dict(os.environ, MPLBACKEND="Agg")
+    # The module this test imported, whatever the working directory.
+    environment = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=str(Path(gc.__file__).parents[1]))
     done = subprocess.run([sys.executable, str(EXAMPLES / name), *args], capture_output=True,
                           text=True, timeout=300, cwd=cwd, env=environment)
     assert done.returncode == 0, done.stderr
