@@ -69,15 +69,31 @@ py::object estimate_friction(py::handle coupling, double torque_nm, double misal
 void bind_calculations(py::module_& m) {
   m.def("tooth_contact", &tooth_contact, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(),
-        py::arg("mu") = 0.0, GC_PYTHON_CONTACT_OPTION_ARGS);
+        py::arg("mu") = 0.0, GC_PYTHON_CONTACT_OPTION_ARGS,
+        "Tooth contact at one load case (eqs 5-22): load sharing q, every tooth's load P_d [N], "
+        "contact offset and zone [m], the most loaded tooth's stress [Pa]. coupling: a Coupling, "
+        "catalogue name, coupling file or dict; torque_nm: T [N·m] > 0; misalignment_rad: zeta "
+        "[rad], below the jam angle; direction_rad: beta [rad]; mu: not used (recorded); slices: "
+        "N_s (even, eq 14); tolerance, max_iterations: eqs 20-22. Returns ToothContactResult "
+        "(gearcoupling contact --json).");
   m.def("induced_moments", &induced_moments, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
-        GC_PYTHON_CONTACT_OPTION_ARGS);
-  m.def("jam_angle", &jam_angle, py::arg("coupling"));
-  m.def("restoring_torque", &restoring_torque, py::arg("coupling"));
+        GC_PYTHON_CONTACT_OPTION_ARGS,
+        "Induced bending moments at one load case (eqs 36-48) in the double-prime frame, the "
+        "coupling frame and at the sensors [N·m]. mu: tooth sliding friction [-], 0..1. Other "
+        "arguments as tooth_contact. Returns InducedMomentsResult (gearcoupling moments --json).");
+  m.def("jam_angle", &jam_angle, py::arg("coupling"),
+        "The jam angle and its three criteria (eqs 23-35) [rad, deg]. Returns JamAngleResult "
+        "(gearcoupling jam-angle --json).");
+  m.def("restoring_torque", &restoring_torque, py::arg("coupling"),
+        "The torque that lifts the hub off the sleeve (eqs 49-53) [N·m]. Returns "
+        "RestoringTorqueResult (gearcoupling restoring-torque --json).");
   m.def("estimate_friction", &estimate_friction, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
-        py::arg("sensor_moment_z_nm"));
+        py::arg("sensor_moment_z_nm"),
+        "The friction coefficient mu [-] from measured torque [N·m], misalignment and direction "
+        "[rad] and sensor moments M_sy', M_sz' [N·m] (eqs 1-4). Returns FrictionEstimateResult "
+        "(gearcoupling friction --json).");
 }
 
 }  // namespace gc::python

@@ -242,14 +242,30 @@ py::dict estimate_friction_many(py::handle coupling, py::handle torque_nm, py::h
 void bind_case_arrays(py::module_& m) {
   m.def("tooth_contact_many", &tooth_contact_many, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(),
-        GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise");
+        GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise",
+        "tooth_contact over many load cases on all cores (threads=0) with the GIL released. "
+        "torque_nm [N·m], misalignment_rad, direction_rad [rad]: 1-D arrays of one length, or "
+        "scalars for every case. Returns a dict of numpy arrays: q, iterations, teeth_in_contact, "
+        "max_tooth_load_n, total_normal_load_n, offset_alpha_rad, edge_loaded, contact_stress_pa, "
+        "bending_stress_pa, contact_safety_factor, bending_safety_factor. errors='raise': the "
+        "first failed case's exception, with .index; 'mask': also 'ok' and 'error' columns.");
   m.def("induced_moments_many", &induced_moments_many, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
-        GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise");
+        GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise",
+        "Contact and induced moments (eqs 5-48) over many load cases on all cores, as "
+        "gearcoupling batch: arrays or scalars of torque_nm [N·m], misalignment_rad, "
+        "direction_rad [rad], mu [-]. Returns a dict of numpy arrays: q, teeth_in_contact, "
+        "max_tooth_load_n, moment_y_dd_nm, moment_z_dd_nm, moment_y_nm, moment_z_nm, "
+        "sensor_moment_y_nm, sensor_moment_z_nm, magnitude_nm, moment_direction_rad, "
+        "contact_stress_pa, bending_stress_pa, contact_safety_factor, bending_safety_factor. "
+        "errors as tooth_contact_many.");
   m.def("estimate_friction_many", &estimate_friction_many, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
         py::arg("sensor_moment_z_nm"), py::kw_only(), py::arg("threads") = 0u,
-        py::arg("errors") = "raise");
+        py::arg("errors") = "raise",
+        "estimate_friction over many measurements on all cores: arrays or scalars. Returns a dict "
+        "of numpy arrays friction_coefficient [-] and moment_z_dd_nm [N·m]; errors as "
+        "tooth_contact_many.");
 }
 
 }  // namespace gc::python
