@@ -24,7 +24,10 @@ set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "adduser")
 # Building against the headers needs their -dev packages; validate --html inlines Chart.js.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libprotobuf-dev, cyclonedds-dev")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libjs-chart.js")
+# The Python module (usr/lib/python3/dist-packages/gearcoupling) imports numpy; pandas for
+# DataFrames, matplotlib for the examples.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libjs-chart.js, python3-numpy")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "${CPACK_DEBIAN_PACKAGE_SUGGESTS}, python3-pandas, python3-matplotlib")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA
   ${PROJECT_SOURCE_DIR}/deploy/debian/conffiles
   ${PROJECT_SOURCE_DIR}/deploy/debian/postinst

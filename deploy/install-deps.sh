@@ -13,6 +13,8 @@ packages=(
   chromium        # headless, checks the HTML report in the suite (tests/validation/report_browser_test.cc)
   clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
   dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
+  python3-dev pybind11-dev python3-numpy  # the Python module (clients/python, docs/python.md)
+  python3-pytest python3-pandas python3-matplotlib  # its tests and examples
 )
 missing=()
 for p in "${packages[@]}"; do

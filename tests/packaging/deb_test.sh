@@ -106,4 +106,20 @@ service=""
 "$cli" validate --model paper \
   --data "$root/usr/share/gearcoupling/recordings/paper_torque_ramp.csv" >"$tmp/validate.out" ||
   fail "validate with the bundled model: $(cat "$tmp/validate.out")"
+# The Python module, where Debian's python3 reads modules for /usr, using the unpacked libraries
+# and data (built with GC_BUILD_PYTHON, docs/python.md).
+if grep -q "^GC_BUILD_PYTHON:BOOL=ON" "$build/CMakeCache.txt"; then
+  package=$root/usr/lib/python3/dist-packages/gearcoupling
+  for file in __init__.py _results.py __init__.pyi py.typed; do
+    [ -f "$package/$file" ] || fail "missing /usr/lib/python3/dist-packages/gearcoupling/$file"
+  done
+  ls "$package"/_gearcoupling.cpython-*.so >/dev/null || fail "no Python extension module"
+  (cd "$tmp" && PYTHONPATH=$root/usr/lib/python3/dist-packages /usr/bin/python3 -c '
+import sys, gearcoupling as gc
+root = sys.argv[1]
+assert gc.__file__.startswith(root), gc.__file__
+assert str(gc.bundled_data_dir("couplings")) == root + "/usr/share/gearcoupling/couplings"
+print("python:", gc.jam_angle("nrel_downwind").angle_deg, gc.Model("paper").effects)
+' "$root") || fail "the unpacked Python module does not run"
+fi
 echo "PASS: the .deb unpacked and served"
