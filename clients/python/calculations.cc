@@ -13,34 +13,47 @@ namespace py = pybind11;
 namespace gc::python {
 namespace {
 
+// What tooth_contact and induced_moments both take: the coupling, the point, the options.
+struct LoadCaseArguments {
+  std::shared_ptr<const Coupling> coupling;
+  OperatingPoint point;
+  ContactOptions options;
+};
+
+LoadCaseArguments load_case_arguments(py::handle coupling, double torque_nm, double misalignment_rad,
+                                      double direction_rad, double mu, int slices, double tolerance,
+                                      int max_iterations) {
+  return {coupling_argument(coupling), {torque_nm, misalignment_rad, direction_rad, mu},
+          contact_options(slices, tolerance, max_iterations)};
+}
+
 py::object tooth_contact(py::handle coupling, double torque_nm, double misalignment_rad,
                          double direction_rad, double mu, int slices, double tolerance,
                          int max_iterations) {
-  const auto c = coupling_argument(coupling);
-  const OperatingPoint point{torque_nm, misalignment_rad, direction_rad, mu};
-  const ContactOptions options = contact_options(slices, tolerance, max_iterations);
+  const LoadCaseArguments a = load_case_arguments(coupling, torque_nm, misalignment_rad, direction_rad,
+                                                  mu, slices, tolerance, max_iterations);
   ToothContact contact;
   {
     py::gil_scoped_release release;
-    contact = gc::tooth_contact(*c->geometry, point, options);
+    contact = gc::tooth_contact(*a.coupling->geometry, a.point, a.options);
   }
-  return tooth_contact_result(c->geometry->name(), point, contact);
+  return tooth_contact_result(a.coupling->geometry->name(), a.point, contact);
 }
 
 py::object induced_moments(py::handle coupling, double torque_nm, double misalignment_rad,
                            double direction_rad, double mu, int slices, double tolerance,
                            int max_iterations) {
-  const auto c = coupling_argument(coupling);
-  const OperatingPoint point{torque_nm, misalignment_rad, direction_rad, mu};
-  const ContactOptions options = contact_options(slices, tolerance, max_iterations);
+  const LoadCaseArguments a = load_case_arguments(coupling, torque_nm, misalignment_rad, direction_rad,
+                                                  mu, slices, tolerance, max_iterations);
+  const CouplingGeometry& geometry = *a.coupling->geometry;
   ToothContact contact;
   InducedMoments moments;
   {
     py::gil_scoped_release release;
-    contact = gc::tooth_contact(*c->geometry, point, options);
-    moments = gc::induced_moments(*c->geometry, point, contact);
+    contact = gc::tooth_contact(geometry, a.point, a.options);
+    moments = gc::induced_moments(geometry, a.point, contact);
   }
-  return induced_moments_result(c->geometry->name(), point, contact, moments);
+  return induced_moments_result(geometry.name(), a.point, contact, moments);
 }
 
 py::object jam_angle(py::handle coupling) {

@@ -80,7 +80,7 @@ void set_python_error(const std::exception_ptr& error, std::optional<std::size_t
   py::object type = classify(error, message, field);
   if (index) message = "case " + std::to_string(*index) + ": " + message;
   py::object exception = type(message);
-  if (!field.is_none()) exception.attr("field") = field;
+  exception.attr("field") = field;  // None where the error names no field
   if (index) exception.attr("index") = *index;
   PyErr_SetObject(type.ptr(), exception.ptr());
 }

@@ -9,8 +9,9 @@ import numpy.typing as npt
 __version__: str
 
 class ModelError(Exception):
-    """Base of every error the model raises (also the service's refusals; .field when it names one)."""
-    field: str
+    """Base of every error the model raises (also the service's refusals); .field names the
+    input where the error names one, else None."""
+    field: str | None
     index: int
 
 class InvalidInput(ModelError, ValueError):

@@ -17,6 +17,15 @@ def rad(degrees: float) -> float:
     return degrees * math.pi / 180.0
 
 
+def random_cases(n: int, seed: int):
+    """n load cases over the couplings' range: torque [N·m], misalignment and direction [rad], mu."""
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+    return (rng.uniform(2e5, 2.5e6, n), rng.uniform(0.0, rad(0.6), n),
+            rng.uniform(-np.pi, np.pi, n), rng.uniform(0.0, 0.3, n))
+
+
 @pytest.fixture(scope="session")
 def cli():
     """Runs the CLI; returns its standard output (bytes). Fails the test on a non-zero exit."""

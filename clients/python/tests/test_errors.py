@@ -34,6 +34,7 @@ def test_not_converged():
         gc.tooth_contact("nrel_upwind", 1.5e6, rad(0.45), tolerance=1e-15, max_iterations=1)
     assert isinstance(error.value, gc.ModelError)
     assert not isinstance(error.value, gc.InvalidInput)
+    assert error.value.field is None
 
 
 def test_unknown_coupling_and_bad_dict():

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import gearcoupling as gc
-from conftest import DATA, SOURCE_DIR, rad
+from conftest import DATA, SOURCE_DIR, rad, random_cases
 
 if not hasattr(gc, "Client"):
     pytest.skip("built without the service", allow_module_level=True)
@@ -58,12 +58,9 @@ def test_inline_couplings_equal_in_process(client):
 
 
 def test_many_equal_in_process(client):
-    rng = np.random.default_rng(7)
     n = 300
-    torque = rng.uniform(2e5, 2.5e6, n)
-    zeta = rng.uniform(0.0, rad(0.6), n)
-    beta = rng.uniform(-np.pi, np.pi, n)
-    mu = rng.uniform(0.0, 0.3, n)
+    torque, zeta, beta, mu = random_cases(n, seed=7)
+    rng = np.random.default_rng(8)
     remote = client.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu, in_flight=32)
     local = gc.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu)
     for column in local:

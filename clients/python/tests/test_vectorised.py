@@ -4,14 +4,10 @@ import numpy as np
 import pytest
 
 import gearcoupling as gc
-from conftest import rad
+from conftest import rad, random_cases
 
-RNG = np.random.default_rng(13)
 N = 400
-TORQUE = RNG.uniform(2e5, 2.5e6, N)
-ZETA = RNG.uniform(0.0, rad(0.6), N)
-BETA = RNG.uniform(-np.pi, np.pi, N)
-MU = RNG.uniform(0.0, 0.3, N)
+TORQUE, ZETA, BETA, MU = random_cases(N, seed=13)
 
 MOMENT_FIELDS = {  # column of induced_moments_many -> field of the one-case result
     "q": "q", "teeth_in_contact": "teeth_in_contact", "max_tooth_load_n": "max_tooth_load_n",
@@ -87,3 +83,26 @@ def test_mask_keeps_good_cases_and_names_the_bad():
     assert many["magnitude_nm"][2] == 0.0
     good = gc.induced_moments_many("nrel_upwind", torque[3:], ZETA[3:6], mu=0.1)
     np.testing.assert_array_equal(many["magnitude_nm"][3:], good["magnitude_nm"])
+
+
+def test_the_gil_is_released_while_the_cases_run():
+    # Python code runs in this thread while the other is still inside the call: with the GIL
+    # held for the call, nothing could run here before it returned.
+    import threading
+    import time
+
+    torque, zeta, beta, mu = random_cases(300_000, seed=5)
+    started, results = threading.Event(), []
+
+    def work():
+        started.set()
+        results.append(gc.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu, threads=1))
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    started.wait()
+    time.sleep(0.05)  # gives the GIL away; it comes back only if the call does not hold it
+    ran_during_call = not results
+    worker.join()
+    assert ran_during_call
+    assert len(results[0]["q"]) == 300_000
