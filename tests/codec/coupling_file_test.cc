@@ -154,3 +154,47 @@ TEST(CouplingFile, UnreadableFileIsAnError) {
 
 }  // namespace
 }  // namespace gc::codec
+
+namespace gc::codec {
+namespace {
+
+// A coupling as JSON (a Python dict) reads through the text parser: the same definition, the
+// same errors.
+TEST(CouplingJson, EqualsTheTextItWasWrittenFrom) {
+  const CouplingDefinition text = parse_coupling_text(bundled_text("nrel_upwind"), "upwind");
+  const std::string json = R"({"name": "nrel_upwind", "teeth": 100, "module_m": 0.01016,
+    "pressure_angle_deg": 20.0, "pitch_diameter_m": 1.016, "base_diameter_m": 0.95473,
+    "outer_diameter_m": 1.03632, "root_diameter_m": 0.98877, "center_distance_m": 0.0,
+    "backlash_m": 0.00064, "tooth_thickness_m": 0.01555, "tool_tip_radius_m": 0.00427,
+    "facewidth_m": 0.127, "lead_modification_m": 0.00078, "profile_tip_relief_m": 0.00046,
+    "profile_relief_start_roll_deg": 23.6, "form_factor_hub": 0.45, "form_factor_sleeve": 0.45,
+    "youngs_modulus_pa": 2.06e11, "poisson_ratio": 0.3, "design_misalignment_deg": 0.0,
+    "coupling_weight_n": 24000, "shaft_weight_per_length_n_per_m": 21100, "shaft_length_m": 2.8,
+    "tilt_deg": 0.0, "allowables": {"contact_stress_pa": 1.1e9, "bending_stress_pa": 3.1e8}})";
+  const CouplingDefinition parsed = parse_coupling_json(json, "dict");
+  EXPECT_EQ(parsed.name, text.name);
+  EXPECT_EQ(parsed.teeth, text.teeth);
+  EXPECT_EQ(parsed.pressure_angle_rad, text.pressure_angle_rad);
+  EXPECT_EQ(parsed.lead_modification_m, text.lead_modification_m);
+  EXPECT_EQ(parsed.allowables.bending_stress_pa, text.allowables.bending_stress_pa);
+}
+
+TEST(CouplingJson, MissingFieldAndUnknownFieldAreNamed) {
+  try {
+    parse_coupling_json(R"({"name": "x", "teeth": 10})", "dict");
+    FAIL() << "accepted a coupling without its fields";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field().rfind("coupling.", 0), 0u) << error.field();
+    EXPECT_NE(std::string(error.what()).find("dict"), std::string::npos) << error.what();
+  }
+  try {
+    parse_coupling_json(R"({"name": "x", "no_such_field": 1})", "dict");
+    FAIL() << "accepted an unknown field";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "coupling");
+    EXPECT_NE(std::string(error.what()).find("no_such_field"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace gc::codec
