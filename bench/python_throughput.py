@@ -10,6 +10,7 @@ each, medians of the wall times.
 
     PYTHONPATH=build/clients/python /usr/bin/python3 bench/python_throughput.py
         [--rows 1000000] [--remote-rows 100000] [--jobs N] [--in-flight 256] [--build build]
+        [--skip-in-process] [--skip-remote]
 """
 
 import argparse
@@ -114,11 +115,13 @@ def main() -> None:
     parser.add_argument("--in-flight", type=int, default=256)
     parser.add_argument("--build", default=str(SOURCE / "build"))
     parser.add_argument("--skip-remote", action="store_true")
+    parser.add_argument("--skip-in-process", action="store_true")
     args = parser.parse_args()
     cli = f"{args.build}/clients/cli/gearcoupling"
     print(f"{os.cpu_count()} hardware threads; load average {os.getloadavg()[0]:.2f}")
     with tempfile.TemporaryDirectory() as work:
-        in_process(cli, args.rows, args.jobs, Path(work))
+        if not args.skip_in_process:
+            in_process(cli, args.rows, args.jobs, Path(work))
         if not args.skip_remote:
             remote(cli, f"{args.build}/service/gearcoupling-service", args.remote_rows, args.in_flight, Path(work))
 
