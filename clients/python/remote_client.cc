@@ -108,9 +108,12 @@ py::object estimate_friction(const Client& self, py::handle coupling, double tor
 
 // Sends case after case, keeping at most `in_flight` outstanding: when the window is full, the
 // oldest case's replies are collected first. `send(i)` returns a callable giving case i's result
-// (or throwing its error).
+// (or throwing its error). After a Timeout (no service answering) nothing more is sent: each
+// further case would wait the whole timeout too; the cases not sent fail with that Timeout. So
+// does every case when no instance takes `calculation` within the timeout to begin with.
 template <typename Result, typename Send>
-py::dict run_remote_cases(const std::vector<Column<Result>>& columns, std::size_t count,
+py::dict run_remote_cases(client::Client& client, Calculation calculation,
+                          const std::vector<Column<Result>>& columns, std::size_t count,
                           std::size_t in_flight, FailedCases failed, const Send& send) {
   if (in_flight < 1 || in_flight > 100000) {
     throw InvalidInput("in_flight", static_cast<double>(in_flight), "[1, 100000]");
@@ -120,24 +123,43 @@ py::dict run_remote_cases(const std::vector<Column<Result>>& columns, std::size_
     py::gil_scoped_release release;
     using Pending = decltype(send(std::size_t{0}));
     std::deque<std::pair<std::size_t, Pending>> window;
+    std::exception_ptr timeout;
+    if (!client.wait_for_service(calculation, client.options().timeout)) {
+      timeout = std::make_exception_ptr(client::Timeout(
+          "no gearcoupling-service instance ready within " +
+          std::to_string(client.options().timeout.count()) + " ms on DDS domain " +
+          std::to_string(client.options().domain)));
+    }
+    const auto record_failure = [&](std::size_t index) {
+      try {
+        throw;
+      } catch (const client::Timeout&) {
+        if (!timeout) timeout = std::current_exception();
+        arrays.fail(index, std::current_exception());
+      } catch (const std::exception&) {
+        arrays.fail(index, std::current_exception());
+      }
+    };
     const auto collect_oldest = [&] {
       auto& [index, pending] = window.front();
       try {
         arrays.set(index, pending());
-      } catch (const std::exception&) {
-        arrays.fail(index, std::current_exception());
+      } catch (...) {
+        record_failure(index);
       }
       window.pop_front();
     };
-    for (std::size_t i = 0; i < count; ++i) {
+    std::size_t i = 0;
+    for (; i < count && !timeout; ++i) {
       if (window.size() >= in_flight) collect_oldest();
       try {
         window.emplace_back(i, send(i));
-      } catch (const std::exception&) {
-        arrays.fail(i, std::current_exception());
+      } catch (...) {
+        record_failure(i);
       }
     }
     while (!window.empty()) collect_oldest();
+    for (; i < count; ++i) arrays.fail(i, timeout);
   }
   return arrays.finish(failed);
 }
@@ -157,7 +179,8 @@ py::dict tooth_contact_many(const Client& self, py::handle coupling, py::handle 
                       {torque_nm, misalignment_rad, direction_rad});
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
   client::Client& client = *self.client;
-  return run_remote_cases(tooth_contact_columns(), in.size(), in_flight, failed_cases_argument(errors),
+  return run_remote_cases(client, Calculation::kToothContact, tooth_contact_columns(), in.size(),
+                          in_flight, failed_cases_argument(errors),
                           [&](std::size_t i) {
                             const OperatingPoint point{in(0, i), in(1, i), in(2, i), 0.0};
                             return getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
@@ -174,7 +197,8 @@ py::dict induced_moments_many(const Client& self, py::handle coupling, py::handl
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
   client::Client& client = *self.client;
   return run_remote_cases(
-      load_case_columns(), in.size(), in_flight, failed_cases_argument(errors), [&](std::size_t i) {
+      client, Calculation::kInducedMoments, load_case_columns(), in.size(), in_flight,
+      failed_cases_argument(errors), [&](std::size_t i) {
         const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
         auto contact = getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
         auto moments = getter(client.call_async<Calculation::kInducedMoments>({ref, point, options}));
@@ -191,7 +215,8 @@ py::dict estimate_friction_many(const Client& self, py::handle coupling, py::han
                        "sensor_moment_z_nm"},
                       {torque_nm, misalignment_rad, direction_rad, sensor_moment_y_nm, sensor_moment_z_nm});
   client::Client& client = *self.client;
-  return run_remote_cases(friction_estimate_columns(), in.size(), in_flight,
+  return run_remote_cases(client, Calculation::kFrictionEstimate, friction_estimate_columns(),
+                          in.size(), in_flight,
                           failed_cases_argument(errors), [&](std::size_t i) {
                             const FrictionMeasurement m{in(0, i), in(1, i), in(2, i), in(3, i), in(4, i)};
                             return getter(client.call_async<Calculation::kFrictionEstimate>({ref, m}));

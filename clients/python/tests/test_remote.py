@@ -94,3 +94,8 @@ def test_no_service_is_a_timeout():
     lonely = gc.Client(domain=1 + (os.getpid() + 100) % 200, timeout=0.5)
     with pytest.raises(gc.Timeout):
         lonely.jam_angle("nrel_upwind")
+    # A vectorised call stops sending after the first timeout: every case fails with it, in
+    # about one timeout, not one per case.
+    many = lonely.induced_moments_many("nrel_upwind", np.full(1000, 1e6), 0.001, mu=0.1, errors="mask")
+    assert not many["ok"].any()
+    assert all("no gearcoupling-service instance ready" in message for message in many["error"])
