@@ -94,3 +94,13 @@ def test_model_sources_and_effects(tmp_path):
     assert error.value.field.startswith("effects.hysteresis")
     with pytest.raises(gc.InvalidInput):
         gc.Model({"name": "x", "coupling": "nowhere"})
+
+
+def test_renamed_columns_and_html_report(tmp_path):
+    frame = pd.read_csv(SWEEP, float_precision="round_trip").rename(columns={"msy_nm": "Ch3_Nm"})
+    with pytest.raises(gc.InvalidInput):
+        gc.read_recording(frame)
+    renamed = gc.validate(frame, "paper", columns="msy_nm=Ch3_Nm", html=tmp_path / "report.html")
+    plain = gc.validate(SWEEP, "paper")
+    assert renamed.models[0].overall.msy.rmse_nm == plain.models[0].overall.msy.rmse_nm
+    assert "<html" in (tmp_path / "report.html").read_text()[:500].lower()
