@@ -1,6 +1,7 @@
 """Vectorised calls equal one case at a time, exactly, on any number of threads."""
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import gearcoupling as gc
@@ -106,3 +107,18 @@ def test_the_gil_is_released_while_the_cases_run():
     worker.join()
     assert ran_during_call
     assert len(results[0]["q"]) == 300_000
+
+
+def test_induced_moments_many_equals_gearcoupling_batch(cli, tmp_path):
+    torque, zeta, beta, mu = random_cases(200, seed=21)
+    zeta_deg, beta_deg = np.round(np.degrees(zeta), 6), np.round(np.degrees(beta), 6)
+    cases = pd.DataFrame({"torque_nm": torque, "misalignment_deg": zeta_deg,
+                          "direction_deg": beta_deg, "mu": mu})
+    cases.to_csv(tmp_path / "cases.csv", index=False)
+    cli("batch", "--in", str(tmp_path / "cases.csv"), "--out", str(tmp_path / "out.csv"))
+    batch = pd.read_csv(tmp_path / "out.csv", float_precision="round_trip")
+    ours = gc.induced_moments_many("nrel_upwind", torque, zeta_deg * np.pi / 180.0,
+                                   beta_deg * np.pi / 180.0, mu=mu)
+    for column in batch.columns:
+        if column in ours:
+            np.testing.assert_array_equal(ours[column], batch[column].to_numpy(), err_msg=column)
