@@ -39,8 +39,19 @@ from gearcoupling._results import (  # noqa: F401
     ValidationResult,
 )
 
+__all__ = [
+    "Coupling", "InvalidInput", "ModelError", "NotConverged", "Timeout", "catalogue",
+    "tooth_contact", "induced_moments", "jam_angle", "restoring_torque", "estimate_friction",
+    "tooth_contact_many", "induced_moments_many", "estimate_friction_many",
+    "Model", "Recording", "bundled_data_dir", "read_recording", "validate", "diagnose",
+    "Result", "ToothContactResult", "InducedMomentsResult", "JamAngleResult",
+    "RestoringTorqueResult", "FrictionEstimateResult", "ValidationResult", "DiagnosisResult",
+]
+
 try:
     from gearcoupling._gearcoupling import Client  # noqa: F401  (built with the service)
+
+    __all__.append("Client")
 except ImportError:  # pragma: no cover
     pass
 
