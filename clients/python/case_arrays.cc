@@ -2,7 +2,7 @@
 // contiguous share (parallel/thread_parallel_for.h), results written straight into numpy arrays.
 #include "clients/python/case_arrays.h"
 
-#include <numbers>
+#include <cstring>
 
 #include "clients/python/bindings.h"
 #include "clients/python/coupling_argument.h"

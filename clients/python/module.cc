@@ -8,6 +8,8 @@ PYBIND11_MODULE(_gearcoupling, m) {
   gc::python::bind_couplings(m);
   gc::python::bind_calculations(m);
   gc::python::bind_case_arrays(m);
+  gc::python::bind_models(m);
+  gc::python::bind_recordings(m);
   gc::python::bind_measurement(m);
 #ifdef GC_PYTHON_REMOTE
   gc::python::bind_client(m);

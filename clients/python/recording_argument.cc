@@ -1,0 +1,130 @@
+#include "clients/python/recording_argument.h"
+
+#include <atomic>
+#include <cstdint>
+
+#include <unistd.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "clients/python/bindings.h"
+
+namespace py = pybind11;
+
+namespace gc::python {
+
+ScratchFile::~ScratchFile() {
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+namespace {
+
+std::vector<analysis::ColumnRename> renames_argument(const std::optional<std::string>& columns) {
+  return columns ? analysis::parse_column_renames(*columns) : std::vector<analysis::ColumnRename>{};
+}
+
+// A DataFrame with the recording's columns as CSV: pandas prints floats so they read back
+// exactly, and the one reader (units, malformed rows, loading directions) does the rest.
+std::shared_ptr<ScratchFile> write_data_frame(py::handle frame) {
+  static std::atomic<int> counter{0};
+  auto scratch = std::make_shared<ScratchFile>();
+  scratch->path = std::filesystem::temp_directory_path() /
+                  ("gearcoupling-recording-" + std::to_string(getpid()) + "-" +
+                   std::to_string(counter++) + ".csv");
+  frame.attr("to_csv")(scratch->path.string(), py::arg("index") = false);
+  return scratch;
+}
+
+py::dict recording_arrays(const Recording& recording) {
+  const auto& samples = recording.data->samples;
+  const auto n = static_cast<py::ssize_t>(samples.size());
+  py::array_t<double> time(n), torque(n), misalignment(n), direction(n), msy(n), msz(n);
+  py::array_t<std::int32_t> loading(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const RecordedSample& s = samples[static_cast<std::size_t>(i)];
+    time.mutable_at(i) = s.input.time_s;
+    torque.mutable_at(i) = s.input.torque_nm;
+    misalignment.mutable_at(i) = s.input.misalignment_rad;
+    direction.mutable_at(i) = s.input.direction_rad;
+    loading.mutable_at(i) = s.input.loading_direction;
+    msy.mutable_at(i) = s.measured.y_nm;
+    msz.mutable_at(i) = s.measured.z_nm;
+  }
+  py::dict out;
+  out["time_s"] = time;
+  out["torque_nm"] = torque;
+  out["misalignment_rad"] = misalignment;
+  out["direction_rad"] = direction;
+  out["loading_direction"] = loading;
+  out["msy_nm"] = msy;
+  out["msz_nm"] = msz;
+  return out;
+}
+
+py::list recording_problems(const Recording& recording) {
+  py::list problems;
+  for (const analysis::RowProblem& p : recording.data->problems) {
+    py::dict problem;
+    problem["line"] = p.line;
+    problem["column"] = p.column;
+    problem["column_name"] = p.column_name;
+    problem["message"] = p.message;
+    problems.append(problem);
+  }
+  return problems;
+}
+
+}  // namespace
+
+Recording recording_source(py::handle argument, const std::optional<std::string>& columns) {
+  if (py::isinstance<Recording>(argument)) return argument.cast<Recording>();
+  Recording recording;
+  recording.renames = renames_argument(columns);
+  if (py::hasattr(argument, "to_csv") && py::hasattr(argument, "columns")) {
+    recording.scratch = write_data_frame(argument);
+    recording.path = recording.scratch->path;
+    recording.source = "<DataFrame>";
+  } else {
+    recording.path = argument.cast<std::filesystem::path>();
+    recording.source = recording.path.string();
+  }
+  return recording;
+}
+
+Recording read_recording(py::handle argument, const std::optional<std::string>& columns) {
+  Recording recording = recording_source(argument, columns);
+  if (!recording.data) {
+    py::gil_scoped_release release;
+    recording.data = std::make_shared<const analysis::Recording>(
+        analysis::read_recording(recording.path, analysis::RecordingOptions{{}, recording.renames}));
+  }
+  return recording;
+}
+
+void bind_recordings(py::module_& m) {
+  py::class_<Recording>(m, "Recording",
+                        "A test-cell recording read whole (docs/recordings.md), with its excluded rows.")
+      .def_property_readonly("source", [](const Recording& r) { return r.source; })
+      .def_property_readonly("rows_read", [](const Recording& r) { return r.data->rows_read; },
+                             "Data rows in the file, good and bad.")
+      .def_property_readonly("excluded_rows", [](const Recording& r) { return r.data->excluded_rows; },
+                             "Malformed rows excluded (never dropped silently: see problems).")
+      .def_property_readonly("problems", &recording_problems,
+                             "The first 1000 excluded rows: line, column, column_name, message.")
+      .def_property_readonly("ignored_columns", [](const Recording& r) { return r.data->ignored_columns; })
+      .def("to_arrays", &recording_arrays,
+           "The samples kept, in SI: time_s, torque_nm, misalignment_rad, direction_rad, "
+           "loading_direction (+1 rising, -1 falling, 0 still), msy_nm, msz_nm.")
+      .def("__len__", [](const Recording& r) { return r.data->samples.size(); });
+
+  m.def("read_recording", &read_recording, py::arg("source"), py::kw_only(),
+        py::arg("columns") = py::none(),
+        "Reads a recording: a CSV file (docs/recordings.md) or a pandas DataFrame with its columns "
+        "(<quantity>_<unit>, e.g. torque_nm, misalignment_deg, msy_knm). columns: renames as "
+        "validate --columns takes them ('msy_knm=Ch3_kNm,...').");
+}
+
+}  // namespace gc::python
