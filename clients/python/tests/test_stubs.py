@@ -29,6 +29,8 @@ def test_every_function_and_class_is_stubbed_with_its_parameters():
     public = {name for name in dir(gc) if not name.startswith("_") and callable(getattr(gc, name))}
     assert public - set(stubbed) == set()
     for name, node in stubbed.items():
+        if name == "Client" and not hasattr(gc, "Client"):
+            continue  # built without the service (GC_BUILD_SERVICE=OFF)
         assert hasattr(gc, name), name
         if isinstance(node, ast.FunctionDef) and type(getattr(gc, name)).__name__ == "builtin_function_or_method":
             assert stub_parameters(node) == bound_parameters(getattr(gc, name)), name
