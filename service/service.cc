@@ -419,6 +419,12 @@ void Service::run() {
   for (const Entity& reader : request_readers_) dds_set_listener(reader.get(), nullptr);
   take_all_requests();
   release_parked(true);
+  if (const std::size_t parked = reply_writers_.parked(); parked > 0) {
+    spdlog::warn("shutting down: {} request(s) dropped unanswered: their client's reply reader "
+                 "had not matched yet (a made-up client_id, or a client that did not wait for "
+                 "discovery)",
+                 parked);
+  }
   pool_.drain_and_stop();
   reply_backlog_.stop();
   log_stats();
