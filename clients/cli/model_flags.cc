@@ -15,7 +15,7 @@ codec::ModelFile load_model_flag(const Flags& flags) {
   const bool is_file = model.find('/') != std::string::npos || model.ends_with(".textproto");
   const std::filesystem::path path =
       is_file ? std::filesystem::path(model) : default_models_dir() / (model + ".textproto");
-  return codec::load_model_description(path, flags.text("catalog"));
+  return codec::load_model_description(path, flags.text("catalogue"));
 }
 
 }  // namespace gc::cli

@@ -10,6 +10,7 @@
 #include "analysis/validation_result.h"
 #include "analysis/validation_run.h"
 #include "analysis/validation_summary.h"
+#include "clients/cli/jobs_flag.h"
 #include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
@@ -24,25 +25,28 @@ using analysis::print_validation_summary;
 namespace v1 = gearcoupling::v1;
 
 std::vector<FlagSpec> validate_flags() {
-  return {
+  std::vector<FlagSpec> flags = {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
       columns_flag(),
-      {"reference-torque", "N·m", "T_ref: errors are also given in % of it", "1.5e6"},
+      {"reference-torque-nm", "N·m", "T_ref: errors are also given in % of it", "1.5e6", false,
+       '\0', {"reference-torque"}},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
       {"add", "EFFECT[=p=v,...]",
        "also validate the model with this effect added (SI parameters, e.g. hysteresis=lag_rad=6e-4): "
        "before and after side by side", ""},
-      {"threads", "N", "threads for the model evaluations",
-       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
+      jobs_flag(),
   };
+  append(flags, {catalogue_flag(), json_flag()});
+  append(flags, refused_calculator_flags("validate"));
+  return flags;
 }
 
 int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
   const auto validation = analysis::validate_model(
-      flags.text("data"), model, flags.text("add"), flags.number("reference-torque"),
-      {flags.integer("threads", 1, 1024), 1u << 15, column_renames(flags)});
+      flags.text("data"), model, flags.text("add"), flags.number("reference-torque-nm"),
+      {jobs_from(flags), 1u << 15, column_renames(flags)});
   const v1::ValidationResult& result = validation->result;
   const std::vector<ModelRun>& runs = validation->runs;
   print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},
