@@ -23,10 +23,14 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-std::array<const Subcommand*, 9> subcommands() {
+std::vector<const Subcommand*> subcommands() {
   return {&contact_subcommand(),          &jam_angle_subcommand(), &moments_subcommand(),
           &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand(),
-          &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand()};
+          &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand(),
+#ifdef GC_CLI_LIVE
+          &replay_subcommand(),           &record_subcommand(),
+#endif
+  };
 }
 
 std::string overview() {

@@ -30,6 +30,8 @@ const Subcommand& batch_subcommand();
 const Subcommand& synth_subcommand();
 const Subcommand& validate_subcommand();
 const Subcommand& diagnose_subcommand();
+const Subcommand& replay_subcommand();
+const Subcommand& record_subcommand();
 
 /// --coupling, --catalog and --json.
 std::vector<FlagSpec> common_flags();
