@@ -1,0 +1,94 @@
+#include "clients/status/instance_board.h"
+
+#include <algorithm>
+#include <tuple>
+
+#include "protocol/names.h"
+#include "protocol/qos.h"
+#include "protocol/samples.h"
+#include "protocol/topics.h"
+
+namespace gc::status {
+
+using protocol::check_dds;
+using protocol::Entity;
+
+std::string_view to_string(Liveness liveness) {
+  switch (liveness) {
+    case Liveness::kAlive: return "alive";
+    case Liveness::kStale: return "stale";
+    case Liveness::kStopped: return "stopped";
+  }
+  return "unknown";
+}
+
+InstanceBoard::InstanceBoard(dds_entity_t participant, InstanceBoardOptions options)
+    : options_(options), topic_(protocol::make_status_topic(participant)) {
+  const protocol::Qos partition = protocol::partition_qos(protocol::kStatusPartition);
+  subscriber_ = Entity(check_dds(dds_create_subscriber(participant, partition.get(), nullptr),
+                                 "dds_create_subscriber(status)"));
+  dds_listener_t* listener = dds_create_listener(this);
+  dds_lset_data_available(listener, &InstanceBoard::on_data_available);
+  const protocol::Qos qos = protocol::status_reader_qos();
+  reader_ = Entity(check_dds(dds_create_reader(subscriber_.get(), topic_.get(), qos.get(), listener),
+                             "dds_create_reader(status)"));
+  dds_delete_listener(listener);
+  take();  // samples that arrived before the listener was in place
+}
+
+void InstanceBoard::on_data_available(dds_entity_t, void* board) {
+  static_cast<InstanceBoard*>(board)->take();
+}
+
+void InstanceBoard::take() {
+  for (;;) {
+    protocol::LoanedSamples<gearcoupling_ServiceStatus> samples(reader_.get());
+    if (samples.size() == 0) return;
+    const Clock::time_point now = Clock::now();
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const dds_sample_info_t& info = samples.info(i);
+      if (info.valid_data) {
+        const std::uint64_t id = samples[i].instance_id;
+        handles_[info.instance_handle] = id;
+        Entry& entry = entries_[id];
+        entry.info = client::instance_info_from_wire(samples[i]);
+        entry.received = now;
+      }
+      const auto handle = handles_.find(info.instance_handle);
+      if (handle == handles_.end()) continue;
+      Entry& entry = entries_[handle->second];
+      const Liveness liveness = info.instance_state == DDS_IST_ALIVE ? Liveness::kAlive
+                                : info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED
+                                    ? Liveness::kStopped
+                                    : Liveness::kStale;
+      if (liveness != entry.dds_liveness) entry.liveness_changed = now;
+      entry.dds_liveness = liveness;
+    }
+  }
+}
+
+std::vector<InstanceView> InstanceBoard::snapshot() const {
+  const Clock::time_point now = Clock::now();
+  std::vector<InstanceView> views;
+  std::lock_guard lock(mutex_);
+  for (const auto& [id, entry] : entries_) {
+    InstanceView view{entry.info, entry.dds_liveness,
+                      std::chrono::duration<double>(now - entry.received).count()};
+    if (view.liveness == Liveness::kAlive && now - entry.received > options_.stale_after) {
+      view.liveness = Liveness::kStale;
+    }
+    const Clock::time_point gone_since = entry.dds_liveness == Liveness::kAlive
+                                             ? entry.received + options_.stale_after
+                                             : entry.liveness_changed;
+    if (view.liveness != Liveness::kAlive && now - gone_since > options_.forget_after) continue;
+    views.push_back(std::move(view));
+  }
+  std::sort(views.begin(), views.end(), [](const InstanceView& a, const InstanceView& b) {
+    return std::tie(a.info.host, a.info.pid, a.info.id) <
+           std::tie(b.info.host, b.info.pid, b.info.id);
+  });
+  return views;
+}
+
+}  // namespace gc::status
