@@ -58,10 +58,14 @@ void InstanceBoard::take() {
       const auto handle = handles_.find(info.instance_handle);
       if (handle == handles_.end()) continue;
       Entry& entry = entries_[handle->second];
-      const Liveness liveness = info.instance_state == DDS_IST_ALIVE ? Liveness::kAlive
-                                : info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED
-                                    ? Liveness::kStopped
-                                    : Liveness::kStale;
+      // A graceful stop publishes accepting = false, then disposes. Cyclone 0.10 also
+      // reports a killed instance as disposed once its lease lapses (the lost writer
+      // unregisters, and unregistering auto-disposes), so "stopped" needs the goodbye too.
+      const Liveness liveness =
+          info.instance_state == DDS_IST_ALIVE ? Liveness::kAlive
+          : info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED && !entry.info.accepting
+              ? Liveness::kStopped
+              : Liveness::kStale;
       if (liveness != entry.dds_liveness) entry.liveness_changed = now;
       entry.dds_liveness = liveness;
     }

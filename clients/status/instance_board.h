@@ -17,8 +17,9 @@
 
 namespace gc::status {
 
-/// kAlive: its status is fresh. kStale: its writer's liveliness lapsed (killed, hung, cut off)
-/// or no status came for the stale time. kStopped: it disposed its status (a graceful stop).
+/// kAlive: its status is fresh. kStale: it went without a goodbye (its status writer's lease
+/// lapsed: killed, hung, cut off) or no status came for the stale time. kStopped: a graceful
+/// stop (it said accepting = false, then disposed its status).
 enum class Liveness { kAlive, kStale, kStopped };
 
 /// "alive", "stale", "stopped".
