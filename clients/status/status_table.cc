@@ -47,4 +47,26 @@ void print_instances(const std::vector<InstanceView>& instances, std::FILE* out)
   }
 }
 
+void print_cells(const std::vector<gearcoupling::v1::TestCellRecord>& cells, std::FILE* out) {
+  if (cells.empty()) return;
+  analysis::Table table({"test cell", "state", "model", "taken", "evaluated", "lost", "refused",
+                         "RMSE M_sy' [N·m]", "noise M_sy' [N·m]", "RMSE M_sz' [N·m]",
+                         "noise M_sz' [N·m]"});
+  for (const auto& cell : cells) {
+    const auto& c = cell.counts();
+    const auto& model = cell.model();
+    table.add_row({cell.test_cell(), cell.state(), model.model_name(), std::to_string(c.taken()),
+                   std::to_string(c.evaluated()), std::to_string(c.lost()),
+                   std::to_string(c.refused_not_finite() + c.refused_by_model() +
+                                  c.refused_out_of_order()),
+                   format_number(model.msy().rmse_nm()), format_number(model.msy().noise_nm()),
+                   format_number(model.msz().rmse_nm()), format_number(model.msz().noise_nm())});
+  }
+  fmt::print(out, "\n");
+  table.print(out);
+  for (const auto& cell : cells) {
+    if (!cell.worst_region().empty()) fmt::print(out, "{}: {}\n", cell.test_cell(), cell.worst_region());
+  }
+}
+
 }  // namespace gc::status

@@ -205,3 +205,17 @@ def test_no_console_errors_and_a_screenshot(cell):
     assert os.path.getsize(path) > 10000
     errors = [entry for entry in driver.get_log("browser") if entry["level"] == "SEVERE"]
     assert errors == [], errors
+
+
+def test_metrics_of_the_running_dashboard_pass_promtool(cell):
+    promtool = shutil.which("promtool")
+    if promtool is None:
+        pytest.skip("promtool is absent (Debian package prometheus, deploy/install-deps.sh)")
+    import urllib.request
+    with urllib.request.urlopen(cell["url"] + "metrics", timeout=5) as response:
+        assert response.headers["Content-Type"].startswith("text/plain; version=0.0.4")
+        text = response.read().decode()
+    assert f'gearcoupling_cell_samples_taken_total{{test_cell="{TEST_CELL}"}}' in text
+    assert "gearcoupling_requests_served_total{" in text
+    check = subprocess.run([promtool, "check", "metrics"], input=text, capture_output=True, text=True)
+    assert check.returncode == 0 and check.stdout + check.stderr == "", check.stdout + check.stderr
