@@ -15,8 +15,9 @@ import time
 
 import pytest
 
-CHROMIUM = shutil.which("chromium")
-CHROMEDRIVER = shutil.which("chromedriver")
+# $GC_CHROMIUM / $GC_CHROMEDRIVER name other binaries (a path that does not exist: "absent").
+CHROMIUM = shutil.which(os.environ.get("GC_CHROMIUM", "chromium"))
+CHROMEDRIVER = shutil.which(os.environ.get("GC_CHROMEDRIVER", "chromedriver"))
 try:
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
