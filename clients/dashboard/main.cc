@@ -1,6 +1,4 @@
 // gearcoupling-dashboard: flags, logging, signals; DashboardServer does the rest.
-#include <signal.h>
-
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -9,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "clients/dashboard/dashboard_server.h"
+#include "parallel/shutdown_signals.h"
 
 namespace {
 
@@ -33,15 +32,6 @@ void parse_listen(const std::string& listen, gc::dashboard::DashboardOptions& op
   }
   options.listen_host = host;
   options.listen_port = port;
-}
-
-sigset_t block_shutdown_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
 }
 
 }  // namespace
@@ -76,7 +66,7 @@ int main(int argc, char** argv) {
   options.update_interval = std::chrono::milliseconds(1000 / update_hz);
   options.query_timeout = std::chrono::milliseconds(static_cast<long>(query_timeout_s * 1000));
 
-  const sigset_t signals = block_shutdown_signals();
+  const sigset_t signals = gc::parallel::block_shutdown_signals();
   try {
     gc::dashboard::DashboardServer server(options);
     // The port on stdout, alone on its line, for scripts that asked for port 0.
