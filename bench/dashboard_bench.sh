@@ -87,10 +87,10 @@ sleep 1
 url=$(sed -n 's/^listening on //p' "$work/dashboard.txt")
 python3 "$here/bench/dashboard_sse_clients.py" "$url" "$clients" "$seconds" > "$work/sse.txt" &
 sse=$!
-d0=$(ticks "$dashboard"); dt0=$(now); c0=$(awk '{ print $14 + $15 }' "/proc/$sse/stat")
+d0=$(ticks "$dashboard"); dt0=$(now)
 phase "with the dashboard and $clients event-stream clients" bench-b
-d1=$(ticks "$dashboard"); dt1=$(now); c1=$(awk '{ print $14 + $15 }' "/proc/$sse/stat")
+d1=$(ticks "$dashboard"); dt1=$(now)
 wait "$sse" || true
 echo "dashboard: CPU $(share "$d0" "$d1" "$dt0" "$dt1") of one core over the phase"
-echo "clients: $(cat "$work/sse.txt"), CPU $(share "$c0" "$c1" "$dt0" "$dt1") of one core (Python, one process)"
+echo "clients: $(cat "$work/sse.txt")"
 echo "dropped updates: $(curl -s "${url}metrics" | awk '/^gearcoupling_dashboard_updates_dropped_total/ { print $2 }')"

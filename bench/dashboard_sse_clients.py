@@ -5,8 +5,8 @@ it is received minus when the monitor published the newest residual batch it sum
 (ResidualAggregate.latest_published_unix_s; one host, one clock).
 
     dashboard_sse_clients.py URL CLIENTS SECONDS
-prints: clients, updates received per client per second, latency p50 and p99 [ms], updates
-whose residuals were received.
+prints: clients, updates received per client per second, latency p50 and p99 [ms], residual
+aggregates received, and this process's CPU time as a share of one core.
 """
 import http.client
 import json
@@ -44,6 +44,7 @@ def client(url, seconds, latencies, counts, lock):
 
 def main():
     url, clients, seconds = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
+    cpu_start, wall_start = time.process_time(), time.monotonic()
     latencies, counts, lock = [], [], threading.Lock()
     threads = [threading.Thread(target=client, args=(url, seconds, latencies, counts, lock))
                for _ in range(clients)]
@@ -54,7 +55,8 @@ def main():
     latencies.sort()
     p = lambda q: 1e3 * latencies[min(len(latencies) - 1, int(q * len(latencies)))] if latencies else float("nan")
     print(f"clients={len(counts)} updates_per_client_per_s={statistics.mean(counts) / seconds:.2f} "
-          f"latency_p50_ms={p(0.50):.1f} latency_p99_ms={p(0.99):.1f} samples={len(latencies)}")
+          f"latency_p50_ms={p(0.50):.1f} latency_p99_ms={p(0.99):.1f} aggregates={len(latencies)} "
+          f"cpu={100 * (time.process_time() - cpu_start) / (time.monotonic() - wall_start):.1f}%")
 
 
 if __name__ == "__main__":

@@ -72,11 +72,12 @@ void InstanceBoard::take() {
   }
 }
 
-std::vector<InstanceView> InstanceBoard::snapshot() const {
+std::vector<InstanceView> InstanceBoard::snapshot() {
   const Clock::time_point now = Clock::now();
   std::vector<InstanceView> views;
   std::lock_guard lock(mutex_);
-  for (const auto& [id, entry] : entries_) {
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    const Entry& entry = it->second;
     InstanceView view{entry.info, entry.dds_liveness,
                       std::chrono::duration<double>(now - entry.received).count()};
     if (view.liveness == Liveness::kAlive && now - entry.received > options_.stale_after) {
@@ -85,8 +86,13 @@ std::vector<InstanceView> InstanceBoard::snapshot() const {
     const Clock::time_point gone_since = entry.dds_liveness == Liveness::kAlive
                                              ? entry.received + options_.stale_after
                                              : entry.liveness_changed;
-    if (view.liveness != Liveness::kAlive && now - gone_since > options_.forget_after) continue;
+    if (view.liveness != Liveness::kAlive && now - gone_since > options_.forget_after) {
+      std::erase_if(handles_, [&](const auto& handle) { return handle.second == it->first; });
+      it = entries_.erase(it);
+      continue;
+    }
     views.push_back(std::move(view));
+    ++it;
   }
   std::sort(views.begin(), views.end(), [](const InstanceView& a, const InstanceView& b) {
     return std::tie(a.info.host, a.info.pid, a.info.id) <

@@ -49,8 +49,9 @@ class InstanceBoard {
   InstanceBoard(const InstanceBoard&) = delete;
   InstanceBoard& operator=(const InstanceBoard&) = delete;
 
-  /// Every instance seen and not yet forgotten, ordered by host, then pid, then id.
-  std::vector<InstanceView> snapshot() const;
+  /// Every instance seen and not yet forgotten, ordered by host, then pid, then id. Forgets
+  /// those gone for longer than forget_after.
+  std::vector<InstanceView> snapshot();
 
  private:
   struct Entry {
@@ -65,7 +66,7 @@ class InstanceBoard {
   static void on_data_available(dds_entity_t reader, void* board);
 
   InstanceBoardOptions options_;
-  mutable std::mutex mutex_;
+  std::mutex mutex_;
   std::map<std::uint64_t, Entry> entries_;
   std::map<dds_instance_handle_t, std::uint64_t> handles_;
   protocol::Entity topic_;
