@@ -139,10 +139,10 @@ def test_a_killed_instance_turns_stale(cell):
 
 def test_a_live_chart_updates_within_1_s_of_samples_published(cell):
     driver, processes = cell["driver"], cell["processes"]
-    processes.start([MONITOR, "--domain", str(DOMAIN), "--model", "paper"],
-                    stderr=subprocess.DEVNULL)
+    cell["monitor"] = processes.start([MONITOR, "--domain", str(DOMAIN), "--model", "paper"],
+                                      stderr=subprocess.DEVNULL)
     processes.start([CLI, "replay", "--in", os.path.join(SOURCE_DIR, "data/recordings/paper_torque_ramp.csv"),
-                     "--test-cell", TEST_CELL, "--rate", "200", "--domain", str(DOMAIN)],
+                     "--test-cell", TEST_CELL, "--rate", "100", "--domain", str(DOMAIN)],
                     stdout=subprocess.DEVNULL)
     WebDriverWait(driver, 15.0, poll_frequency=0.05).until(
         lambda d: int(cell_attributes(d, TEST_CELL).get("points", 0)) > 0)
@@ -220,3 +220,15 @@ def test_metrics_of_the_running_dashboard_pass_promtool(cell):
     assert "gearcoupling_requests_served_total{" in text
     check = subprocess.run([promtool, "check", "metrics"], input=text, capture_output=True, text=True)
     assert check.returncode == 0 and check.stdout + check.stderr == "", check.stdout + check.stderr
+
+
+def test_a_test_cell_turns_grey_when_its_monitor_is_killed(cell):
+    driver = cell["driver"]
+    # The replay (1000 samples at 100 a second) still runs: the cell is alive until the kill.
+    assert cell_attributes(driver, TEST_CELL).get("state") == "alive"
+    cell["monitor"].send_signal(signal.SIGKILL)
+    cell["monitor"].wait()
+    # The health's lease is 3 s; Cyclone then reports the cell disposed ("gone"), as it does for
+    # a cell the monitor dropped; "stale" when the last health said so first.
+    WebDriverWait(driver, 8.0, poll_frequency=0.1).until(
+        lambda d: cell_attributes(d, TEST_CELL).get("state") in ("gone", "stale"))
