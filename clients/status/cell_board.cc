@@ -6,7 +6,7 @@
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "protocol/names.h"
-#include "protocol/samples.h"
+#include "clients/status/listening_reader.h"
 
 namespace gc::status {
 
@@ -59,15 +59,6 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   counts.set_runs(in.counts.runs);
 }
 
-dds_entity_t make_reader(dds_entity_t subscriber, dds_entity_t topic, const protocol::Qos& qos,
-                         void* board, dds_on_data_available_fn on_data, const char* what) {
-  dds_listener_t* listener = dds_create_listener(board);
-  dds_lset_data_available(listener, on_data);
-  const dds_entity_t reader = dds_create_reader(subscriber, topic, qos.get(), listener);
-  dds_delete_listener(listener);
-  return check_dds(reader, what);
-}
-
 }  // namespace
 
 void CellBoard::Accumulator::add(double value, bool first) {
@@ -89,28 +80,18 @@ CellBoard::CellBoard(dds_entity_t participant, CellBoardOptions options)
       health_topic_(live::make_health_topic(participant)),
       residual_topic_(live::make_residual_topic(participant)),
       subscriber_(live::make_live_subscriber(participant)) {
-  health_reader_ = Entity(make_reader(subscriber_.get(), health_topic_.get(),
-                                      live::health_reader_qos(), this, &CellBoard::on_health,
-                                      "dds_create_reader(health)"));
-  residual_reader_ = Entity(make_reader(subscriber_.get(), residual_topic_.get(),
-                                        live::residual_qos(), this, &CellBoard::on_residuals,
-                                        "dds_create_reader(residual)"));
+  health_reader_ = make_listening_reader<&CellBoard::take_health>(
+      subscriber_.get(), health_topic_.get(), live::health_reader_qos(), this,
+      "dds_create_reader(health)");
+  residual_reader_ = make_listening_reader<&CellBoard::take_residuals>(
+      subscriber_.get(), residual_topic_.get(), live::residual_qos(), this,
+      "dds_create_reader(residual)");
   take_health();
   take_residuals();
 }
 
-void CellBoard::on_health(dds_entity_t, void* board) {
-  static_cast<CellBoard*>(board)->take_health();
-}
-
-void CellBoard::on_residuals(dds_entity_t, void* board) {
-  static_cast<CellBoard*>(board)->take_residuals();
-}
-
 void CellBoard::take_health() {
-  for (;;) {
-    protocol::LoanedSamples<gearcoupling_CellHealth> samples(health_reader_.get());
-    if (samples.size() == 0) return;
+  take_each_batch<gearcoupling_CellHealth>(health_reader_.get(), [this](const auto& samples) {
     const Clock::time_point now = Clock::now();
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -133,13 +114,11 @@ void CellBoard::take_health() {
       entry.writer_lost = info.instance_state == DDS_IST_NOT_ALIVE_NO_WRITERS;
       if (info.instance_state != DDS_IST_ALIVE) entry.last_heard = now;
     }
-  }
+  });
 }
 
 void CellBoard::take_residuals() {
-  for (;;) {
-    protocol::LoanedSamples<gearcoupling_ResidualBatch> samples(residual_reader_.get());
-    if (samples.size() == 0) return;
+  take_each_batch<gearcoupling_ResidualBatch>(residual_reader_.get(), [this](const auto& samples) {
     const Clock::time_point now = Clock::now();
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -163,7 +142,7 @@ void CellBoard::take_residuals() {
         aggregate.count += 1;
       }
     }
-  }
+  });
 }
 
 std::vector<v1::TestCellRecord> CellBoard::snapshot() { return collect(false); }

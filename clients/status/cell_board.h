@@ -72,8 +72,6 @@ class CellBoard {
   void take_health();
   void take_residuals();
   std::vector<v1::TestCellRecord> collect(bool drain);
-  static void on_health(dds_entity_t reader, void* board);
-  static void on_residuals(dds_entity_t reader, void* board);
 
   CellBoardOptions options_;
   std::mutex mutex_;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <tuple>
 
+#include "clients/status/listening_reader.h"
 #include "protocol/names.h"
 #include "protocol/qos.h"
-#include "protocol/samples.h"
 #include "protocol/topics.h"
 
 namespace gc::status {
@@ -27,23 +27,13 @@ InstanceBoard::InstanceBoard(dds_entity_t participant, InstanceBoardOptions opti
   const protocol::Qos partition = protocol::partition_qos(protocol::kStatusPartition);
   subscriber_ = Entity(check_dds(dds_create_subscriber(participant, partition.get(), nullptr),
                                  "dds_create_subscriber(status)"));
-  dds_listener_t* listener = dds_create_listener(this);
-  dds_lset_data_available(listener, &InstanceBoard::on_data_available);
-  const protocol::Qos qos = protocol::status_reader_qos();
-  reader_ = Entity(check_dds(dds_create_reader(subscriber_.get(), topic_.get(), qos.get(), listener),
-                             "dds_create_reader(status)"));
-  dds_delete_listener(listener);
+  reader_ = make_listening_reader<&InstanceBoard::take>(
+      subscriber_.get(), topic_.get(), protocol::status_reader_qos(), this, "dds_create_reader(status)");
   take();  // samples that arrived before the listener was in place
 }
 
-void InstanceBoard::on_data_available(dds_entity_t, void* board) {
-  static_cast<InstanceBoard*>(board)->take();
-}
-
 void InstanceBoard::take() {
-  for (;;) {
-    protocol::LoanedSamples<gearcoupling_ServiceStatus> samples(reader_.get());
-    if (samples.size() == 0) return;
+  take_each_batch<gearcoupling_ServiceStatus>(reader_.get(), [this](const auto& samples) {
     const Clock::time_point now = Clock::now();
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -69,7 +59,7 @@ void InstanceBoard::take() {
       if (liveness != entry.dds_liveness) entry.liveness_changed = now;
       entry.dds_liveness = liveness;
     }
-  }
+  });
 }
 
 std::vector<InstanceView> InstanceBoard::snapshot() {

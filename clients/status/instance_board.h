@@ -63,7 +63,6 @@ class InstanceBoard {
 
   /// Takes every sample the reader holds (Cyclone's listener thread).
   void take();
-  static void on_data_available(dds_entity_t reader, void* board);
 
   InstanceBoardOptions options_;
   std::mutex mutex_;
