@@ -31,8 +31,10 @@ namespace {
 /// Requests waiting for their client's reply reader, at most: a flood of made-up client ids
 /// costs a bounded amount of memory and then one admission check per request.
 constexpr std::size_t kMaxParkedRequests = 1024;
-/// Replies waiting for a client that does not acknowledge, at most.
+/// Replies waiting for clients that do not acknowledge, at most, and for one client: eight
+/// deaf clients fill it before another's replies find no room.
 constexpr std::size_t kMaxBackloggedReplies = 4096;
+constexpr std::size_t kMaxBackloggedRepliesPerClient = 512;
 /// How often the dispatch loop looks at parked requests while there are some.
 constexpr std::chrono::milliseconds kParkedPoll{10};
 
@@ -86,7 +88,7 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
       reply_writers_(participant_.get(), protocol::handles(reply_topics_),
                      protocol::hex_id(instance_id_), kMaxParkedRequests,
                      [this] { dds_set_guardcondition(guard_.get(), true); }),
-      reply_backlog_(config.reply_block_s, kMaxBackloggedReplies,
+      reply_backlog_(config.reply_block_s, kMaxBackloggedReplies, kMaxBackloggedRepliesPerClient,
                      [this](std::uint64_t client_id) {
                        reply_writers_.mark_departed(client_id, config_.departed_hold_s);
                      }),
@@ -299,10 +301,11 @@ void Service::write_reply(const gearcoupling_Correlation& correlation,
     if (!reply_backlog_.hold({correlation.client_id, correlation.sequence_number, kCalculation,
                               writer, std::move(sample)})) {
       // Debug only: counted in the stats line, and a deaf client would flood the log.
-      spdlog::debug("{} client={} seq={}: reply dropped: {} replies already wait for clients that "
-                   "do not acknowledge",
-                   protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
-                   correlation.sequence_number, kMaxBackloggedReplies);
+      spdlog::debug("{} client={} seq={}: reply dropped: {} replies already wait for this "
+                    "client, or {} for all clients that do not acknowledge",
+                    protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                    correlation.sequence_number, kMaxBackloggedRepliesPerClient,
+                    kMaxBackloggedReplies);
     }
   } else if (rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
     spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
