@@ -4,7 +4,8 @@
 // within one window the health is at the noise level. Every replayed sample is counted once.
 #include <chrono>
 
-#include "live/model_swap_publisher.h"
+#include "tests/live/sample_stream.h"
+
 #include "tests/live/live_fixture.h"
 
 namespace gc::test {
@@ -64,9 +65,10 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   EXPECT_NE(diagnose.out.find("explained by eccentricity"), std::string::npos) << diagnose.out;
 
   // 4. Swap the diagnosed model in.
-  live::ModelSwapPublisher swaps(participant_.get());
-  ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
-  swaps.publish(cell, read_file(fixed));
+  const auto swap = run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", cell, "--model", fixed, "--wait", "20"}));
+  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+  EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
   const auto swapped = health_.wait_for(
       cell, [](const live::HealthView& h) { return h.model_name == "paper_diagnosed"; }, 10s);
   ASSERT_TRUE(swapped.has_value());
@@ -95,6 +97,27 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
     EXPECT_LT(after->rmse_nm[channel], 0.7 * after->previous_rmse_nm[channel]);  // 0.34, 0.51
   }
   EXPECT_EQ(after->worst_region, "");
+}
+
+// A model out of its effect's bounds is refused by swap-model before it is published (the
+// monitor's own check of published text: robustness_test.cc, NanAndGarbage...).
+TEST_F(LiveTest, SwapModelRefusesABadModelWithTheReasonAndKeepsTheModelInForce) {
+  const std::string cell = "refuses";
+  auto monitor = start_monitor({"--health-period", "0.1"});
+  live::MeasurementPublisher publisher(participant_.get(), cell);
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  publish_stream(publisher, paper_samples(), 1, 1000.0);
+  ASSERT_TRUE(health_.wait_for(cell, [](const live::HealthView& h) { return h.taken == 1; }, 10s));
+  // Out of the effect's bounds: the monitor checks the text as validate --model checks a file.
+  const std::string bad = temp_path("bad") + ".textproto";
+  cli::testing::write_file(bad, "name: \"bad\" coupling: \"nrel_upwind\" effects { name: \"friction\" "
+                                "parameters { name: \"mu0\" value: 7 } }\n");
+  const auto swap = run_gearcoupling(on_test_domain({"swap-model", "--test-cell", cell, "--model", bad}));
+  EXPECT_EQ(swap.exit_code, 2) << swap.out << swap.err;
+  EXPECT_NE(swap.err.find("mu0"), std::string::npos) << swap.err;
+  const auto health = health_.latest(cell);
+  ASSERT_TRUE(health.has_value());
+  EXPECT_EQ(health->model_name, "paper");
 }
 
 }  // namespace
