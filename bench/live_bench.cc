@@ -61,7 +61,6 @@ void publish_cell(dds_entity_t participant, Cell& cell, const std::vector<gc::Re
   gc::live::MeasurementPublisher publisher(participant, cell.name);
   publisher.wait_for_readers(1, std::chrono::seconds(10));
   std::this_thread::sleep_until(start);
-  const double period_s = samples.back().input.time_s + 0.01;
   std::uint64_t first_unwritten = 0;
   const auto flush = [&](std::uint64_t upto) {
     const std::uint64_t now = realtime_ns();   // before the write: a preempted write counts
@@ -70,8 +69,10 @@ void publish_cell(dds_entity_t participant, Cell& cell, const std::vector<gc::Re
   };
   Clock::time_point next_flush = start;
   for (std::uint64_t i = 0; i < count; ++i) {
+    // The recording's values, stamped at this stream's own rate: the derived inputs (rates over
+    // the last 0.5 s) see the 5000 samples a 10 kHz stream has in their window.
     gc::RecordedSample sample = samples[i % samples.size()];
-    sample.input.time_s += period_s * static_cast<double>(i / samples.size());
+    sample.input.time_s = static_cast<double>(i) / rate_hz;
     const auto due = start + std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(static_cast<double>(i) / rate_hz));
     if (batch_us == 0 || due >= next_flush) {

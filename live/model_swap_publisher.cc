@@ -6,7 +6,6 @@
 #include "live/live_names.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
-#include "protocol/matching.h"
 
 namespace gc::live {
 
@@ -30,9 +29,7 @@ void ModelSwapPublisher::publish(const std::string& test_cell, const std::string
 
 bool ModelSwapPublisher::wait_for_readers(std::uint32_t readers,
                                           std::chrono::milliseconds timeout) const {
-  return protocol::wait_until(
-      [&] { return protocol::matched_reader_count(writer_.get()) >= readers; },
-      std::chrono::steady_clock::now() + timeout);
+  return live::wait_for_readers(writer_.get(), readers, timeout);
 }
 
 }  // namespace gc::live

@@ -25,9 +25,10 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   auto monitor = start_monitor({"--window", "20", "--health-period", "0.2", "--stale", "30",
                                 "--dispose", "60"});
   const std::string capture = temp_path("capture") + ".csv";
+  const std::string record_log = temp_path("record_log");
   ChildProcess record({GC_GEARCOUPLING_PATH, "record", "--test-cell", cell, "--seconds", "6",
                        "--out", capture, "--domain", std::to_string(test_domain())},
-                      temp_path("record_log"));
+                      record_log);
 
   // 1. Replay at 20x, once the monitor and the recorder are both matched.
   const auto replay = run_gearcoupling(on_test_domain(
@@ -54,7 +55,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
       << "health: " << before->worst_region << "\nvalidate:\n" << validate.out;
 
   // 3. The capture holds the stream, and diagnose on it names the effect.
-  ASSERT_EQ(record.wait_exit(30.0), 0) << read_file(temp_path("record_log"));
+  ASSERT_EQ(record.wait_exit(30.0), 0) << read_file(record_log);
   const auto validate_capture = run_gearcoupling({"validate", "--data", capture, "--model", "paper"});
   ASSERT_EQ(validate_capture.exit_code, 0) << validate_capture.err;
   EXPECT_NE(validate_capture.out.find("1000 rows"), std::string::npos) << validate_capture.out;

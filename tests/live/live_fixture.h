@@ -11,7 +11,6 @@
 #include "live/health_subscriber.h"
 #include "live/live_topics.h"
 #include "tests/cli/run_process.h"
-#include "tests/live/child_process.h"
 #include "tests/service/service_process.h"
 
 namespace gc::test {
@@ -27,7 +26,8 @@ inline std::unique_ptr<ChildProcess> start_monitor(const std::vector<std::string
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const std::string log = cli::testing::temp_path("monitor_log");
   if (log_path != nullptr) *log_path = log;
-  return std::make_unique<ChildProcess>(args, log);
+  return std::make_unique<ChildProcess>(args, log, std::vector<std::pair<std::string, std::string>>{},
+                                        std::string{}, true);
 }
 
 /// The `gearcoupling` flags that put a live subcommand on the test's domain.
