@@ -25,6 +25,7 @@
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "live/measurement_publisher.h"
+#include "live/model_swap_publisher.h"
 #include "protocol/samples.h"
 
 namespace {
@@ -104,6 +105,8 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds);
   app.add_option("--batch-us", batch_us, "publish what is due every this many us; 0: one sample a message");
   app.add_option("--monitor-pid", monitor_pid)->required();
+  int swap_ms = 0;
+  app.add_option("--swap-ms", swap_ms, "swap every cell's model every this many ms (0: never)");
   CLI11_PARSE(app, argc, argv);
 
   const auto samples = gc::analysis::read_recording(GC_SOURCE_DIR "/data/recordings/paper_torque_ramp.csv").samples;
@@ -148,10 +151,31 @@ int main(int argc, char** argv) {
   for (Cell& cell : cell_list) {
     publishers.emplace_back(publish_cell, participant.get(), std::ref(cell), std::cref(samples), count, rate_hz, batch_us, start);
   }
+  // Model swaps during the run: the paper's model and one with mu 0.12, in turn, to every cell.
+  std::atomic<bool> swapping{swap_ms > 0};
+  std::uint64_t swaps_published = 0;
+  std::thread swapper([&] {
+    if (!swapping) return;
+    gc::live::ModelSwapPublisher swaps(participant.get());
+    swaps.wait_for_readers(1, std::chrono::seconds(10));
+    std::ifstream paper_file(GC_SOURCE_DIR "/data/models/paper.textproto");
+    const std::string paper((std::istreambuf_iterator<char>(paper_file)), std::istreambuf_iterator<char>());
+    std::string other = paper;
+    other.replace(other.find("name: \"paper\""), 14, "name: \"mu012\"");
+    other.replace(other.find("value: 0.1 "), 11, "value: 0.12 ");
+    std::this_thread::sleep_until(start);
+    while (swapping) {
+      for (const Cell& cell : cell_list) swaps.publish(cell.name, swaps_published % 2 == 0 ? other : paper);
+      ++swaps_published;
+      std::this_thread::sleep_for(std::chrono::milliseconds(swap_ms));
+    }
+  });
   std::this_thread::sleep_until(start);
   const double cpu_before = cpu_seconds(monitor_pid);
   const Clock::time_point wall_before = Clock::now();
   for (std::thread& t : publishers) t.join();
+  swapping = false;
+  swapper.join();
   const double cpu_after = cpu_seconds(monitor_pid);
   const double wall_s = std::chrono::duration<double>(Clock::now() - wall_before).count();
   std::this_thread::sleep_for(std::chrono::seconds(2));
@@ -182,9 +206,10 @@ int main(int argc, char** argv) {
     }
   }
   const std::uint64_t published = count * static_cast<std::uint64_t>(cells);
-  fmt::print("cells {} x {} Hz for {:.1f} s, batch every {} us: published {}, monitor took {}, "
-             "evaluated {}, lost {}, residuals received {}\n",
-             cells, rate_hz, wall_s, batch_us, published, taken, evaluated, lost, received.size());
+  fmt::print("cells {} x {} Hz for {:.1f} s, batch every {} us, {} model swaps per cell: "
+             "published {}, monitor took {}, evaluated {}, lost {}, residuals received {}\n",
+             cells, rate_hz, wall_s, batch_us, swaps_published, published, taken, evaluated, lost,
+             received.size());
   const double p50 = percentile(latency_us, 0.50), p99 = percentile(latency_us, 0.99),
                max = latency_us.empty() ? 0.0 : *std::max_element(latency_us.begin(), latency_us.end());
   fmt::print("publication to residual: p50 {:.0f} us, p99 {:.0f} us, max {:.0f} us; monitor CPU "

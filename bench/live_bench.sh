@@ -6,7 +6,8 @@
 #   bench/live_bench.sh [BUILD_DIR]        (default: build)
 #
 # LIVE_BENCH_CELLS (4), LIVE_BENCH_RATE (10000), LIVE_BENCH_SECONDS (10),
-# LIVE_BENCH_BATCHES ("1000 0"), LIVE_BENCH_RT (empty; "1": monitor and publishers under
+# LIVE_BENCH_BATCHES ("1000 0"), LIVE_BENCH_SWAP_MS (0; 100: a model swap to every cell every
+# 100 ms), LIVE_BENCH_RT (empty; "1": monitor and publishers under
 # SCHED_FIFO priority 10 with chrt, as on a test cell's own host). Bounded in time; domain
 # derived from this shell's pid.
 set -eu
@@ -28,7 +29,8 @@ for batch in $batches; do
   monitor=$!
   sleep 1
   timeout $((seconds + 60)) $rt "$build/bench/gc_bench_live" --domain "$domain" --cells "$cells" \
-    --rate "$rate" --seconds "$seconds" --batch-us "$batch" --monitor-pid "$monitor" || true
+    --rate "$rate" --seconds "$seconds" --batch-us "$batch" --monitor-pid "$monitor" \
+    --swap-ms "${LIVE_BENCH_SWAP_MS:-0}" || true
   kill -TERM "$monitor"; wait "$monitor" || true
   monitor=""
 done
