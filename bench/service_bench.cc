@@ -9,12 +9,14 @@
 // (catalogue coupling nrel_upwind); p50/p99/mean of the round trip. Throughput: K clients (each
 // its own participant and reply partition, one thread each) keeping --window induced-moments
 // requests in flight for --seconds; completed replies per second. Every loop is bounded in
-// count and time.
+// count and time. Listener mode (jam_angle_cb, moments_cb): the same latency with call_then, each
+// reply's callback sending the next request, as ddsperf's ping does.
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <future>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -84,6 +86,48 @@ void latency(gc::client::Client& client, const char* name, const Request& reques
               percentile(us, 0.50), percentile(us, 0.99), mean);
 }
 
+// The same round trip in listener mode, as ddsperf's ping measures it: each reply's callback
+// (call_then, in Cyclone's receive thread) takes the time and sends the next request, so no
+// thread of the client is woken in between.
+template <Calculation kCalculation, typename Request>
+void latency_in_listener(gc::client::Client& client, const char* name, const Request& request,
+                         int count) {
+  std::vector<double> us;
+  us.reserve(static_cast<std::size_t>(count));
+  std::promise<std::string> done;  // "" or the error that stopped the run
+  const Clock::time_point stop = Clock::now() + std::chrono::seconds(30);
+  Clock::time_point start;
+  gc::client::Client::Callback<kCalculation> on_reply = [&](auto outcome) {
+    if (outcome.error) {
+      try {
+        std::rethrow_exception(outcome.error);
+      } catch (const std::exception& e) {
+        done.set_value(e.what());
+      }
+      return;
+    }
+    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+    if (static_cast<int>(us.size()) == count || Clock::now() >= stop) {
+      done.set_value("");
+      return;
+    }
+    start = Clock::now();
+    client.call_then<kCalculation>(request, on_reply);
+  };
+  std::future<std::string> finished = done.get_future();
+  start = Clock::now();
+  client.call_then<kCalculation>(request, on_reply);
+  const std::string error = finished.get();
+  if (!error.empty()) {
+    std::fprintf(stderr, "%s in listener mode failed: %s\n", name, error.c_str());
+    std::exit(1);
+  }
+  double mean = 0.0;
+  for (double x : us) mean += x / static_cast<double>(us.size());
+  std::printf("latency %-16s n=%zu p50=%.1fus p99=%.1fus mean=%.1fus (listener mode)\n", name,
+              us.size(), percentile(us, 0.50), percentile(us, 0.99), mean);
+}
+
 void throughput(const Options& o, int clients) {
   std::vector<std::unique_ptr<gc::client::Client>> pool;
   for (int c = 0; c < clients; ++c) {
@@ -145,6 +189,13 @@ int main(int argc, char** argv) {
                                     o.latency_requests);
     latency<Calculation::kInducedMoments>(
         client, "induced_moments",
+        gc::protocol::InducedMomentsRequest{CatalogueName{"nrel_upwind"}, kPoint, {}},
+        o.latency_requests);
+    latency_in_listener<Calculation::kJamAngle>(
+        client, "jam_angle_cb", gc::protocol::JamAngleRequest{CatalogueName{"nrel_upwind"}},
+        o.latency_requests);
+    latency_in_listener<Calculation::kInducedMoments>(
+        client, "moments_cb",
         gc::protocol::InducedMomentsRequest{CatalogueName{"nrel_upwind"}, kPoint, {}},
         o.latency_requests);
   }

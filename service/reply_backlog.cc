@@ -2,6 +2,7 @@
 
 #include <map>
 #include <set>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 
@@ -16,11 +17,11 @@ constexpr std::chrono::milliseconds kRetry{1};
 
 }  // namespace
 
-ReplyBacklog::ReplyBacklog(double hold_s, std::size_t max_replies,
+ReplyBacklog::ReplyBacklog(double hold_s, std::size_t max_replies, std::size_t max_per_client,
                            std::function<void(std::uint64_t)> on_expired)
     : hold_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(hold_s))),
-      max_replies_(max_replies),
       on_expired_(std::move(on_expired)),
+      quota_(max_replies, max_per_client),
       thread_([this] { retry_loop(); }) {}
 
 ReplyBacklog::~ReplyBacklog() { stop(); }
@@ -28,7 +29,7 @@ ReplyBacklog::~ReplyBacklog() { stop(); }
 bool ReplyBacklog::hold(Reply reply) {
   {
     std::lock_guard lock(mutex_);
-    if (stopping_ || replies_.size() >= max_replies_) {
+    if (stopping_ || !quota_.take(reply.client_id)) {
       dropped_ += 1;
       return false;
     }
@@ -52,7 +53,7 @@ void ReplyBacklog::stop() {
 
 std::size_t ReplyBacklog::size() const {
   std::lock_guard lock(mutex_);
-  return replies_.size();
+  return quota_.total();
 }
 
 std::uint64_t ReplyBacklog::written_late() const {
@@ -90,6 +91,7 @@ void ReplyBacklog::retry_once(bool final) {
   std::set<std::uint64_t> full;                   // a write to it timed out in this round
   std::map<std::uint64_t, std::size_t> expired;   // client -> replies dropped in this round
   std::deque<Reply> kept;
+  std::vector<std::uint64_t> left;                // the client of each reply that left
   std::uint64_t written = 0;
   std::uint64_t gone = 0;
   for (Reply& reply : replies) {
@@ -98,10 +100,13 @@ void ReplyBacklog::retry_once(bool final) {
                                 : dds_write(reply.writer, reply.sample.get());
     if (rc == DDS_RETCODE_OK) {
       written += 1;
+      left.push_back(reply.client_id);
     } else if (rc != DDS_RETCODE_TIMEOUT) {
       gone += 1;  // the writer was deleted: the client left
+      left.push_back(reply.client_id);
     } else if (final || now >= reply.expires) {
       expired[reply.client_id] += 1;
+      left.push_back(reply.client_id);
     } else {
       full.insert(reply.client_id);
       kept.push_back(std::move(reply));
@@ -111,6 +116,7 @@ void ReplyBacklog::retry_once(bool final) {
     std::lock_guard lock(mutex_);
     written_late_ += written;
     dropped_ += gone;
+    for (const std::uint64_t client : left) quota_.give_back(client);
     for (const auto& [client, count] : expired) dropped_ += count;
     // Replies held meanwhile come after the older ones.
     for (Reply& reply : replies_) kept.push_back(std::move(reply));

@@ -18,6 +18,7 @@
 #include <dds/dds.h>
 
 #include "protocol/calculation.h"
+#include "service/backlog_quota.h"
 
 namespace gc::service {
 
@@ -35,16 +36,18 @@ class ReplyBacklog {
     Clock::time_point expires{};  ///< set by hold()
   };
 
-  /// Holds at most `max_replies` at once. `on_expired(client_id)` is called (under no lock of
-  /// this class) when a reply to that client is dropped for waiting `hold_s`.
-  ReplyBacklog(double hold_s, std::size_t max_replies,
+  /// Holds at most `max_replies` at once, and `max_per_client` for one client. `on_expired(client_id)`
+  /// is called (under no lock of this class) when a reply to that client is dropped for
+  /// waiting `hold_s`.
+  ReplyBacklog(double hold_s, std::size_t max_replies, std::size_t max_per_client,
                std::function<void(std::uint64_t client_id)> on_expired);
   /// stop().
   ~ReplyBacklog();
   ReplyBacklog(const ReplyBacklog&) = delete;
   ReplyBacklog& operator=(const ReplyBacklog&) = delete;
 
-  /// Keeps `reply` to retry; false when `max_replies` are already held (the reply is dropped).
+  /// Keeps `reply` to retry; false when `max_replies` in all, or `max_per_client` for its
+  /// client, are already held (the reply is dropped).
   bool hold(Reply reply);
   /// Tries every held reply once more, drops the rest, joins the thread. Idempotent.
   void stop();
@@ -59,11 +62,11 @@ class ReplyBacklog {
   void retry_once(bool final);
 
   const Clock::duration hold_;
-  const std::size_t max_replies_;
   const std::function<void(std::uint64_t)> on_expired_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<Reply> replies_;
+  BacklogQuota quota_;  ///< counts replies_ and those being retried
   bool stopping_ = false;
   std::uint64_t written_late_ = 0;
   std::uint64_t dropped_ = 0;

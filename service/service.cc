@@ -16,6 +16,7 @@
 #include "protocol/wire_requests.h"
 #include "protocol/wire_results.h"
 #include "service/compute.h"
+#include "service/inline_answer.h"
 
 namespace gc::service {
 
@@ -30,8 +31,10 @@ namespace {
 /// Requests waiting for their client's reply reader, at most: a flood of made-up client ids
 /// costs a bounded amount of memory and then one admission check per request.
 constexpr std::size_t kMaxParkedRequests = 1024;
-/// Replies waiting for a client that does not acknowledge, at most.
+/// Replies waiting for clients that do not acknowledge, at most, and for one client: eight
+/// deaf clients fill it before another's replies find no room.
 constexpr std::size_t kMaxBackloggedReplies = 4096;
+constexpr std::size_t kMaxBackloggedRepliesPerClient = 512;
 /// How often the dispatch loop looks at parked requests while there are some.
 constexpr std::chrono::milliseconds kParkedPoll{10};
 
@@ -85,7 +88,7 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
       reply_writers_(participant_.get(), protocol::handles(reply_topics_),
                      protocol::hex_id(instance_id_), kMaxParkedRequests,
                      [this] { dds_set_guardcondition(guard_.get(), true); }),
-      reply_backlog_(config.reply_block_s, kMaxBackloggedReplies,
+      reply_backlog_(config.reply_block_s, kMaxBackloggedReplies, kMaxBackloggedRepliesPerClient,
                      [this](std::uint64_t client_id) {
                        reply_writers_.mark_departed(client_id, config_.departed_hold_s);
                      }),
@@ -138,7 +141,12 @@ void Service::take_requests() {
     protocol::LoanedSamples<typename T::WireRequest> samples(reader);
     if (samples.size() == 0) return;
     const Clock::time_point received = Clock::now();
-    std::vector<std::pair<gearcoupling_Correlation, std::function<void()>>> jobs;
+    struct Job {
+      gearcoupling_Correlation correlation;
+      std::function<void()> run;
+      bool cheap;  ///< cheap_to_answer, or malformed (answered with an error at once)
+    };
+    std::vector<Job> jobs;
     jobs.reserve(samples.size());
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!samples.info(i).valid_data) continue;
@@ -154,14 +162,20 @@ void Service::take_requests() {
       } catch (...) {
         malformed = std::current_exception();
       }
-      jobs.emplace_back(correlation, [this, correlation, requester, request = std::move(request),
-                                      malformed, received] {
-        answer<kCalculation>(correlation, requester, request, malformed, received);
-      });
+      const bool cheap = !request || cheap_to_answer(*request, catalogue_);
+      jobs.push_back({correlation,
+                      [this, correlation, requester, request = std::move(request), malformed,
+                       received] {
+                        answer<kCalculation>(correlation, requester, request, malformed, received);
+                      },
+                      cheap});
     }
-    // Never computed here, in Cyclone's receive thread: a costly request would hold up every
-    // other client's requests and replies.
-    for (auto& [correlation, job] : jobs) admit(kCalculation, correlation, std::move(job));
+    // A lone cheap request is answered here, in Cyclone's receive thread (inline_answer.h); a
+    // costly one, or a burst, goes to the workers, so that no request holds up the others.
+    const bool lone = jobs.size() == 1;
+    for (Job& job : jobs) {
+      admit(kCalculation, job.correlation, std::move(job.run), lone && job.cheap);
+    }
   }
 }
 
@@ -230,12 +244,18 @@ void Service::refuse_forged(Calculation calculation, const gearcoupling_Correlat
 }
 
 void Service::admit(Calculation calculation, const gearcoupling_Correlation& correlation,
-                    std::function<void()> job) {
+                    std::function<void()> job, bool answer_here) {
   const Clock::time_point park_until = Clock::now() + seconds(config_.reply_match_timeout_s);
   switch (reply_writers_.admit(correlation.client_id, calculation, correlation.sequence_number,
                                job, park_until)) {
     case ReplyWriters::Admission::kRun:
-      pool_.submit(std::move(job));
+      // Only while no request waits for a worker: otherwise the workers are the faster way.
+      if (answer_here && pool_.queued() == 0) {
+        stats_.record_answered_inline();
+        job();
+      } else {
+        pool_.submit(std::move(job));
+      }
       return;
     case ReplyWriters::Admission::kParked:
       return;
@@ -281,10 +301,11 @@ void Service::write_reply(const gearcoupling_Correlation& correlation,
     if (!reply_backlog_.hold({correlation.client_id, correlation.sequence_number, kCalculation,
                               writer, std::move(sample)})) {
       // Debug only: counted in the stats line, and a deaf client would flood the log.
-      spdlog::debug("{} client={} seq={}: reply dropped: {} replies already wait for clients that "
-                   "do not acknowledge",
-                   protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
-                   correlation.sequence_number, kMaxBackloggedReplies);
+      spdlog::debug("{} client={} seq={}: reply dropped: {} replies already wait for this "
+                    "client, or {} for all clients that do not acknowledge",
+                    protocol::to_string(kCalculation), protocol::hex_id(correlation.client_id),
+                    correlation.sequence_number, kMaxBackloggedRepliesPerClient,
+                    kMaxBackloggedReplies);
     }
   } else if (rc == DDS_RETCODE_BAD_PARAMETER || rc == DDS_RETCODE_ALREADY_DELETED) {
     spdlog::warn("{} client={} seq={}: reply not delivered: the client left while it was computed",
@@ -352,10 +373,11 @@ void Service::log_stats() const {
   }
   const AdmissionDrops drops = reply_writers_.drops();
   if (!line.empty()) line.pop_back();  // the last calculation's ';': the format adds one
-  spdlog::info("stats: clients={} queued={} parked={} backlog={}{}; dropped before work: "
+  spdlog::info("stats: clients={} queued={} parked={} backlog={} answered_in_listener={}{}; "
+               "dropped before work: "
                "unmatched={} parked_full={} departed={} forged={}; replies written late={} dropped={}",
                reply_writers_.clients(), pool_.queued(), reply_writers_.parked(),
-               reply_backlog_.size(), line.empty() ? " no requests yet" : line, drops.unmatched,
+               reply_backlog_.size(), stats_.answered_inline(), line.empty() ? " no requests yet" : line, drops.unmatched,
                drops.parked_full, drops.departed, stats_.forged(), reply_backlog_.written_late(),
                reply_backlog_.dropped());
 }
@@ -400,6 +422,12 @@ void Service::run() {
   for (const Entity& reader : request_readers_) dds_set_listener(reader.get(), nullptr);
   take_all_requests();
   release_parked(true);
+  if (const std::size_t parked = reply_writers_.parked(); parked > 0) {
+    spdlog::warn("shutting down: {} request(s) dropped unanswered: their client's reply reader "
+                 "had not matched yet (a made-up client_id, or a client that did not wait for "
+                 "discovery)",
+                 parked);
+  }
   pool_.drain_and_stop();
   reply_backlog_.stop();
   log_stats();

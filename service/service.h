@@ -53,10 +53,11 @@ class Service {
               std::exception_ptr malformed, std::chrono::steady_clock::time_point received);
   void refuse_forged(protocol::Calculation calculation,
                      const gearcoupling_Correlation& correlation);
-  /// Hands `job` (a request of `client_id`) to the workers if its reply writer is matched, else
-  /// parks it (ReplyWriters::admit) or drops it: no worker waits for a client's reader.
+  /// Runs `job` (a request of `client_id`) if its reply writer is matched: here when
+  /// `answer_here` and no job waits for a worker, else on a worker. Otherwise parks it
+  /// (ReplyWriters::admit) or drops it: no thread waits for a client's reader.
   void admit(protocol::Calculation calculation, const gearcoupling_Correlation& correlation,
-             std::function<void()> job);
+             std::function<void()> job, bool answer_here);
   /// Parked requests whose reader matched go to the workers; the expired are logged, at most
   /// once a second unless `final`.
   void release_parked(bool final);

@@ -30,6 +30,9 @@ class ServiceStats {
   /// A request refused for a forged client_id (not answered, not in served or failed).
   void record_forged() { forged_ += 1; }
   std::uint64_t forged() const { return forged_; }
+  /// A request about to be answered in the request listener (inline_answer.h), not on a worker.
+  void record_answered_inline() { answered_inline_ += 1; }
+  std::uint64_t answered_inline() const { return answered_inline_; }
 
  private:
   struct PerCalculation {
@@ -41,6 +44,7 @@ class ServiceStats {
   mutable std::mutex mutex_;
   std::array<PerCalculation, 5> calculations_;
   std::atomic<std::uint64_t> forged_{0};
+  std::atomic<std::uint64_t> answered_inline_{0};
 };
 
 }  // namespace gc::service

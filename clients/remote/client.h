@@ -3,6 +3,7 @@
 //   gc::client::Client client({.domain = 7});
 //   gc::JamAngle jam = client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
 //   auto future = client.call_async<Calculation::kInducedMoments>(request);  // many in flight
+//   client.call_then<Calculation::kJamAngle>(request, [](auto outcome) { ... });  // a callback
 //
 // Discovery is handled: instances are found through the status topic, and no request is
 // written to an instance before this client's request writer has matched the instance's
@@ -77,6 +78,18 @@ struct InstanceInfo {
   std::vector<CalculationStatus> calculations;
 };
 
+/// What a call_then callback receives: the result, or the error call() would throw.
+template <typename Result>
+struct Outcome {
+  std::optional<Result> result;  ///< set on success
+  std::exception_ptr error;      ///< set on failure
+  /// The result, or rethrows the error.
+  const Result& value() const {
+    if (error) std::rethrow_exception(error);
+    return *result;
+  }
+};
+
 /// What happened to this client's requests so far.
 struct ClientCounters {
   std::uint64_t sent = 0;          ///< requests written, resends included
@@ -97,6 +110,20 @@ class Client {
   ~Client();
   Client(const Client&) = delete;
   Client& operator=(const Client&) = delete;
+
+  template <protocol::Calculation kCalculation>
+  using Callback =
+      std::function<void(Outcome<typename protocol::CalculationTraits<kCalculation>::Result>)>;
+
+  /// Sends `request` (waiting, like call_async, for a ready instance) and returns; `done` is
+  /// called once with the result or the error: in Cyclone's receive thread as the reply arrives
+  /// (no thread hand-off, as in ddsperf's listener mode), in this client's own thread for a
+  /// timeout or ClientClosed, or before call_then returns when no instance was ready in time.
+  /// It must not block or throw. It may send the next request of a calculation that has just
+  /// been answered (an instance is ready, so that send does not wait for discovery).
+  template <protocol::Calculation kCalculation>
+  void call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
+                 Callback<kCalculation> done);
 
   /// Sends `request` and returns at once; the future holds the result or the error.
   template <protocol::Calculation kCalculation>
@@ -189,8 +216,8 @@ struct Client::Pending {
 };
 
 template <protocol::Calculation kCalculation>
-std::future<typename protocol::CalculationTraits<kCalculation>::Result> Client::call_async(
-    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+void Client::call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
+                       Callback<kCalculation> done) {
   using T = protocol::CalculationTraits<kCalculation>;
   using Result = typename T::Result;
   auto sample = std::make_shared<protocol::OwnedSample<typename T::WireRequest>>(T::request_type());
@@ -199,26 +226,41 @@ std::future<typename protocol::CalculationTraits<kCalculation>::Result> Client::
   sample->get().correlation.client_id = client_id_;
   sample->get().correlation.sequence_number = sequence;
 
-  auto promise = std::make_shared<std::promise<Result>>();
-  std::future<Result> future = promise->get_future();
+  auto callback = std::make_shared<Callback<kCalculation>>(std::move(done));
   Pending pending;
   pending.calculation = kCalculation;
   pending.deadline = Clock::now() + options_.timeout;
   pending.write = [sample](dds_entity_t writer) { return dds_write(writer, &sample->get()); };
-  pending.deliver = [promise](const void* wire) {
+  pending.deliver = [callback](const void* wire) {
     const auto& reply = *static_cast<const typename T::WireReply*>(wire);
-    if (reply.status == gearcoupling_STATUS_OK) {
-      promise->set_value(protocol::from_wire(reply.result));
-      return;
-    }
+    Outcome<Result> outcome;
     try {
-      throw_reply_error(reply.status, reply.field, reply.message);
+      if (reply.status != gearcoupling_STATUS_OK) {
+        throw_reply_error(reply.status, reply.field, reply.message);
+      }
+      outcome.result = protocol::from_wire(reply.result);
     } catch (...) {
-      promise->set_exception(std::current_exception());
+      outcome.error = std::current_exception();
     }
+    (*callback)(std::move(outcome));
   };
-  pending.fail = [promise](std::exception_ptr error) { promise->set_exception(error); };
+  pending.fail = [callback](std::exception_ptr error) { (*callback)({std::nullopt, error}); };
   send(sequence, std::move(pending));
+}
+
+template <protocol::Calculation kCalculation>
+std::future<typename protocol::CalculationTraits<kCalculation>::Result> Client::call_async(
+    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+  using Result = typename protocol::CalculationTraits<kCalculation>::Result;
+  auto promise = std::make_shared<std::promise<Result>>();
+  std::future<Result> future = promise->get_future();
+  call_then<kCalculation>(request, [promise](Outcome<Result> outcome) {
+    if (outcome.error) {
+      promise->set_exception(outcome.error);
+    } else {
+      promise->set_value(std::move(*outcome.result));
+    }
+  });
   return future;
 }
 

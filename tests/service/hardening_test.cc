@@ -23,6 +23,7 @@
 #include "protocol/samples.h"
 #include "protocol/topics.h"
 #include "protocol/wire_inputs.h"
+#include "tests/service/scaled_coupling.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -34,23 +35,8 @@ using protocol::check_dds;
 using protocol::Entity;
 using Clock = std::chrono::steady_clock;
 
-/// The largest coupling a request may carry inline (teeth = 10,000, the core's limit): nrel_upwind
-/// with the same module and tooth, so the same jam angle, and 100 times the teeth.
-CouplingDefinition largest_inline_coupling() {
-  CouplingDefinition d = codec::load_coupling_catalog(codec::default_catalog_dir())
-                             .at("nrel_upwind")
-                             .definition();
-  const double addendum = d.outer_diameter_m - d.pitch_diameter_m;
-  const double dedendum = d.pitch_diameter_m - d.root_diameter_m;
-  d.name = "largest";
-  d.teeth = 10000;
-  d.pitch_diameter_m = d.teeth * d.module_m;
-  d.base_diameter_m = d.pitch_diameter_m * std::cos(d.pressure_angle_rad);
-  d.outer_diameter_m = d.pitch_diameter_m + addendum;
-  d.root_diameter_m = d.pitch_diameter_m - dedendum;
-  d.sleeve_root_diameter_m.reset();
-  return d;
-}
+/// The largest coupling a request may carry inline (teeth = 10,000, the core's limit).
+CouplingDefinition largest_inline_coupling() { return test::scaled_coupling(10000); }
 
 /// The costliest tooth-contact request the ranges allow: the largest coupling, the most
 /// iterations, the tightest tolerance.

@@ -124,6 +124,24 @@ TEST(MisbehavingClients, MadeUpClientIdsCostAWellBehavedClientNothing) {
   EXPECT_GE(last_count(text, "parked_full"), 1) << text.substr(0, 4000);
 }
 
+TEST(MisbehavingClients, RequestsStillParkedAtShutdownAreLoggedAsDropped) {
+  const std::string log = "/tmp/gc_misbehaving_parked_" + std::to_string(getpid()) + ".txt";
+  test::ServiceProcess service({"--reply-match-timeout", "60"}, log);
+  client::Client good({test::test_domain(), std::chrono::seconds(20)});
+  ASSERT_TRUE(good.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
+  MisbehavingClient flood("fake-ids", 0.3);
+  EXPECT_EQ(flood.wait_exit(30.0), 0);
+  service.signal(SIGTERM);  // long before the 60 s after which they would expire
+  EXPECT_EQ(service.wait_exit(10.0), 0);
+  const std::string text = read_text(log);
+  std::remove(log.c_str());
+  EXPECT_NE(text.find("shutting down: "), std::string::npos) << text.substr(0, 4000);
+  EXPECT_NE(text.find(" request(s) dropped unanswered: their client's reply reader had not "
+                      "matched yet"),
+            std::string::npos)
+      << text.substr(0, 4000);
+}
+
 TEST(MisbehavingClients, AClientThatNeverReadsItsRepliesSlowsOnlyItself) {
   const std::string log = "/tmp/gc_misbehaving_reader_" + std::to_string(getpid()) + ".txt";
   test::ServiceProcess service({"--threads", "2", "--reply-block", "5", "--log-level", "info"},
