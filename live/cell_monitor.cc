@@ -34,7 +34,7 @@ SampleOutcome CellMonitor::take(std::uint64_t run_id, std::uint64_t sequence_num
     // monitor joined were never this monitor's to lose, so gaps count from here.
     ++counts_.runs;
     run_id_ = run_id;
-    last_sequence_ = sequence_number - 1;
+    last_sequence_ = sequence_number > 0 ? sequence_number - 1 : 0;   // 0 is refused below
     last_time_s_.reset();
     derived_.emplace(options_.loading_dead_band_rad, options_.still_after_s);
     restart_windows();

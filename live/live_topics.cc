@@ -3,6 +3,7 @@
 #include "gearcoupling.h"
 #include "live/live_names.h"
 #include "live/live_qos.h"
+#include "protocol/matching.h"
 #include "protocol/qos.h"
 
 namespace gc::live {
@@ -49,6 +50,11 @@ Entity make_live_subscriber(dds_entity_t participant) {
   const protocol::Qos partition = protocol::partition_qos(kLivePartition);
   return Entity(check_dds(dds_create_subscriber(participant, partition.get(), nullptr),
                           "dds_create_subscriber(live)"));
+}
+
+bool wait_for_readers(dds_entity_t writer, std::uint32_t readers, std::chrono::milliseconds timeout) {
+  return protocol::wait_until([&] { return protocol::matched_reader_count(writer) >= readers; },
+                              std::chrono::steady_clock::now() + timeout);
 }
 
 }  // namespace gc::live

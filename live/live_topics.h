@@ -4,6 +4,9 @@
 
 #include <dds/dds.h>
 
+#include <chrono>
+#include <cstdint>
+
 #include "protocol/dds_entity.h"
 
 namespace gc::live {
@@ -19,5 +22,9 @@ protocol::Entity make_model_topic(dds_entity_t participant);
 /// A publisher / subscriber in the partition "gearcoupling.live".
 protocol::Entity make_live_publisher(dds_entity_t participant);
 protocol::Entity make_live_subscriber(dds_entity_t participant);
+
+/// Waits until `writer` has at least `readers` matched readers (a sample written before a
+/// reader is matched is lost to it). Returns whether it had them within `timeout`.
+bool wait_for_readers(dds_entity_t writer, std::uint32_t readers, std::chrono::milliseconds timeout);
 
 }  // namespace gc::live

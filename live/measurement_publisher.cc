@@ -5,7 +5,6 @@
 #include "live/live_names.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
-#include "protocol/matching.h"
 #include "protocol/random_id.h"
 
 namespace gc::live {
@@ -53,9 +52,7 @@ void MeasurementPublisher::flush() {
 
 bool MeasurementPublisher::wait_for_readers(std::uint32_t readers,
                                             std::chrono::milliseconds timeout) const {
-  return protocol::wait_until(
-      [&] { return protocol::matched_reader_count(writer_.get()) >= readers; },
-      std::chrono::steady_clock::now() + timeout);
+  return live::wait_for_readers(writer_.get(), readers, timeout);
 }
 
 }  // namespace gc::live

@@ -27,7 +27,7 @@ sigset_t block_shutdown_signals() {
   return signals;
 }
 
-gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv) {
+gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::string& log_level) {
   gc::live::MonitorOptions o;
   o.models_dir = gc::codec::bundled_data_dir("models");
   o.catalog_dir = gc::codec::default_catalog_dir();
@@ -52,6 +52,8 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv) {
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--decimate", o.decimation, "publish one residual per N evaluated samples")
       ->check(CLI::Range(1u, 1000000u))->capture_default_str();
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
   app.parse(argc, argv);
   for (const std::string& item : cell_models) {
     const auto eq = item.find('=');
@@ -73,11 +75,13 @@ int main(int argc, char** argv) {
   CLI::App app("gearcoupling-monitor: the model against live test-cell measurements over DDS "
                "(docs/protocol.md, \"The live test cell\")");
   gc::live::MonitorOptions options;
+  std::string log_level = "info";
   try {
-    options = parse_flags(app, argc, argv);
+    options = parse_flags(app, argc, argv, log_level);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  spdlog::set_level(spdlog::level::from_str(log_level));
   try {
     gc::live::Monitor monitor(options);
     spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s",

@@ -28,7 +28,8 @@ std::vector<const Subcommand*> subcommands() {
           &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand(),
           &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand(),
 #ifdef GC_CLI_LIVE
-          &replay_subcommand(),           &record_subcommand(),    &status_subcommand(),
+          &replay_subcommand(),           &record_subcommand(),    &swap_model_subcommand(),
+          &status_subcommand(),
 #endif
   };
 }

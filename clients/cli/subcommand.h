@@ -32,6 +32,7 @@ const Subcommand& validate_subcommand();
 const Subcommand& diagnose_subcommand();
 const Subcommand& replay_subcommand();
 const Subcommand& record_subcommand();
+const Subcommand& swap_model_subcommand();
 const Subcommand& status_subcommand();
 
 /// --coupling, --catalog and --json.
