@@ -9,7 +9,8 @@
 #   bench/dashboard_bench.sh [BUILD_DIR]      (default: build)
 #
 # DASHBOARD_BENCH_SECONDS (default 15): length of each phase. DASHBOARD_BENCH_CLIENTS (default
-# 20). DASHBOARD_BENCH_RATE (default 40000) samples/s. Every process is bounded by timeout; the
+# 20). DASHBOARD_BENCH_RATE (default 40000) samples/s. DASHBOARD_BENCH_CLIENT=browser: headless
+# Chromium pages (bench/dashboard_browsers.py) instead of event-stream clients. Every process is bounded by timeout; the
 # domain comes from this shell's pid.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -69,7 +70,7 @@ phase() {  # $1 name, $2 test cell; the caller starts/stops what differs
 import json, sys
 for c in json.load(sys.stdin)['test_cells']:
     if c['test_cell'] == '$2':
-        k = c['counts']; print(f\"taken={k['taken']} evaluated={k['evaluated']} lost={k['lost']}\")")
+        k = c.get('counts', {}); print(f\"taken={k.get('taken', 0)} evaluated={k.get('evaluated', 0)} lost={k.get('lost', 0)}\")")
   echo "## $1"
   echo "replay: $(cat "$work/replay-$2.txt")"
   echo "monitor: $counts, CPU $(share "$m0" "$m1" "$t0" "$t1") of one core during the replay"
@@ -85,12 +86,19 @@ dashboard=$!
 pids="$pids $dashboard"
 sleep 1
 url=$(sed -n 's/^listening on //p' "$work/dashboard.txt")
-python3 "$here/bench/dashboard_sse_clients.py" "$url" "$clients" "$seconds" > "$work/sse.txt" &
+if [ "${DASHBOARD_BENCH_CLIENT:-sse}" = browser ]; then
+  # Real headless Chromium pages; the phase starts once they are all open (at most 300 s).
+  /usr/bin/python3 "$here/bench/dashboard_browsers.py" "$url" "$clients" "$seconds" > "$work/sse.txt" &
+  i=0
+  while [ "$i" -lt 300 ] && ! grep -q ready "$work/sse.txt"; do sleep 1; i=$((i + 1)); done
+else
+  python3 "$here/bench/dashboard_sse_clients.py" "$url" "$clients" "$seconds" > "$work/sse.txt" &
+fi
 sse=$!
 d0=$(ticks "$dashboard"); dt0=$(now)
 phase "with the dashboard and $clients event-stream clients" bench-b
 d1=$(ticks "$dashboard"); dt1=$(now)
 wait "$sse" || true
 echo "dashboard: CPU $(share "$d0" "$d1" "$dt0" "$dt1") of one core over the phase"
-echo "clients: $(cat "$work/sse.txt")"
+echo "clients: $(grep -v ready "$work/sse.txt")"
 echo "dropped updates: $(curl -s "${url}metrics" | awk '/^gearcoupling_dashboard_updates_dropped_total/ { print $2 }')"
