@@ -15,6 +15,9 @@ std::vector<FlagSpec> record_flags() {
       {"seconds", "S", "how long to record [s]", std::nullopt},
       {"out", "FILE", "the recording to write (CSV, docs/recordings.md); - for standard output",
        std::nullopt},
+      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
+      domain_flag("DDS domain of the live test cells, 0..232"),
+      catalogue_flag(),
   };
 }
 

@@ -19,6 +19,9 @@ std::vector<FlagSpec> replay_flags() {
       {"readers", "N", "matched readers (monitor, record, ...) to wait for before the first sample", "1"},
       {"wait", "S", "seconds to wait for them at most", "10"},
       columns_flag(),
+      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
+      domain_flag("DDS domain of the live test cells, 0..232"),
+      catalogue_flag(),
   };
 }
 

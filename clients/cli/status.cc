@@ -13,12 +13,19 @@ namespace {
 volatile std::sig_atomic_t interrupted = 0;
 
 std::vector<FlagSpec> status_flags() {
+  FlagSpec catalogue = catalogue_flag();
+  catalogue.refused = "not taken by status: it shows the instances' own catalogues";
   return {
-      {"watch", "", "report again every --interval until Ctrl-C (or --count reports)", std::nullopt,
-       true},
-      {"interval", "S", "seconds between reports, with --watch", "1"},
+      domain_flag("DDS domain to report on, 0..232 (the network: CYCLONEDDS_URI)"),
+      {"watch", "", "report again every --interval-s until Ctrl-C (or --count reports)",
+       std::nullopt, true},
+      {"interval-s", "s", "seconds between reports, with --watch, [0.1, 3600]", "1", false, '\0',
+       {"interval"}},
       {"count", "N", "with --watch: stop after N reports (0: until Ctrl-C)", "0"},
-      {"discovery", "S", "seconds to discover the domain before the first report", "1.5"},
+      {"discovery-s", "s", "seconds to discover the domain before the first report, [0, 60]",
+       "1.5", false, '\0', {"discovery"}},
+      json_flag(),
+      catalogue,
   };
 }
 
@@ -38,8 +45,8 @@ int run_status(const Flags& flags, const Calculator&, std::FILE* out) {
   options.domain = flags.integer("domain", 0, 232);
   options.json = flags.enabled("json");
   options.watch = flags.enabled("watch");
-  options.interval = seconds_flag(flags, "interval", 0.1, 3600.0);
-  options.discovery = seconds_flag(flags, "discovery", 0.0, 60.0);
+  options.interval = seconds_flag(flags, "interval-s", 0.1, 3600.0);
+  options.discovery = seconds_flag(flags, "discovery-s", 0.0, 60.0);
   options.count = static_cast<unsigned>(flags.integer("count", 0, 1000000));
   interrupted = 0;
   std::signal(SIGINT, [](int) { interrupted = 1; });

@@ -20,6 +20,9 @@ std::vector<FlagSpec> swap_model_flags() {
       model_flag(),
       {"decimate", "N", "also publish one residual per N evaluated samples (0: keep)", "0"},
       {"wait", "S", "seconds to wait for the monitor's health to show the model in force", "10"},
+      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
+      domain_flag("DDS domain of the live test cells, 0..232"),
+      catalogue_flag(),
   };
 }
 

@@ -188,7 +188,7 @@ def test_query_panel_shows_the_numbers_of_the_cli_json(cell):
         lambda d: d.find_element(By.ID, "query-result").get_attribute("data-ready") == "true")
     shown = lambda id: driver.find_element(By.ID, id).get_attribute("data-value")
     jam = cli_json("jam-angle", "--coupling", "nrel_upwind")
-    moments = cli_json("moments", "--coupling", "nrel_upwind", "--torque", "1500000",
+    moments = cli_json("moments", "--coupling", "nrel_upwind", "--torque-nm", "1500000",
                        "--misalignment-deg", "0.5", "--direction-deg", "0", "--mu", "0.12")
     assert float(shown("r-jam-angle")) == jam["angle_deg"]
     assert shown("r-governing") == jam["governing"]

@@ -49,7 +49,7 @@ def test_the_table_and_json_show_a_running_instance_with_its_catalogue():
 def test_watch_sees_a_killed_instance_turn_stale_and_a_stopped_one_stopped():
     killed, stopped = service(), service()
     watch = subprocess.Popen([CLI, "status", "--domain", str(DOMAIN), "--json", "--watch",
-                              "--interval", "0.5", "--count", "24"],
+                              "--interval-s", "0.5", "--count", "24"],
                              env=ENVIRONMENT, stdout=subprocess.PIPE, text=True)
     try:
         states = {}
