@@ -11,6 +11,8 @@
 
 namespace {
 
+constexpr int kBadInput = 2;
+
 /// "ADDR:PORT" (the port after the last colon, so "[::1]:8080" works too) into the options.
 void parse_listen(const std::string& listen, gc::dashboard::DashboardOptions& options) {
   const std::size_t colon = listen.rfind(':');
@@ -57,11 +59,12 @@ int main(int argc, char** argv) {
   app.add_option("--query-timeout", query_timeout_s, "the query panel's wait for the service [s]")
       ->check(CLI::Range(0.1, 60.0))
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
   try {
+    app.parse(argc, argv);
     parse_listen(listen, options);
-  } catch (const CLI::Error& error) {
-    return app.exit(error);
+  } catch (const CLI::ParseError& error) {
+    // --help exits 0; bad flags exit 2, as the other programs' bad input does.
+    return app.exit(error) == 0 ? 0 : kBadInput;
   }
   options.update_interval = std::chrono::milliseconds(1000 / update_hz);
   options.query_timeout = std::chrono::milliseconds(static_cast<long>(query_timeout_s * 1000));
