@@ -252,17 +252,14 @@ RecordingReader::RecordingReader(const std::filesystem::path& path,
 
 RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
     : source_name_(path.filename().string()),
-      in_(path, std::ios::binary),
-      loading_(0.0, options.loading.still_after_s) {
+      in_(path, std::ios::binary) {
   if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
   if (!next_csv_line(in_, line_, line_number_)) {
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }
   header_ = parse_recording_header(line_, source_name_, options.renames);
-  has_speed_ = std::any_of(header_.columns.begin(), header_.columns.end(),
-                           [](const RecordingColumn& c) { return c.quantity == Quantity::speed; });
   loading_dead_band_rad_ = scan_dead_band(options.loading);
-  loading_ = LoadingDirectionTracker(loading_dead_band_rad_, options.loading.still_after_s);
+  derived_.emplace(loading_dead_band_rad_, options.loading.still_after_s);
 }
 
 double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
@@ -334,15 +331,7 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
       continue;
     }
     last_time_s_ = sample.input.time_s;
-    sample.input.loading_direction =
-        loading_.next(sample.input.time_s, sample.input.misalignment_rad);
-    sample.input.misalignment_rate_rad_s = misalignment_rate_.next(sample.input.time_s, sample.input.misalignment_rad);
-    sample.input.torque_rate_nm_s = torque_rate_.next(sample.input.time_s, sample.input.torque_nm);
-    // Every kept row has a speed when the column exists (an empty cell excludes the row), so
-    // the trapezoid runs over the kept rows, across any excluded between them.
-    if (has_speed_) {
-      sample.input.rotation_phase_rad = phase_.next(sample.input.time_s, *sample.input.speed_rpm);
-    }
+    derived_->next(sample.input);
     samples.push_back(sample);
   }
   return !samples.empty() || !in_.eof();

@@ -23,10 +23,9 @@
 #include <vector>
 
 #include "analysis/csv_fields.h"
-#include "core/input_rate.h"
+#include "analysis/derived_inputs.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
-#include "core/rotation_phase.h"
 
 namespace gc::analysis {
 
@@ -128,10 +127,7 @@ class RecordingReader {
   std::ifstream in_;
   RecordingHeader header_;
   double loading_dead_band_rad_ = 0.0;
-  LoadingDirectionTracker loading_;
-  bool has_speed_ = false;
-  RotationPhaseIntegrator phase_;
-  InputRateTracker misalignment_rate_, torque_rate_;
+  std::optional<DerivedInputs> derived_;   // once the dead band is known
   std::string line_;
   CsvFields fields_;
   long line_number_ = 0;

@@ -57,11 +57,13 @@ std::filesystem::path chart_js_path() {
                                           : std::filesystem::path(GC_CHART_JS);
 }
 
+std::string chart_js() { return read_file(chart_js_path()); }
+
 std::string validation_report_html(const gearcoupling::v1::ValidationReport& report) {
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   html += "<title>gearcoupling validate: " + report.result().recording() + "</title>\n<style>";
   html += kStyle;
-  html += "</style>\n<script>\n" + script_safe(read_file(chart_js_path())) + "\n</script>\n";
+  html += "</style>\n<script>\n" + script_safe(chart_js()) + "\n</script>\n";
   html += "</head>\n<body>\n<div id=\"main\"></div>\n<script>\nconst DATA = ";
   html += script_safe(codec::to_json(report));
   html += ";\n" + script_safe(std::string(kValidationReportJs)) + "\n</script>\n</body>\n</html>\n";

@@ -16,6 +16,10 @@ namespace gc::analysis {
 /// The path of Chart.js: $GEARCOUPLING_CHART_JS when set, else Debian's libjs-chart.js.
 std::filesystem::path chart_js_path();
 
+/// The text of Chart.js (chart_js_path()), for a page to inline or a server to serve. Throws
+/// std::runtime_error naming the file and the package when it cannot be read.
+std::string chart_js();
+
 /// The whole page. Throws std::runtime_error naming the file when Chart.js cannot be read.
 std::string validation_report_html(const gearcoupling::v1::ValidationReport& report);
 

@@ -14,8 +14,6 @@ namespace {
 namespace v1 = gearcoupling::v1;
 
 constexpr std::size_t kProblemsShown = 10;
-// Regions whose RMSE is at least this much larger than elsewhere are worth naming.
-constexpr double kNotableContrast = 1.2;
 
 void add_metrics_row(Table& table, const std::string& model, std::string_view channel,
                      const v1::ErrorMetricsRecord& m) {

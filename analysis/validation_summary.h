@@ -10,6 +10,10 @@
 
 namespace gc::analysis {
 
+/// A region is named where its RMSE is at least this many times that of the rest of the
+/// recording (validate's summary, the monitor's health).
+inline constexpr double kNotableContrast = 1.2;
+
 void print_validation_summary(const gearcoupling::v1::ValidationResult& result, std::FILE* out);
 
 /// The recording's ignored columns and scale warnings (analysis/scale_check.h), when any; the

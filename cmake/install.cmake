@@ -7,7 +7,7 @@ set(gc_public_libraries gc_core gc_codec)
 set(gc_programs gearcoupling)
 if(GC_BUILD_SERVICE)
   list(APPEND gc_public_libraries gc_client)
-  list(APPEND gc_programs gearcoupling-service)
+  list(APPEND gc_programs gearcoupling-service gearcoupling-monitor gearcoupling-dashboard)
 endif()
 install(TARGETS ${gc_programs})
 install(FILES ${PROJECT_BINARY_DIR}/clients/cli/gearcoupling.bash

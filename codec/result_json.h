@@ -13,4 +13,8 @@ namespace gc::codec {
 /// refuses the message (it does not for the messages of results.proto).
 std::string to_json(const google::protobuf::Message& message);
 
+/// The same JSON on one line, without a newline: for a stream of messages (Server-Sent Events)
+/// or an HTTP body.
+std::string to_compact_json(const google::protobuf::Message& message);
+
 }  // namespace gc::codec

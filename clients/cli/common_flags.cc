@@ -14,6 +14,8 @@ FlagSpec catalogue_flag() {
           codec::default_catalog_dir().string()};
 }
 
+FlagSpec domain_flag(std::string help) { return {"domain", "N", std::move(help), "0"}; }
+
 FlagSpec json_flag() {
   return {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
           true};
@@ -28,7 +30,7 @@ std::vector<FlagSpec> calculator_flags(bool json) {
       catalogue_flag(),
       {"remote", "", "compute on gearcoupling-service over DDS (CYCLONEDDS_URI) instead of here",
        std::nullopt, true},
-      {"domain", "N", "DDS domain of the service, with --remote, 0..232", "0"},
+      domain_flag("DDS domain of the service, with --remote, 0..232"),
       {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
        '\0', {"timeout"}},
       {"client-id-prefix", "HEX8",

@@ -10,12 +10,14 @@ FlagSpec model_flag() {
 
 std::filesystem::path default_models_dir() { return codec::default_models_dir(); }
 
-codec::ModelFile load_model_flag(const Flags& flags) {
+std::filesystem::path model_flag_path(const Flags& flags) {
   const std::string& model = flags.text("model");
   const bool is_file = model.find('/') != std::string::npos || model.ends_with(".textproto");
-  const std::filesystem::path path =
-      is_file ? std::filesystem::path(model) : default_models_dir() / (model + ".textproto");
-  return codec::load_model_description(path, flags.text("catalogue"));
+  return is_file ? std::filesystem::path(model) : default_models_dir() / (model + ".textproto");
+}
+
+codec::ModelFile load_model_flag(const Flags& flags) {
+  return codec::load_model_description(model_flag_path(flags), flags.text("catalogue"));
 }
 
 }  // namespace gc::cli

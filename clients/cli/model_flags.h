@@ -14,6 +14,10 @@ FlagSpec model_flag();
 /// the field and file.
 codec::ModelFile load_model_flag(const Flags& flags);
 
+/// The file --model names: itself when it is a path (has a '/' or ends in .textproto), else
+/// the bundled model of that name.
+std::filesystem::path model_flag_path(const Flags& flags);
+
 /// $GEARCOUPLING_MODELS when set and not empty, else the bundled data/models.
 std::filesystem::path default_models_dir();
 

@@ -34,6 +34,10 @@ const Subcommand& batch_subcommand();
 const Subcommand& synth_subcommand();
 const Subcommand& validate_subcommand();
 const Subcommand& diagnose_subcommand();
+const Subcommand& replay_subcommand();
+const Subcommand& record_subcommand();
+const Subcommand& swap_model_subcommand();
+const Subcommand& status_subcommand();
 
 /// Every subcommand, in the order of the overview.
 std::span<const Subcommand* const> subcommands();
@@ -42,6 +46,8 @@ std::span<const Subcommand* const> subcommands();
 FlagSpec catalogue_flag();
 /// --json: the result as the codec's JSON.
 FlagSpec json_flag();
+/// --domain N: a DDS domain id, 0..232 (default 0), described by `help`.
+FlagSpec domain_flag(std::string help);
 /// --coupling, --catalogue, --remote, --domain, --timeout-s, --client-id-prefix, and --json
 /// when `json`: the flags of a subcommand that computes on a Calculator (make_calculator.h).
 std::vector<FlagSpec> calculator_flags(bool json = true);

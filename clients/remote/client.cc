@@ -332,29 +332,7 @@ void Client::take_status() {
           if (reply_readers_[c]) create_request_writer_locked(*instance, c);
         }
       }
-      instance->info.host = status.host != nullptr ? status.host : "";
-      instance->info.pid = status.pid;
-      instance->info.accepting = status.accepting;
-      instance->info.threads = status.threads;
-      instance->info.uptime_s = status.uptime_s;
-      instance->info.calculations.clear();
-      for (uint32_t k = 0; k < status.calculations._length; ++k) {
-        const gearcoupling_CalculationStats& s = status.calculations._buffer[k];
-        instance->info.calculations.push_back(
-            {s.calculation != nullptr ? s.calculation : "", s.served, s.failed,
-             s.p50_service_time_s, s.p99_service_time_s});
-      }
-      instance->info.catalogue.clear();
-      instance->info.definitions.clear();
-      for (uint32_t k = 0; k < status.catalogue._length; ++k) {
-        const char* name = status.catalogue._buffer[k].name;
-        instance->info.catalogue.emplace_back(name != nullptr ? name : "");
-        try {
-          instance->info.definitions.push_back(protocol::from_wire(status.catalogue._buffer[k].definition));
-        } catch (const std::exception&) {
-          // A definition the protocol refuses (a name over its bound) is not offered.
-        }
-      }
+      instance->info = instance_info_from_wire(status);
     }
     instances_changed_.notify_all();
   }

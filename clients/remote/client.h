@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "clients/remote/client_error.h"
+#include "clients/remote/instance_info.h"
 #include "clients/remote/reply_error.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/dds_entity.h"
@@ -52,30 +53,6 @@ struct ClientOptions {
   /// reading replies only for client ids whose top 32 bits are this prefix. 0: no security, all
   /// 64 bits at random.
   std::uint32_t client_id_prefix = 0;
-};
-
-/// One calculation's figures in an instance's status.
-struct CalculationStatus {
-  std::string calculation;          ///< "tooth_contact", ...
-  std::uint64_t served = 0;         ///< OK replies
-  std::uint64_t failed = 0;         ///< error replies
-  double p50_service_time_s = 0.0;  ///< over its last 4096 requests [s]
-  double p99_service_time_s = 0.0;
-};
-
-/// A service instance as its latest status describes it.
-struct InstanceInfo {
-  std::uint64_t id = 0;
-  std::string host;
-  int pid = 0;
-  bool accepting = false;
-  unsigned threads = 0;
-  double uptime_s = 0.0;
-  std::vector<std::string> catalogue;  ///< coupling names it serves
-  /// Their definitions, as the instance announced them (the same order; one that does not pass
-  /// the protocol's checks is left out).
-  std::vector<CouplingDefinition> definitions;
-  std::vector<CalculationStatus> calculations;
 };
 
 /// What a call_then callback receives: the result, or the error call() would throw.

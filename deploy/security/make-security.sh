@@ -171,7 +171,12 @@ client_rules() {
   criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
 }
 
-dashboard_rules() { criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"; }
+# The dashboard reads: the status, and the live monitor's health and residuals (issue 12).
+dashboard_rules() {
+  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
+  criteria subscribe "gearcoupling/live/health" "gearcoupling.live"
+  criteria subscribe "gearcoupling/live/residual" "gearcoupling.live"
+}
 
 # The top 32 bits of every client_id of client NAME: from a hash of the name, so reruns agree.
 client_prefix() { printf '%s' "client-$1" | sha256sum | cut -c1-8; }

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "clients/remote/client.h"
+#include "clients/status/cell_board.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/matching.h"
 #include "protocol/names.h"
@@ -363,6 +364,8 @@ TEST_F(SecureService, ADashboardMayOnlyReadTheStatus) {
             DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
   EXPECT_EQ(try_jam_angle_reply_reader(participant.get(), protocol::reply_partition(1)),
             DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+  // The test cells: the dashboard's board reads the live health and residuals (issue 12).
+  EXPECT_NO_THROW(status::CellBoard cells(participant.get()));
 }
 
 TEST_F(SecureService, AStrangerWithoutCertificatesSeesNothingAndCannotImpersonateTheService) {

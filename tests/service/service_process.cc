@@ -27,12 +27,26 @@ bool enter_network_namespace(const std::string& name) {
   return entered;
 }
 
-ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path,
-                               std::vector<std::pair<std::string, std::string>> environment,
-                               std::string network_namespace) {
+namespace {
+
+std::vector<std::string> service_args(std::vector<std::string> extra_args) {
   std::vector<std::string> args = {GC_SERVICE_BINARY, "--domain", std::to_string(test_domain()),
                                    "--log-level", "warn"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
+  return args;
+}
+
+}  // namespace
+
+ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string log_path,
+                               std::vector<std::pair<std::string, std::string>> environment,
+                               std::string network_namespace)
+    : ChildProcess(service_args(std::move(extra_args)), std::move(log_path), std::move(environment),
+                   std::move(network_namespace)) {}
+
+ChildProcess::ChildProcess(std::vector<std::string> args, std::string log_path,
+                           std::vector<std::pair<std::string, std::string>> environment,
+                           std::string network_namespace, bool capture_stdout) {
   pid_ = fork();
   if (pid_ < 0) throw std::runtime_error("fork failed");
   if (pid_ == 0) {
@@ -41,6 +55,7 @@ ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string 
       const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if (log < 0) _exit(126);
       dup2(log, STDERR_FILENO);
+      if (capture_stdout) dup2(log, STDOUT_FILENO);
       close(log);
     }
     for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
@@ -52,23 +67,23 @@ ServiceProcess::ServiceProcess(std::vector<std::string> extra_args, std::string 
   }
 }
 
-ServiceProcess::~ServiceProcess() {
+ChildProcess::~ChildProcess() {
   if (running()) signal(SIGKILL);
 }
 
-void ServiceProcess::signal(int signal) {
+void ChildProcess::signal(int signal) {
   if (reaped_) return;
   kill(pid_, signal);
   if (signal == SIGKILL) wait_exit(10.0);
 }
 
-bool ServiceProcess::running() {
+bool ChildProcess::running() {
   if (reaped_) return false;
   if (waitpid(pid_, &status_, WNOHANG) == pid_) reaped_ = true;
   return !reaped_;
 }
 
-int ServiceProcess::wait_exit(double timeout_s) {
+int ChildProcess::wait_exit(double timeout_s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (running()) {
     if (std::chrono::steady_clock::now() >= deadline) {

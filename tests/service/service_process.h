@@ -22,19 +22,20 @@ bool enter_network_namespace(const std::string& name);
 /// 127.0.0.1). Call before any DDS entity is created.
 void use_loopback_config();
 
-class ServiceProcess {
+/// A child process of a test: a program run with `args` (args[0] its path), its standard error
+/// (and with `capture_stdout` its standard output) in `log_path` when one is given, else the
+/// test's. `environment` is set in the child only (e.g. a secure CYCLONEDDS_URI). With
+/// `network_namespace`, the process runs in that namespace (/run/netns/<name>, as `ip netns`
+/// makes them: a test "host").
+class ChildProcess {
  public:
-  /// Starts gearcoupling-service --domain test_domain() with `extra_args`; its standard error
-  /// (the log) goes to `log_path` when one is given, else to the test's. `environment` is set in
-  /// the child only (e.g. a secure CYCLONEDDS_URI). With `network_namespace`, the process runs in
-  /// that namespace (/run/netns/<name>, as `ip netns` makes them: a test "host").
-  explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {},
-                          std::vector<std::pair<std::string, std::string>> environment = {},
-                          std::string network_namespace = {});
+  explicit ChildProcess(std::vector<std::string> args, std::string log_path = {},
+                        std::vector<std::pair<std::string, std::string>> environment = {},
+                        std::string network_namespace = {}, bool capture_stdout = false);
   /// SIGKILLs the process if still running.
-  ~ServiceProcess();
-  ServiceProcess(const ServiceProcess&) = delete;
-  ServiceProcess& operator=(const ServiceProcess&) = delete;
+  ~ChildProcess();
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
 
   /// Sends `signal`; for SIGKILL also waits for the process.
   void signal(int signal);
@@ -49,6 +50,15 @@ class ServiceProcess {
   pid_t pid_ = -1;
   bool reaped_ = false;
   int status_ = 0;
+};
+
+class ServiceProcess : public ChildProcess {
+ public:
+  /// Starts gearcoupling-service --domain test_domain() with `extra_args` (ChildProcess for the
+  /// rest).
+  explicit ServiceProcess(std::vector<std::string> extra_args = {}, std::string log_path = {},
+                          std::vector<std::pair<std::string, std::string>> environment = {},
+                          std::string network_namespace = {});
 };
 
 }  // namespace gc::test

@@ -1,0 +1,77 @@
+// gearcoupling-dashboard's HTTP side: one page (dashboard_page.html) with Chart.js served from
+// this process (Debian's libjs-chart.js: test-cell networks are offline), the live state as
+// Server-Sent Events at most every `update_interval` (aggregated, never one event per sample),
+// the same state once as JSON, /metrics in Prometheus text, and the query panel. DDS is read
+// only, through the boards of gc_status, except for the query panel's requests.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "clients/dashboard/event_hub.h"
+#include "clients/dashboard/query_panel.h"
+#include "clients/status/cell_board.h"
+#include "clients/status/instance_board.h"
+#include "protocol/dds_entity.h"
+
+namespace httplib {
+class Server;
+}
+
+namespace gc::dashboard {
+
+struct DashboardOptions {
+  int domain = 0;                      ///< DDS domain id [0, 232]
+  std::string listen_host = "127.0.0.1";  ///< localhost only unless asked otherwise
+  int listen_port = 8080;              ///< 0: any free port (port() says which)
+  /// Live updates to the browser at most this often: 100 ms is 10 updates a second.
+  std::chrono::milliseconds update_interval{100};
+  /// Updates a slow browser may fall behind before its oldest is dropped.
+  std::size_t queue_capacity = 16;
+  /// The query panel's wait for the service, discovery included.
+  std::chrono::milliseconds query_timeout{5000};
+};
+
+class DashboardServer {
+ public:
+  /// Joins the domain and binds the address. Throws protocol::DdsError, or std::runtime_error
+  /// naming the address when it cannot be bound or Chart.js cannot be read.
+  explicit DashboardServer(DashboardOptions options);
+  ~DashboardServer();
+  DashboardServer(const DashboardServer&) = delete;
+  DashboardServer& operator=(const DashboardServer&) = delete;
+
+  int port() const { return port_; }
+  /// Serves until stop(). Call once.
+  void run();
+  /// From any thread: ends run(), closes the browsers' event streams.
+  void stop();
+
+ private:
+  void add_routes();
+  void publish_loop();
+  /// The whole live state as compact JSON; `drain` takes the residual aggregates since the last
+  /// drain (only the publisher does, so every interval's aggregate goes out once).
+  std::string state_json(bool drain);
+  std::string metrics();
+
+  DashboardOptions options_;
+  std::string chart_js_;
+  protocol::Entity participant_;
+  status::InstanceBoard instances_;
+  status::CellBoard cells_;
+  QueryPanel query_;
+  EventHub hub_;
+  // Behind a pointer: httplib.h includes <resolv.h>, whose `_res` macro breaks Eigen's headers
+  // in any file that includes both.
+  std::unique_ptr<httplib::Server> http_;
+  int port_ = 0;
+  std::atomic<bool> stopping_{false};
+  std::atomic<std::uint64_t> updates_published_{0};
+  std::thread publisher_;
+};
+
+}  // namespace gc::dashboard

@@ -1,0 +1,93 @@
+// gearcoupling-dashboard: flags, logging, signals; DashboardServer does the rest.
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "clients/dashboard/dashboard_server.h"
+#include "parallel/shutdown_signals.h"
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+/// "ADDR:PORT" (the port after the last colon, so "[::1]:8080" works too) into the options.
+void parse_listen(const std::string& listen, gc::dashboard::DashboardOptions& options) {
+  const std::size_t colon = listen.rfind(':');
+  if (colon == std::string::npos || colon == 0) {
+    throw CLI::ValidationError("--listen", "\"" + listen + "\" is not ADDR:PORT, e.g. 127.0.0.1:8080");
+  }
+  std::string host = listen.substr(0, colon);
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  int port = -1;
+  try {
+    std::size_t used = 0;
+    port = std::stoi(listen.substr(colon + 1), &used);
+    if (used != listen.size() - colon - 1) port = -1;
+  } catch (const std::exception&) {
+  }
+  if (port < 0 || port > 65535) {
+    throw CLI::ValidationError("--listen", "port \"" + listen.substr(colon + 1) +
+                                               "\" is out of range: allowed 0 to 65535 (0: any free port)");
+  }
+  options.listen_host = host;
+  options.listen_port = port;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gc::dashboard::DashboardOptions options;
+  std::string listen = "127.0.0.1:8080";
+  int update_hz = 10;
+  double query_timeout_s = 5.0;
+  CLI::App app{
+      "gearcoupling-dashboard: the service instances, the live test cells and a query panel in "
+      "the browser, and /metrics for Prometheus (docs/dashboard.md). Reads DDS; writes only the "
+      "query panel's requests."};
+  app.add_option("--domain", options.domain, "DDS domain id; the network comes from CYCLONEDDS_URI")
+      ->check(CLI::Range(0, 232));
+  app.add_option("--listen", listen,
+                 "ADDR:PORT to serve on; localhost only by default, port 0 picks a free one "
+                 "(printed)")
+      ->capture_default_str();
+  app.add_option("--update-hz", update_hz, "live updates to each browser per second, at most")
+      ->check(CLI::Range(1, 10))
+      ->capture_default_str();
+  app.add_option("--query-timeout", query_timeout_s, "the query panel's wait for the service [s]")
+      ->check(CLI::Range(0.1, 60.0))
+      ->capture_default_str();
+  try {
+    app.parse(argc, argv);
+    parse_listen(listen, options);
+  } catch (const CLI::ParseError& error) {
+    // --help exits 0; bad flags exit 2, as the other programs' bad input does.
+    return app.exit(error) == 0 ? 0 : kBadInput;
+  }
+  options.update_interval = std::chrono::milliseconds(1000 / update_hz);
+  options.query_timeout = std::chrono::milliseconds(static_cast<long>(query_timeout_s * 1000));
+
+  const sigset_t signals = gc::parallel::block_shutdown_signals();
+  try {
+    gc::dashboard::DashboardServer server(options);
+    // The port on stdout, alone on its line, for scripts that asked for port 0.
+    std::printf("listening on http://%s:%d/\n", options.listen_host.c_str(), server.port());
+    std::fflush(stdout);
+    spdlog::info("dashboard on domain {} at http://{}:{}/", options.domain, options.listen_host,
+                 server.port());
+    std::thread signal_waiter([&server, signals] {
+      int signal = 0;
+      sigwait(&signals, &signal);
+      server.stop();
+    });
+    server.run();
+    pthread_kill(signal_waiter.native_handle(), SIGTERM);
+    signal_waiter.join();
+  } catch (const std::exception& error) {
+    spdlog::error("{}", error.what());
+    return 1;
+  }
+  return 0;
+}

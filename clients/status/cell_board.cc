@@ -1,0 +1,190 @@
+#include "clients/status/cell_board.h"
+
+#include <algorithm>
+
+#include "gearcoupling.h"
+#include "live/live_qos.h"
+#include "live/live_topics.h"
+#include "protocol/names.h"
+#include "clients/status/listening_reader.h"
+
+namespace gc::status {
+
+using protocol::check_dds;
+using protocol::Entity;
+
+namespace {
+
+std::string text(const char* value) { return value != nullptr ? value : ""; }
+
+void copy_channel(const gearcoupling_ChannelHealth& in, v1::ChannelHealthRecord& out) {
+  out.set_rmse_nm(in.rmse_nm);
+  out.set_bias_nm(in.bias_nm);
+  out.set_noise_nm(in.noise_nm);
+  out.set_systematic_nm(in.systematic_nm);
+  out.set_at_noise_level(in.at_noise_level);
+}
+
+void copy_period(const gearcoupling_ModelPeriod& in, v1::ModelPeriodRecord& out) {
+  out.set_model_name(text(in.model_name));
+  out.set_since_unix_s(in.since_unix_s);
+  out.set_in_force_s(in.in_force_s);
+  out.set_evaluated(in.evaluated);
+  copy_channel(in.msy, *out.mutable_msy());
+  copy_channel(in.msz, *out.mutable_msz());
+}
+
+/// The health sample's members, into the record (state, age and residuals are the board's).
+void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
+  out.set_monitor_id(protocol::hex_id(in.monitor_id));
+  out.set_window_begin_s(in.window_begin_s);
+  out.set_window_end_s(in.window_end_s);
+  out.set_window_samples(in.window_samples);
+  copy_period(in.model, *out.mutable_model());
+  if (in.previous_model != nullptr) {
+    copy_period(*in.previous_model, *out.mutable_previous_model());
+  } else {
+    out.clear_previous_model();
+  }
+  out.set_worst_region(text(in.worst_region));
+  out.set_last_refusal(text(in.last_refusal));
+  out.set_last_model_refusal(text(in.last_model_refusal));
+  v1::SampleCountsRecord& counts = *out.mutable_counts();
+  counts.set_taken(in.counts.taken);
+  counts.set_evaluated(in.counts.evaluated);
+  counts.set_refused_not_finite(in.counts.refused_not_finite);
+  counts.set_refused_by_model(in.counts.refused_by_model);
+  counts.set_refused_out_of_order(in.counts.refused_out_of_order);
+  counts.set_lost(in.counts.lost);
+  counts.set_runs(in.counts.runs);
+}
+
+}  // namespace
+
+void CellBoard::Accumulator::add(double value, bool first) {
+  min = first ? value : std::min(min, value);
+  max = first ? value : std::max(max, value);
+  sum = first ? value : sum + value;
+}
+
+v1::Envelope CellBoard::Accumulator::envelope(std::uint64_t count) const {
+  v1::Envelope out;
+  out.set_min(min);
+  out.set_max(max);
+  out.set_mean(count > 0 ? sum / static_cast<double>(count) : 0.0);
+  return out;
+}
+
+CellBoard::CellBoard(dds_entity_t participant, CellBoardOptions options)
+    : options_(options),
+      health_topic_(live::make_health_topic(participant)),
+      residual_topic_(live::make_residual_topic(participant)),
+      subscriber_(live::make_live_subscriber(participant)) {
+  health_reader_ = make_listening_reader<&CellBoard::take_health>(
+      subscriber_.get(), health_topic_.get(), live::health_reader_qos(), this,
+      "dds_create_reader(health)");
+  residual_reader_ = make_listening_reader<&CellBoard::take_residuals>(
+      subscriber_.get(), residual_topic_.get(), live::residual_qos(), this,
+      "dds_create_reader(residual)");
+  take_health();
+  take_residuals();
+}
+
+void CellBoard::take_health() {
+  take_each_batch<gearcoupling_CellHealth>(health_reader_.get(), [this](const auto& samples) {
+    const Clock::time_point now = Clock::now();
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const dds_sample_info_t& info = samples.info(i);
+      if (info.valid_data) {
+        const std::string cell = samples[i].test_cell;
+        health_handles_[info.instance_handle] = cell;
+        Entry& entry = entries_[cell];
+        entry.record.set_test_cell(cell);
+        copy_health(samples[i], entry.record);
+        entry.has_health = true;
+        entry.monitor_says_stale = samples[i].stale;
+        entry.health_received = now;
+        entry.last_heard = now;
+      }
+      const auto handle = health_handles_.find(info.instance_handle);
+      if (handle == health_handles_.end()) continue;
+      Entry& entry = entries_[handle->second];
+      entry.disposed = info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED;
+      entry.writer_lost = info.instance_state == DDS_IST_NOT_ALIVE_NO_WRITERS;
+      if (info.instance_state != DDS_IST_ALIVE) entry.last_heard = now;
+    }
+  });
+}
+
+void CellBoard::take_residuals() {
+  take_each_batch<gearcoupling_ResidualBatch>(residual_reader_.get(), [this](const auto& samples) {
+    const Clock::time_point now = Clock::now();
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (!samples.info(i).valid_data) continue;
+      const gearcoupling_ResidualBatch& batch = samples[i];
+      Entry& entry = entries_[batch.test_cell];
+      entry.record.set_test_cell(batch.test_cell);
+      entry.last_heard = now;
+      Aggregate& aggregate = entry.aggregate;
+      aggregate.model_name = text(batch.model_name);
+      aggregate.latest_published_ns = std::max(aggregate.latest_published_ns, batch.published_ns);
+      for (uint32_t k = 0; k < batch.residuals._length; ++k) {
+        const gearcoupling_Residual& r = batch.residuals._buffer[k];
+        const bool first = aggregate.count == 0;
+        if (first) aggregate.time_begin_s = r.time_s;
+        aggregate.time_end_s = r.time_s;
+        aggregate.msy_measured.add(r.msy_measured_nm, first);
+        aggregate.msy_predicted.add(r.msy_predicted_nm, first);
+        aggregate.msz_measured.add(r.msz_measured_nm, first);
+        aggregate.msz_predicted.add(r.msz_predicted_nm, first);
+        aggregate.count += 1;
+      }
+    }
+  });
+}
+
+std::vector<v1::TestCellRecord> CellBoard::snapshot() { return collect(false); }
+
+std::vector<v1::TestCellRecord> CellBoard::drain() { return collect(true); }
+
+std::vector<v1::TestCellRecord> CellBoard::collect(bool drain) {
+  const Clock::time_point now = Clock::now();
+  std::vector<v1::TestCellRecord> cells;
+  std::lock_guard lock(mutex_);
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    Entry& entry = it->second;
+    const bool old = !entry.has_health || now - entry.health_received > options_.stale_after;
+    const char* state = entry.disposed ? "gone"
+                        : entry.writer_lost || entry.monitor_says_stale || (entry.has_health && old)
+                            ? "stale"
+                            : "alive";
+    if (state[0] != 'a' && now - entry.last_heard > options_.forget_after) {
+      it = entries_.erase(it);
+      continue;
+    }
+    v1::TestCellRecord& record = cells.emplace_back(entry.record);
+    record.set_state(state);
+    record.set_health_age_s(
+        entry.has_health ? std::chrono::duration<double>(now - entry.health_received).count() : -1.0);
+    if (drain && entry.aggregate.count > 0) {
+      const Aggregate& a = entry.aggregate;
+      v1::ResidualAggregate& out = *record.add_residuals();
+      out.set_residuals(a.count);
+      out.set_time_begin_s(a.time_begin_s);
+      out.set_time_end_s(a.time_end_s);
+      out.set_model_name(a.model_name);
+      *out.mutable_msy_measured_nm() = a.msy_measured.envelope(a.count);
+      *out.mutable_msy_predicted_nm() = a.msy_predicted.envelope(a.count);
+      *out.mutable_msz_measured_nm() = a.msz_measured.envelope(a.count);
+      *out.mutable_msz_predicted_nm() = a.msz_predicted.envelope(a.count);
+      out.set_latest_published_unix_s(static_cast<double>(a.latest_published_ns) * 1e-9);
+      entry.aggregate = Aggregate{};
+    }
+    ++it;
+  }
+  return cells;
+}
+
+}  // namespace gc::status

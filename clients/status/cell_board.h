@@ -1,0 +1,87 @@
+// The test cells of a domain as the live monitor reports them (gearcoupling/live/health and
+// .../residual, docs/protocol.md "The live test cell"): each cell's latest health with its
+// liveness, and its residuals aggregated per interval (min/max/mean per channel), never kept
+// sample by sample. What the dashboard, its /metrics and `gearcoupling status` read. Read-only.
+#pragma once
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "idl/live_status.pb.h"
+#include "protocol/dds_entity.h"
+
+namespace gc::status {
+
+namespace v1 = ::gearcoupling::v1;
+
+struct CellBoardOptions {
+  /// A cell whose health (1 Hz) is older than this is stale, whatever the last one said.
+  std::chrono::milliseconds stale_after{3000};
+  /// A cell gone (disposed) or stale for this long is dropped from the board.
+  std::chrono::milliseconds forget_after{std::chrono::minutes(10)};
+};
+
+class CellBoard {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// Reads health and residuals on `participant` (which must outlive the board). Throws
+  /// protocol::DdsError.
+  explicit CellBoard(dds_entity_t participant, CellBoardOptions options = {});
+  CellBoard(const CellBoard&) = delete;
+  CellBoard& operator=(const CellBoard&) = delete;
+
+  /// Every cell with its latest health, state ("alive", "stale", "gone") and health age;
+  /// no residuals. Ordered by name.
+  std::vector<v1::TestCellRecord> snapshot();
+  /// snapshot() with each cell's residual aggregate since the previous drain() (none when no
+  /// residual came), which it then forgets: one reader (the dashboard's publisher) drains.
+  std::vector<v1::TestCellRecord> drain();
+
+ private:
+  /// Running min/max/sum of one quantity.
+  struct Accumulator {
+    double min = 0.0, max = 0.0, sum = 0.0;
+    void add(double value, bool first);
+    v1::Envelope envelope(std::uint64_t count) const;
+  };
+  struct Aggregate {
+    std::uint64_t count = 0;
+    double time_begin_s = 0.0, time_end_s = 0.0;
+    std::string model_name;
+    Accumulator msy_measured, msy_predicted, msz_measured, msz_predicted;
+    std::uint64_t latest_published_ns = 0;
+  };
+  struct Entry {
+    v1::TestCellRecord record;        ///< health fields as the latest health sample gave them
+    bool has_health = false;
+    bool monitor_says_stale = false;
+    bool disposed = false;
+    bool writer_lost = false;         ///< the monitor's liveliness lapsed
+    Clock::time_point health_received{};
+    Clock::time_point last_heard = Clock::now();  ///< health or residual
+    Aggregate aggregate;
+  };
+
+  void take_health();
+  void take_residuals();
+  std::vector<v1::TestCellRecord> collect(bool drain);
+
+  CellBoardOptions options_;
+  std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+  std::map<dds_instance_handle_t, std::string> health_handles_;
+  protocol::Entity health_topic_;
+  protocol::Entity residual_topic_;
+  protocol::Entity subscriber_;
+  protocol::Entity health_reader_;    // readers last: deleted first, before what they touch
+  protocol::Entity residual_reader_;
+};
+
+}  // namespace gc::status

@@ -1,0 +1,156 @@
+#include "clients/status/status_metrics.h"
+
+#include "clients/status/prometheus_text.h"
+#include "protocol/names.h"
+
+namespace gc::status {
+namespace {
+
+Labels instance_labels(const InstanceView& instance) {
+  return {{"instance", protocol::hex_id(instance.info.id)}, {"host", instance.info.host}};
+}
+
+Labels calculation_labels(const InstanceView& instance, const client::CalculationStatus& c) {
+  Labels labels = instance_labels(instance);
+  labels.emplace_back("calculation", c.calculation);
+  return labels;
+}
+
+void instance_gauges(const std::vector<InstanceView>& instances, PrometheusText& out) {
+  out.family("gearcoupling_instance_up", "gauge",
+             "1 while the service instance's status is fresh, 0 once stale or stopped.");
+  for (const InstanceView& i : instances) {
+    out.sample("gearcoupling_instance_up", instance_labels(i), i.liveness == Liveness::kAlive);
+  }
+  out.family("gearcoupling_instance_accepting", "gauge",
+             "1 while the instance accepts new requests (0 while it shuts down).");
+  for (const InstanceView& i : instances) {
+    out.sample("gearcoupling_instance_accepting", instance_labels(i), i.info.accepting);
+  }
+  out.family("gearcoupling_instance_uptime_seconds", "gauge",
+             "Seconds since the instance started, as of its latest status.");
+  for (const InstanceView& i : instances) {
+    out.sample("gearcoupling_instance_uptime_seconds", instance_labels(i), i.info.uptime_s);
+  }
+  out.family("gearcoupling_instance_status_age_seconds", "gauge",
+             "Seconds since the instance's latest status sample arrived.");
+  for (const InstanceView& i : instances) {
+    out.sample("gearcoupling_instance_status_age_seconds", instance_labels(i), i.status_age_s);
+  }
+}
+
+void request_counters(const std::vector<InstanceView>& instances, PrometheusText& out) {
+  out.family("gearcoupling_requests_served_total", "counter",
+             "Requests answered with STATUS_OK, per instance and calculation.");
+  for (const InstanceView& i : instances) {
+    for (const auto& c : i.info.calculations) {
+      out.sample("gearcoupling_requests_served_total", calculation_labels(i, c),
+                 static_cast<double>(c.served));
+    }
+  }
+  out.family("gearcoupling_requests_failed_total", "counter",
+             "Requests answered with an error status, per instance and calculation.");
+  for (const InstanceView& i : instances) {
+    for (const auto& c : i.info.calculations) {
+      out.sample("gearcoupling_requests_failed_total", calculation_labels(i, c),
+                 static_cast<double>(c.failed));
+    }
+  }
+}
+
+/// A summary of quantiles only: the status carries p50 and p99 over the last 4096 requests,
+/// and the request count, but no sum of service times.
+void service_time_summary(const std::vector<InstanceView>& instances, PrometheusText& out) {
+  out.family("gearcoupling_service_time_seconds", "summary",
+             "Service time per request over the instance's last (up to) 4096 requests.");
+  for (const InstanceView& i : instances) {
+    for (const auto& c : i.info.calculations) {
+      Labels p50 = calculation_labels(i, c);
+      p50.emplace_back("quantile", "0.5");
+      out.sample("gearcoupling_service_time_seconds", p50, c.p50_service_time_s);
+      Labels p99 = calculation_labels(i, c);
+      p99.emplace_back("quantile", "0.99");
+      out.sample("gearcoupling_service_time_seconds", p99, c.p99_service_time_s);
+    }
+  }
+}
+
+Labels cell_labels(const v1::TestCellRecord& cell) { return {{"test_cell", cell.test_cell()}}; }
+
+void cell_counters(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
+  out.family("gearcoupling_cell_up", "gauge",
+             "1 while the monitor reports the test cell alive, 0 once stale or gone.");
+  for (const auto& cell : cells) out.sample("gearcoupling_cell_up", cell_labels(cell), cell.state() == "alive");
+  out.family("gearcoupling_cell_samples_taken_total", "counter",
+             "Measurement samples the monitor received for the test cell.");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_samples_taken_total", cell_labels(cell),
+               static_cast<double>(cell.counts().taken()));
+  }
+  out.family("gearcoupling_cell_samples_evaluated_total", "counter",
+             "Samples compared with the test cell's model.");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_samples_evaluated_total", cell_labels(cell),
+               static_cast<double>(cell.counts().evaluated()));
+  }
+  out.family("gearcoupling_cell_samples_refused_total", "counter",
+             "Samples refused, by reason (not_finite, by_model, out_of_order).");
+  for (const auto& cell : cells) {
+    const v1::SampleCountsRecord& c = cell.counts();
+    for (const auto& [reason, count] :
+         {std::pair{"not_finite", c.refused_not_finite()}, std::pair{"by_model", c.refused_by_model()},
+          std::pair{"out_of_order", c.refused_out_of_order()}}) {
+      Labels labels = cell_labels(cell);
+      labels.emplace_back("reason", reason);
+      out.sample("gearcoupling_cell_samples_refused_total", labels, static_cast<double>(count));
+    }
+  }
+  out.family("gearcoupling_cell_samples_lost_total", "counter",
+             "Sequence numbers the monitor never received (gaps).");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_samples_lost_total", cell_labels(cell),
+               static_cast<double>(cell.counts().lost()));
+  }
+}
+
+/// `value` of each channel's health, labelled channel="msy" / "msz".
+template <typename Value>
+void channel_gauge(const std::vector<v1::TestCellRecord>& cells, std::string_view name,
+                   std::string_view help, Value value, PrometheusText& out) {
+  out.family(name, "gauge", help);
+  for (const auto& cell : cells) {
+    for (const auto& [channel, health] :
+         {std::pair{"msy", &cell.model().msy()}, std::pair{"msz", &cell.model().msz()}}) {
+      Labels labels = cell_labels(cell);
+      labels.emplace_back("channel", channel);
+      out.sample(name, labels, value(*health));
+    }
+  }
+}
+
+void cell_errors(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
+  channel_gauge(cells, "gearcoupling_cell_rmse_newton_metres",
+                "Rolling RMSE of the model's moment over the monitor's window [N m].",
+                [](const v1::ChannelHealthRecord& h) { return h.rmse_nm(); }, out);
+  channel_gauge(cells, "gearcoupling_cell_noise_newton_metres",
+                "Noise level of the measured moment over the window [N m].",
+                [](const v1::ChannelHealthRecord& h) { return h.noise_nm(); }, out);
+  channel_gauge(cells, "gearcoupling_cell_systematic_error_newton_metres",
+                "Part of the RMSE above the noise, sqrt(rmse^2 - noise^2) [N m].",
+                [](const v1::ChannelHealthRecord& h) { return h.systematic_nm(); }, out);
+}
+
+}  // namespace
+
+std::string metrics_text(const std::vector<InstanceView>& instances,
+                         const std::vector<v1::TestCellRecord>& cells) {
+  PrometheusText out;
+  instance_gauges(instances, out);
+  request_counters(instances, out);
+  service_time_summary(instances, out);
+  cell_counters(cells, out);
+  cell_errors(cells, out);
+  return out.text();
+}
+
+}  // namespace gc::status

@@ -1,0 +1,29 @@
+#include "live/cell_model.h"
+
+
+#include "codec/model_file.h"
+#include "core/model_error.h"
+
+namespace gc::live {
+
+CellModel parse_cell_model(std::string_view text, std::string_view source_name,
+                           const std::filesystem::path& catalog_dir) {
+  // No base directory: a coupling_file relative to nothing cannot be found, and says so.
+  codec::ModelFile file = codec::parse_model_text(text, source_name, catalog_dir, "/nonexistent");
+  return {file.name, std::make_shared<const CouplingModel>(std::move(file.model)),
+          std::chrono::system_clock::now()};
+}
+
+CellModel load_cell_model(const std::string& file_or_name, const std::filesystem::path& models_dir,
+                          const std::filesystem::path& catalog_dir) {
+  // As the CLI's --model: a path names a file, a bare name a bundled model.
+  const bool is_file =
+      file_or_name.find('/') != std::string::npos || file_or_name.ends_with(".textproto");
+  const std::filesystem::path path =
+      is_file ? std::filesystem::path(file_or_name) : models_dir / (file_or_name + ".textproto");
+  codec::ModelFile file = codec::load_model_description(path, catalog_dir);
+  return {file.name, std::make_shared<const CouplingModel>(std::move(file.model)),
+          std::chrono::system_clock::now()};
+}
+
+}  // namespace gc::live

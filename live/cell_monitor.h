@@ -1,0 +1,109 @@
+// One test cell under the monitor, without DDS: its model, the run it is in, the samples it
+// took and refused, and the model's health over a rolling window of measurement time, measured
+// as `validate` measures a recording (core/validation/). The monitor (live/monitor.h) keeps one
+// per test cell and feeds it from the measurement topic.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "analysis/derived_inputs.h"
+#include "core/recorded_sample.h"
+#include "core/validation/error_bins.h"
+#include "live/cell_model.h"
+
+namespace gc::live {
+
+struct CellMonitorOptions {
+  /// Health window in measurement time [s]: two windows, offset by half of it, each restarting
+  /// every window_s; health reports the older, so it always spans window_s/2 to window_s.
+  double window_s = 10.0;
+  double reference_torque_nm = 1.5e6;   ///< T_ref of validate's wording [N·m]
+  /// The loading direction's dead band [rad]: a live stream's noise is not known before it
+  /// ends, so it is configured (docs/recordings.md has the trade-off).
+  double loading_dead_band_rad = LoadingDirectionOptions{}.min_dead_band_rad;
+  double still_after_s = LoadingDirectionOptions{}.still_after_s;   ///< [s]
+};
+
+/// What happened to one sample.
+enum class SampleOutcome { evaluated, refused_not_finite, refused_by_model, refused_out_of_order };
+
+struct SampleCountsSnapshot {
+  std::uint64_t taken = 0, evaluated = 0, refused_not_finite = 0, refused_by_model = 0,
+                refused_out_of_order = 0, lost = 0, runs = 0;
+};
+
+struct ChannelFigures {
+  double rmse_nm = 0.0, bias_nm = 0.0, noise_nm = 0.0, systematic_nm = 0.0;  ///< [N·m]
+  bool at_noise_level = false;
+};
+
+struct ModelPeriodReport {
+  std::string model_name;
+  std::chrono::system_clock::time_point since;
+  double in_force_s = 0.0;          ///< [s]
+  std::uint64_t evaluated = 0;
+  std::array<ChannelFigures, 2> channels;   ///< M_sy', M_sz' over the window
+};
+
+struct HealthReport {
+  double window_begin_s = 0.0, window_end_s = 0.0;   ///< measurement time [s]
+  std::uint64_t window_samples = 0;
+  ModelPeriodReport model;
+  std::optional<ModelPeriodReport> previous_model;
+  std::string worst_region;        ///< validate's sentence, "" when none stands out
+  std::string last_refusal;        ///< "field: message"
+  std::string last_model_refusal;
+  SampleCountsSnapshot counts;
+};
+
+class CellMonitor {
+ public:
+  CellMonitor(CellModel model, const CellMonitorOptions& options);
+
+  /// Takes sample `sequence_number` of run `run_id` (`sample` nullopt when the wire sample had
+  /// a non-finite member, `refusal` then says which). A new run restarts the sequence, the time
+  /// and the health window. Sets `predicted` when the sample was evaluated.
+  SampleOutcome take(std::uint64_t run_id, std::uint64_t sequence_number,
+                     std::optional<RecordedSample> sample, const std::string& refusal,
+                     SensorMoments& predicted);
+
+  /// Puts `model` in force from the next sample; the current one becomes the previous model,
+  /// its health frozen as it stood.
+  void swap_model(CellModel model);
+  void refuse_model(std::string reason) { last_model_refusal_ = std::move(reason); }
+
+  HealthReport health(std::chrono::system_clock::time_point now) const;
+  const CellModel& model() const { return model_; }
+  std::uint64_t run_id() const { return run_id_; }
+
+ private:
+  struct Window {
+    ValidationAccumulator validation;
+    std::optional<double> begin_s = std::nullopt;
+    double end_s = 0.0;
+  };
+  void restart_windows();
+  void add_to_windows(const RecordedSample& sample, const SensorMoments& predicted);
+  const Window& reported_window() const;
+  ModelPeriodReport period(std::chrono::system_clock::time_point now) const;
+  BinningOptions binning() const;
+
+  CellMonitorOptions options_;
+  CellModel model_;
+  std::uint64_t evaluated_under_model_ = 0;
+  std::optional<ModelPeriodReport> previous_model_;
+  std::uint64_t run_id_ = 0;
+  std::uint64_t last_sequence_ = 0;
+  std::optional<double> last_time_s_;
+  std::optional<analysis::DerivedInputs> derived_;
+  std::optional<double> window_origin_s_;
+  std::array<Window, 2> windows_;
+  SampleCountsSnapshot counts_;
+  std::string last_refusal_, last_model_refusal_;
+};
+
+}  // namespace gc::live

@@ -1,0 +1,64 @@
+#include "live/health_wire.h"
+
+#include <algorithm>
+
+#include "protocol/dds_entity.h"
+
+namespace gc::live {
+namespace {
+
+char* lend(const std::string& text) { return const_cast<char*>(text.c_str()); }
+
+gearcoupling_ChannelHealth channel_wire(const ChannelFigures& figures) {
+  return {figures.rmse_nm, figures.bias_nm, figures.noise_nm, figures.systematic_nm,
+          figures.at_noise_level};
+}
+
+gearcoupling_ModelPeriod period_wire(const ModelPeriodReport& period) {
+  return {lend(period.model_name), unix_seconds(period.since), period.in_force_s,
+          period.evaluated, channel_wire(period.channels[0]), channel_wire(period.channels[1])};
+}
+
+void set_test_cell(char (&out)[65], const std::string& test_cell) {
+  const std::size_t n = std::min<std::size_t>(test_cell.size(), 64);
+  std::copy_n(test_cell.c_str(), n, out);
+  out[n] = '\0';
+}
+
+}  // namespace
+
+double unix_seconds(std::chrono::system_clock::time_point time) {
+  return std::chrono::duration<double>(time.time_since_epoch()).count();
+}
+
+void write_health(dds_entity_t writer, const std::string& test_cell, std::uint64_t monitor_id,
+                  bool stale, const HealthReport& report) {
+  gearcoupling_CellHealth health{};
+  set_test_cell(health.test_cell, test_cell);
+  health.monitor_id = monitor_id;
+  health.stale = stale;
+  health.window_begin_s = report.window_begin_s;
+  health.window_end_s = report.window_end_s;
+  health.window_samples = report.window_samples;
+  health.model = period_wire(report.model);
+  gearcoupling_ModelPeriod previous{};
+  if (report.previous_model) {
+    previous = period_wire(*report.previous_model);
+    health.previous_model = &previous;
+  }
+  health.worst_region = lend(report.worst_region);
+  health.last_refusal = lend(report.last_refusal);
+  health.last_model_refusal = lend(report.last_model_refusal);
+  const SampleCountsSnapshot& c = report.counts;
+  health.counts = {c.taken, c.evaluated, c.refused_not_finite, c.refused_by_model,
+                   c.refused_out_of_order, c.lost, c.runs};
+  protocol::check_dds(dds_write(writer, &health), "dds_write(health)");
+}
+
+void dispose_health(dds_entity_t writer, const std::string& test_cell) {
+  gearcoupling_CellHealth key{};
+  set_test_cell(key.test_cell, test_cell);
+  dds_dispose(writer, &key);
+}
+
+}  // namespace gc::live

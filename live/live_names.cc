@@ -1,0 +1,24 @@
+#include "live/live_names.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/model_error.h"
+
+namespace gc::live {
+
+void require_test_cell_name(std::string_view name) {
+  const auto allowed = [](unsigned char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           c == '.' || c == '_' || c == '-';
+  };
+  if (name.empty() || name.size() > 64 || !std::all_of(name.begin(), name.end(), allowed)) {
+    std::string shown;
+    for (unsigned char c : name.substr(0, 64)) shown += (c >= 0x20 && c < 0x7f) ? char(c) : '?';
+    throw InvalidInput("test_cell", "'" + shown + "' (" + std::to_string(name.size()) +
+                                        " bytes) is not a test cell name: 1 to 64 characters "
+                                        "of A-Z a-z 0-9 . _ -");
+  }
+}
+
+}  // namespace gc::live

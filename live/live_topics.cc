@@ -1,0 +1,60 @@
+#include "live/live_topics.h"
+
+#include "gearcoupling.h"
+#include "live/live_names.h"
+#include "live/live_qos.h"
+#include "protocol/matching.h"
+#include "protocol/qos.h"
+
+namespace gc::live {
+
+using protocol::check_dds;
+using protocol::Entity;
+
+namespace {
+
+Entity make_topic(dds_entity_t participant, const dds_topic_descriptor_t& type, const char* name,
+                  const protocol::Qos& qos) {
+  return Entity(check_dds(dds_create_topic(participant, &type, name, qos.get(), nullptr),
+                          "dds_create_topic(live)"));
+}
+
+}  // namespace
+
+Entity make_participant(int domain) {
+  return Entity(check_dds(dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr),
+                          "dds_create_participant"));
+}
+
+Entity make_measurement_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_MeasurementBatch_desc, kMeasurementTopic,
+                    measurement_reader_qos());
+}
+Entity make_residual_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_ResidualBatch_desc, kResidualTopic, residual_qos());
+}
+Entity make_health_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_CellHealth_desc, kHealthTopic, health_reader_qos());
+}
+Entity make_model_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_ModelSwap_desc, kModelTopic, model_qos());
+}
+
+Entity make_live_publisher(dds_entity_t participant) {
+  const protocol::Qos partition = protocol::partition_qos(kLivePartition);
+  return Entity(check_dds(dds_create_publisher(participant, partition.get(), nullptr),
+                          "dds_create_publisher(live)"));
+}
+
+Entity make_live_subscriber(dds_entity_t participant) {
+  const protocol::Qos partition = protocol::partition_qos(kLivePartition);
+  return Entity(check_dds(dds_create_subscriber(participant, partition.get(), nullptr),
+                          "dds_create_subscriber(live)"));
+}
+
+bool wait_for_readers(dds_entity_t writer, std::uint32_t readers, std::chrono::milliseconds timeout) {
+  return protocol::wait_until([&] { return protocol::matched_reader_count(writer) >= readers; },
+                              std::chrono::steady_clock::now() + timeout);
+}
+
+}  // namespace gc::live

@@ -1,0 +1,30 @@
+// The live test-cell topics and the partition they live in, created the same way by every
+// process that uses them (monitor, replay, record, dashboard, benchmarks).
+#pragma once
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <cstdint>
+
+#include "protocol/dds_entity.h"
+
+namespace gc::live {
+
+/// A participant on DDS domain `domain` (the network from CYCLONEDDS_URI).
+protocol::Entity make_participant(int domain);
+
+protocol::Entity make_measurement_topic(dds_entity_t participant);
+protocol::Entity make_residual_topic(dds_entity_t participant);
+protocol::Entity make_health_topic(dds_entity_t participant);
+protocol::Entity make_model_topic(dds_entity_t participant);
+
+/// A publisher / subscriber in the partition "gearcoupling.live".
+protocol::Entity make_live_publisher(dds_entity_t participant);
+protocol::Entity make_live_subscriber(dds_entity_t participant);
+
+/// Waits until `writer` has at least `readers` matched readers (a sample written before a
+/// reader is matched is lost to it). Returns whether it had them within `timeout`.
+bool wait_for_readers(dds_entity_t writer, std::uint32_t readers, std::chrono::milliseconds timeout);
+
+}  // namespace gc::live

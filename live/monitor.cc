@@ -1,0 +1,232 @@
+#include "live/monitor.h"
+
+#include <spdlog/spdlog.h>
+
+#include <vector>
+
+#include "core/model_error.h"
+#include "gearcoupling.h"
+#include "live/health_wire.h"
+#include "live/live_names.h"
+#include "live/live_qos.h"
+#include "live/live_topics.h"
+#include "live/measurement_wire.h"
+#include "protocol/random_id.h"
+#include "protocol/samples.h"
+
+namespace gc::live {
+
+using protocol::check_dds;
+using protocol::Entity;
+using Clock = std::chrono::steady_clock;
+
+struct Monitor::Cell {
+  CellMonitor monitor;
+  Clock::time_point last_sample = Clock::now();
+  std::uint64_t decimation_count = 0;
+  std::vector<gearcoupling_Residual> residuals = {};
+};
+
+namespace {
+
+Entity make_reader(dds_entity_t subscriber, dds_entity_t topic, const protocol::Qos& qos,
+                   const char* what) {
+  return Entity(check_dds(dds_create_reader(subscriber, topic, qos.get(), nullptr), what));
+}
+
+Entity make_writer(dds_entity_t publisher, dds_entity_t topic, const protocol::Qos& qos,
+                   const char* what) {
+  return Entity(check_dds(dds_create_writer(publisher, topic, qos.get(), nullptr), what));
+}
+
+std::uint64_t realtime_ns() {
+  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                        std::chrono::system_clock::now().time_since_epoch())
+                                        .count());
+}
+
+}  // namespace
+
+Monitor::Monitor(const MonitorOptions& options)
+    : options_(options),
+      monitor_id_(protocol::random_id()),
+      default_model_(load_cell_model(options.default_model, options.models_dir, options.catalog_dir)) {
+  for (const auto& [test_cell, model] : options.cell_models) {
+    require_test_cell_name(test_cell);
+    models_.emplace(test_cell, load_cell_model(model, options.models_dir, options.catalog_dir));
+  }
+  participant_ = Entity(check_dds(
+      dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
+      "dds_create_participant"));
+  const dds_entity_t participant = participant_.get();
+  subscriber_ = make_live_subscriber(participant);
+  publisher_ = make_live_publisher(participant);
+  measurement_topic_ = make_measurement_topic(participant);
+  residual_topic_ = make_residual_topic(participant);
+  health_topic_ = make_health_topic(participant);
+  model_topic_ = make_model_topic(participant);
+  measurement_reader_ = make_reader(subscriber_.get(), measurement_topic_.get(),
+                                    measurement_reader_qos(), "dds_create_reader(measurement)");
+  model_reader_ = make_reader(subscriber_.get(), model_topic_.get(), model_qos(),
+                              "dds_create_reader(model)");
+  residual_writer_ = make_writer(publisher_.get(), residual_topic_.get(), residual_qos(),
+                                 "dds_create_writer(residual)");
+  health_writer_ = make_writer(publisher_.get(), health_topic_.get(), health_writer_qos(),
+                               "dds_create_writer(health)");
+  waitset_ = Entity(check_dds(dds_create_waitset(participant), "dds_create_waitset"));
+  for (dds_entity_t reader : {measurement_reader_.get(), model_reader_.get()}) {
+    check_dds(dds_set_status_mask(reader, DDS_DATA_AVAILABLE_STATUS), "dds_set_status_mask");
+    check_dds(dds_waitset_attach(waitset_.get(), reader, reader), "dds_waitset_attach");
+  }
+}
+
+Monitor::~Monitor() {
+  // Gracefully gone: every cell's health disposed, so dashboards drop them at once.
+  for (const auto& [test_cell, cell] : cells_) dispose_health(health_writer_.get(), test_cell);
+}
+
+void Monitor::stop() {
+  stopping_ = true;
+  dds_waitset_set_trigger(waitset_.get(), true);
+}
+
+void Monitor::run() {
+  const auto period = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(options_.health_period_s));
+  Clock::time_point next_health = Clock::now() + period;
+  while (!stopping_) {
+    const auto wait = std::max(Clock::duration::zero(), next_health - Clock::now());
+    dds_waitset_wait(waitset_.get(), nullptr, 0,
+                     std::chrono::duration_cast<std::chrono::nanoseconds>(wait).count());
+    // Models first: a swap takes effect between two batches, never within one.
+    take_models();
+    take_measurements();
+    if (Clock::now() >= next_health) {
+      publish_health();
+      next_health += period;
+      if (next_health < Clock::now()) next_health = Clock::now() + period;
+    }
+  }
+}
+
+CellModel Monitor::model_for(const std::string& test_cell) {
+  const auto configured = models_.find(test_cell);
+  CellModel model = configured != models_.end() ? configured->second : default_model_;
+  model.since = std::chrono::system_clock::now();
+  return model;
+}
+
+Monitor::Cell& Monitor::cell(const std::string& test_cell) {
+  auto found = cells_.find(test_cell);
+  if (found == cells_.end()) {
+    spdlog::info("test cell {}: first sample, model {}", test_cell, model_for(test_cell).name);
+    found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
+                                          CellMonitor(model_for(test_cell), options_.cell)}))
+                .first;
+  }
+  return *found->second;
+}
+
+void Monitor::take_models() {
+  for (;;) {
+    protocol::LoanedSamples<gearcoupling_ModelSwap, 16> swaps(model_reader_.get());
+    if (swaps.size() == 0) return;
+    for (std::size_t i = 0; i < swaps.size(); ++i) {
+      if (!swaps.info(i).valid_data) continue;
+      const gearcoupling_ModelSwap& swap = swaps[i];
+      const std::string test_cell = swap.test_cell;
+      try {
+        require_test_cell_name(test_cell);
+      } catch (const InvalidInput& error) {
+        spdlog::warn("model swap refused: {}", error.what());
+        continue;
+      }
+      if (swap.residual_decimation > 0) decimations_[test_cell] = swap.residual_decimation;
+      const std::string text = swap.model_text != nullptr ? swap.model_text : "";
+      if (text.empty()) continue;
+      const auto existing = cells_.find(test_cell);
+      try {
+        CellModel model = parse_cell_model(text, "model swap for " + test_cell, options_.catalog_dir);
+        spdlog::info("test cell {}: model {} in force", test_cell, model.name);
+        models_[test_cell] = model;
+        if (existing != cells_.end()) existing->second->monitor.swap_model(std::move(model));
+      } catch (const ModelError& error) {
+        spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
+        if (existing != cells_.end()) existing->second->monitor.refuse_model(error.what());
+      }
+    }
+  }
+}
+
+void Monitor::take_measurements() {
+  for (;;) {
+    protocol::LoanedSamples<gearcoupling_MeasurementBatch, 64> batches(measurement_reader_.get());
+    if (batches.size() == 0) return;
+    for (std::size_t i = 0; i < batches.size(); ++i) {
+      if (!batches.info(i).valid_data) continue;
+      const gearcoupling_MeasurementBatch& batch = batches[i];
+      const std::string test_cell = batch.test_cell;
+      try {
+        require_test_cell_name(test_cell);
+      } catch (const InvalidInput& error) {
+        spdlog::warn("measurement batch of {} samples refused: {}", batch.samples._length,
+                     error.what());
+        continue;
+      }
+      Cell& c = cell(test_cell);
+      c.last_sample = Clock::now();
+      const auto decimation = decimations_.find(test_cell);
+      const std::uint32_t every = decimation != decimations_.end() ? decimation->second
+                                                                   : options_.decimation;
+      c.residuals.clear();
+      for (std::uint32_t k = 0; k < batch.samples._length; ++k) {
+        const gearcoupling_Measurement& m = batch.samples._buffer[k];
+        std::optional<RecordedSample> sample;
+        std::string refusal;
+        try {
+          sample = from_wire(m);
+        } catch (const InvalidInput& error) {
+          refusal = error.field() + ": " + error.what();
+        }
+        SensorMoments predicted;
+        if (c.monitor.take(batch.run_id, m.sequence_number, sample, refusal, predicted) !=
+            SampleOutcome::evaluated) {
+          continue;
+        }
+        if (c.decimation_count++ % every != 0) continue;
+        c.residuals.push_back({m.sequence_number, m.time_s, m.msy_nm, m.msz_nm, predicted.y_nm,
+                               predicted.z_nm});
+      }
+      if (c.residuals.empty()) continue;
+      gearcoupling_ResidualBatch out{};
+      std::copy_n(test_cell.c_str(), test_cell.size() + 1, out.test_cell);
+      out.run_id = batch.run_id;
+      out.model_name = const_cast<char*>(c.monitor.model().name.c_str());
+      out.decimation = every;
+      out.published_ns = realtime_ns();
+      out.residuals._buffer = c.residuals.data();
+      out.residuals._length = out.residuals._maximum = static_cast<std::uint32_t>(c.residuals.size());
+      out.residuals._release = false;
+      dds_write(residual_writer_.get(), &out);
+    }
+  }
+}
+
+void Monitor::publish_health() {
+  const auto now = Clock::now();
+  const auto wall = std::chrono::system_clock::now();
+  for (auto it = cells_.begin(); it != cells_.end();) {
+    const double silent_s = std::chrono::duration<double>(now - it->second->last_sample).count();
+    if (silent_s >= options_.dispose_s) {
+      spdlog::info("test cell {}: nothing for {:.1f} s, health disposed", it->first, silent_s);
+      dispose_health(health_writer_.get(), it->first);
+      it = cells_.erase(it);
+      continue;
+    }
+    write_health(health_writer_.get(), it->first, monitor_id_, silent_s >= options_.stale_s,
+                 it->second->monitor.health(wall));
+    ++it;
+  }
+}
+
+}  // namespace gc::live

@@ -1,0 +1,105 @@
+// gearcoupling-monitor: flags, logging and signals; live::Monitor does the rest
+// (docs/architecture.md, "The live test cell").
+#include <signal.h>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <thread>
+
+#include "codec/bundled_data.h"
+#include "codec/coupling_catalog.h"
+#include "core/model_error.h"
+#include "live/monitor.h"
+
+namespace {
+
+// SIGINT and SIGTERM blocked in every thread, waited for by one: DDS calls are not
+// async-signal-safe.
+sigset_t block_shutdown_signals() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  return signals;
+}
+
+gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::string& log_level) {
+  gc::live::MonitorOptions o;
+  o.models_dir = gc::codec::bundled_data_dir("models");
+  o.catalog_dir = gc::codec::default_catalog_dir();
+  std::vector<std::string> cell_models;
+  app.add_option("--domain", o.domain, "DDS domain id")->capture_default_str();
+  app.add_option("--model", o.default_model,
+                 "model of every test cell not named by --cell: a .textproto file, or a name in "
+                 "data/models")->capture_default_str();
+  app.add_option("--cell", cell_models, "CELL=MODEL: test cell CELL's model (repeatable)");
+  app.add_option("--catalog", o.catalog_dir, "coupling catalogue directory")->capture_default_str();
+  app.add_option("--window", o.cell.window_s, "health window in measurement time [s]")
+      ->check(CLI::Range(1e-3, 1e6))->capture_default_str();
+  app.add_option("--reference-torque", o.cell.reference_torque_nm,
+                 "T_ref of the worst-region wording [N·m]")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--loading-dead-band", o.cell.loading_dead_band_rad,
+                 "dead band of the loading direction [rad]")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--health-period", o.health_period_s, "health publication period [s]")
+      ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
+  app.add_option("--stale", o.stale_s, "health stale after this long without samples [s]")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--dispose", o.dispose_s, "health disposed after this long without samples [s]")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--decimate", o.decimation, "publish one residual per N evaluated samples")
+      ->check(CLI::Range(1u, 1000000u))->capture_default_str();
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
+  app.parse(argc, argv);
+  for (const std::string& item : cell_models) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) {
+      throw CLI::ValidationError("--cell", "'" + item + "' is not CELL=MODEL");
+    }
+    o.cell_models[item.substr(0, eq)] = item.substr(eq + 1);
+  }
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const sigset_t signals = block_shutdown_signals();
+  spdlog::set_default_logger(spdlog::stderr_color_mt("gearcoupling-monitor"));
+  spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
+  spdlog::flush_on(spdlog::level::info);
+  CLI::App app("gearcoupling-monitor: the model against live test-cell measurements over DDS "
+               "(docs/protocol.md, \"The live test cell\")");
+  gc::live::MonitorOptions options;
+  std::string log_level = "info";
+  try {
+    options = parse_flags(app, argc, argv, log_level);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  try {
+    gc::live::Monitor monitor(options);
+    spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s",
+                 monitor.monitor_id(), options.domain, options.default_model, options.cell.window_s);
+    std::thread waiter([&] {
+      int signal = 0;
+      sigwait(&signals, &signal);
+      spdlog::info("signal {}: stopping", signal);
+      monitor.stop();
+    });
+    waiter.detach();
+    monitor.run();
+    return 0;
+  } catch (const gc::ModelError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+}
