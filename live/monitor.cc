@@ -127,6 +127,19 @@ Monitor::Cell& Monitor::cell(const std::string& test_cell) {
   return *found->second;
 }
 
+CellModel Monitor::parsed_model(const std::string& text, const std::string& test_cell) {
+  auto found = parsed_models_.find(text);
+  if (found == parsed_models_.end()) {
+    if (parsed_models_.size() >= kParsedModelsKept) parsed_models_.clear();
+    found = parsed_models_
+                .emplace(text, parse_cell_model(text, "model swap for " + test_cell, options_.catalog_dir))
+                .first;
+  }
+  CellModel model = found->second;
+  model.since = std::chrono::system_clock::now();
+  return model;
+}
+
 void Monitor::take_models() {
   for (;;) {
     protocol::LoanedSamples<gearcoupling_ModelSwap, 16> swaps(model_reader_.get());
@@ -146,7 +159,7 @@ void Monitor::take_models() {
       if (text.empty()) continue;
       const auto existing = cells_.find(test_cell);
       try {
-        CellModel model = parse_cell_model(text, "model swap for " + test_cell, options_.catalog_dir);
+        CellModel model = parsed_model(text, test_cell);
         spdlog::info("test cell {}: model {} in force", test_cell, model.name);
         models_[test_cell] = model;
         if (existing != cells_.end()) existing->second->monitor.swap_model(std::move(model));
