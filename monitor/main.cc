@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
   try {
     options = parse_flags(app, argc, argv, log_level);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help is exit 0; a bad flag is bad input, exit 2 as everywhere in gearcoupling.
+    return app.exit(e) == 0 ? 0 : 2;
   }
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {

@@ -201,5 +201,18 @@ TEST_F(LiveTest, TheMonitorDoesNotDependOnTheServiceRestarting) {
   EXPECT_EQ(health->lost, 0u);
 }
 
+TEST(Monitor, RefusesABadFlagOrModelWithExitTwoAndTheReason) {
+  std::string log;
+  auto bad_window = start_monitor({"--window", "-1"}, &log);
+  EXPECT_EQ(bad_window->wait_exit(20.0), 2);
+  EXPECT_NE(read_file(log).find("--window"), std::string::npos) << read_file(log);
+  const std::string model = cli::testing::temp_path("bad_model") + ".textproto";
+  cli::testing::write_file(model, "name: \"bad\" coupling: \"nrel_upwind\" effects { name: \"friction\" "
+                                  "parameters { name: \"mu0\" value: 7 } }\n");
+  auto bad_model = start_monitor({"--cell", "c1=" + model}, &log);
+  EXPECT_EQ(bad_model->wait_exit(20.0), 2);
+  EXPECT_NE(read_file(log).find("mu0"), std::string::npos) << read_file(log);
+}
+
 }  // namespace
 }  // namespace gc::test
