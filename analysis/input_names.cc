@@ -12,18 +12,18 @@ struct InputName {
 };
 
 constexpr std::array<InputName, 12> kInputNames = {{
-    {"operating_point.torque_nm", "torque", "torque_nm"},
+    {"operating_point.torque_nm", "torque-nm", "torque_nm"},
     {"operating_point.misalignment_rad", "misalignment-deg", "misalignment_deg"},
     {"operating_point.direction_rad", "direction-deg", "direction_deg"},
     {"operating_point.friction_coefficient", "mu", "mu"},
     {"options.slices", "slices", ""},
     {"options.load_sharing.tolerance", "tolerance", ""},
     {"options.load_sharing.max_iterations", "max-iterations", ""},
-    {"measurement.torque_nm", "torque", ""},
+    {"measurement.torque_nm", "torque-nm", ""},
     {"measurement.misalignment_rad", "misalignment-deg", ""},
     {"measurement.direction_rad", "direction-deg", ""},
-    {"measurement.sensor_moment_y_nm", "msy", ""},
-    {"measurement.sensor_moment_z_nm", "msz", ""},
+    {"measurement.sensor_moment_y_nm", "msy-nm", ""},
+    {"measurement.sensor_moment_z_nm", "msz-nm", ""},
 }};
 
 const InputName* find(std::string_view field) {
@@ -41,7 +41,7 @@ bool is_coupling_field(std::string_view field) {
 }  // namespace
 
 std::string_view flag_for_field(std::string_view field) {
-  if (is_coupling_field(field)) return field == "catalog" ? "catalog" : "coupling";
+  if (is_coupling_field(field)) return field == "catalog" ? "catalogue" : "coupling";
   const InputName* name = find(field);
   return name ? name->flag : "";
 }

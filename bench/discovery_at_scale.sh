@@ -27,7 +27,7 @@ echo "# $n CLI processes at once; service $CYCLONEDDS_URI, clients $client_uri, 
 service=$!
 trap 'kill -TERM $service 2>/dev/null || true; rm -rf "$work"' EXIT
 # The service is up once one CLI call is answered (not counted).
-timeout 30 "$cli" jam-angle --remote --domain "$domain" --coupling nrel_upwind --timeout 20 \
+timeout 30 "$cli" jam-angle --remote --domain "$domain" --coupling nrel_upwind --timeout-s 20 \
   >/dev/null
 
 start=$(date +%s.%N)
@@ -35,7 +35,7 @@ i=0
 while [ $i -lt "$n" ]; do
   ( rc=0
     CYCLONEDDS_URI=$client_uri timeout 40 "$cli" jam-angle --remote --domain "$domain" --coupling nrel_upwind \
-      --timeout 30 >"$work/out.$i" 2>&1 || rc=$?
+      --timeout-s 30 >"$work/out.$i" 2>&1 || rc=$?
     echo "$rc $(date +%s.%N)" >"$work/done.$i" ) &
   i=$((i + 1))
 done

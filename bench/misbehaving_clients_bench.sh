@@ -20,7 +20,7 @@ echo "# $service_bin, domain $domain, $(nproc) cores, load: $(cut -d' ' -f1-3 /p
 service=""
 trap 'if [ -n "$service" ]; then kill -TERM $service 2>/dev/null || true; fi' EXIT INT TERM
 for mode in none fake-ids deaf; do
-  timeout -k 5 $((seconds + 60)) "$service_bin" --domain "$domain" --threads 2 --log-level error &
+  timeout -k 5 $((seconds + 60)) "$service_bin" --domain "$domain" --jobs 2 --log-level error &
   service=$!
   bad=""
   if [ "$mode" != none ]; then

@@ -10,6 +10,8 @@ if(GC_BUILD_SERVICE)
   list(APPEND gc_programs gearcoupling-service gearcoupling-monitor)
 endif()
 install(TARGETS ${gc_programs})
+install(FILES ${PROJECT_BINARY_DIR}/clients/cli/gearcoupling.bash
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME gearcoupling)
 install(TARGETS ${gc_public_libraries} EXPORT gearcoupling-targets)
 
 # Public headers: what the public libraries' headers include, the generated ones too.

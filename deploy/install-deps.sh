@@ -6,8 +6,7 @@ packages=(
   cmake g++ make
   libeigen3-dev
   libprotobuf-dev protobuf-compiler
-  libspdlog-dev libfmt-dev
-  libcli11-dev    # command-line flags (gearcoupling-monitor)
+  libspdlog-dev libfmt-dev libcli11-dev
   cyclonedds-dev cyclonedds-tools
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   libjs-chart.js  # Chart.js, inlined into validate's HTML report

@@ -17,11 +17,11 @@ trap 'kill -TERM $service 2>/dev/null; wait $service 2>/dev/null || true' EXIT I
 cli=./build/clients/cli/gearcoupling
 echo "== first queries, through the service (--remote) on domain $domain"
 $cli jam-angle --remote --domain "$domain"
-$cli contact --torque 1.5e6 --misalignment-deg 0.5 --mu 0.1 --remote --domain "$domain"
-$cli moments --torque 1.5e6 --misalignment-deg 0.45 --mu 0.12 --remote --domain "$domain"
+$cli contact --torque-nm 1.5e6 --misalignment-deg 0.5 --mu 0.1 --remote --domain "$domain"
+$cli moments --torque-nm 1.5e6 --misalignment-deg 0.45 --mu 0.12 --remote --domain "$domain"
 $cli restoring-torque --remote --domain "$domain"
 echo "== the same moments in process (identical output)"
-$cli moments --torque 1.5e6 --misalignment-deg 0.45 --mu 0.12
+$cli moments --torque-nm 1.5e6 --misalignment-deg 0.45 --mu 0.12
 
 if [ "${1:-}" = "--once" ]; then exit 0; fi
 echo "== gearcoupling-service serving on domain $domain (loopback); Ctrl-C stops it"

@@ -123,6 +123,11 @@ Monitor::Cell& Monitor::cell(const std::string& test_cell) {
     found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
                                           CellMonitor(model_for(test_cell), options_.cell)}))
                 .first;
+    const auto refusal = model_refusals_.find(test_cell);
+    if (refusal != model_refusals_.end()) {
+      found->second->monitor.refuse_model(refusal->second);
+      model_refusals_.erase(refusal);
+    }
   }
   return *found->second;
 }
@@ -162,10 +167,15 @@ void Monitor::take_models() {
         CellModel model = parsed_model(text, test_cell);
         spdlog::info("test cell {}: model {} in force", test_cell, model.name);
         models_[test_cell] = model;
+        model_refusals_.erase(test_cell);
         if (existing != cells_.end()) existing->second->monitor.swap_model(std::move(model));
       } catch (const ModelError& error) {
         spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
-        if (existing != cells_.end()) existing->second->monitor.refuse_model(error.what());
+        if (existing != cells_.end()) {
+          existing->second->monitor.refuse_model(error.what());
+        } else {
+          model_refusals_[test_cell] = error.what();   // told when the test cell appears
+        }
       }
     }
   }

@@ -58,6 +58,7 @@ class Monitor {
   CellModel default_model_;
   std::map<std::string, CellModel> models_;       // configured, or swapped in while absent
   std::map<std::string, std::uint32_t> decimations_;
+  std::map<std::string, std::string> model_refusals_;   // for test cells not seen yet
   // Models parsed from swap texts, by text: a dashboard switching between before and after
   // sends the same few texts again and again, and parsing one builds a whole coupling.
   std::map<std::string, CellModel> parsed_models_;

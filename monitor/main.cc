@@ -37,18 +37,18 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
                  "model of every test cell not named by --cell: a .textproto file, or a name in "
                  "data/models")->capture_default_str();
   app.add_option("--cell", cell_models, "CELL=MODEL: test cell CELL's model (repeatable)");
-  app.add_option("--catalog", o.catalog_dir, "coupling catalogue directory")->capture_default_str();
-  app.add_option("--window", o.cell.window_s, "health window in measurement time [s]")
+  app.add_option("--catalogue", o.catalog_dir, "coupling catalogue directory")->capture_default_str();
+  app.add_option("--window-s,--window", o.cell.window_s, "health window in measurement time [s]")
       ->check(CLI::Range(1e-3, 1e6))->capture_default_str();
-  app.add_option("--reference-torque", o.cell.reference_torque_nm,
+  app.add_option("--reference-torque-nm,--reference-torque", o.cell.reference_torque_nm,
                  "T_ref of the worst-region wording [N·m]")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--loading-dead-band", o.cell.loading_dead_band_rad,
+  app.add_option("--loading-dead-band-rad,--loading-dead-band", o.cell.loading_dead_band_rad,
                  "dead band of the loading direction [rad]")->check(CLI::NonNegativeNumber)->capture_default_str();
-  app.add_option("--health-period", o.health_period_s, "health publication period [s]")
+  app.add_option("--health-period-s,--health-period", o.health_period_s, "health publication period [s]")
       ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
-  app.add_option("--stale", o.stale_s, "health stale after this long without samples [s]")
+  app.add_option("--stale-s,--stale", o.stale_s, "health stale after this long without samples [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--dispose", o.dispose_s, "health disposed after this long without samples [s]")
+  app.add_option("--dispose-s,--dispose", o.dispose_s, "health disposed after this long without samples [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--decimate", o.decimation, "publish one residual per N evaluated samples")
       ->check(CLI::Range(1u, 1000000u))->capture_default_str();

@@ -45,8 +45,10 @@ int main(int argc, char** argv) {
                  gc::service::service_usage().c_str());
     return 2;
   }
-  if (command.help) {
-    std::fputs(gc::service::service_usage().c_str(), stdout);
+  if (command.help || command.version) {
+    std::fputs(command.help ? gc::service::service_usage().c_str()
+                            : gc::service::service_version().c_str(),
+               stdout);
     return 0;
   }
   const gc::service::ServiceConfig& config = command.config;

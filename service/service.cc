@@ -281,7 +281,7 @@ void Service::release_parked(bool final) {
   if (unlogged_unmatched_ == 0 || (!final && now < next_unmatched_log_)) return;
   const UnmatchedRequest& e = first_unlogged_unmatched_;
   spdlog::warn("{} request(s) dropped unanswered: no reply reader of their client matched within "
-               "{} s (--reply-match-timeout; a made-up client_id, or a client that did not wait "
+               "{} s (--reply-match-timeout-s; a made-up client_id, or a client that did not wait "
                "for discovery), the first: {} client={} seq={}",
                unlogged_unmatched_, config_.reply_match_timeout_s,
                protocol::to_string(e.calculation), protocol::hex_id(e.client_id),

@@ -1,9 +1,9 @@
 #include "service/service_config.h"
 
-#include <charconv>
 #include <fstream>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 #include <spdlog/common.h>
@@ -29,24 +29,6 @@ class FileErrors : public google::protobuf::io::ErrorCollector {
   std::string path_;
   std::string first_;
 };
-
-double parse_number(const std::string& flag, const std::string& text) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) {
-    throw InvalidInput(flag, "\"" + text + "\" is not a number");
-  }
-  return value;
-}
-
-int parse_integer(const std::string& flag, const std::string& text) {
-  int value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) {
-    throw InvalidInput(flag, "\"" + text + "\" is not a whole number");
-  }
-  return value;
-}
 
 }  // namespace
 
@@ -76,56 +58,83 @@ void apply_config_file(const std::string& path, ServiceConfig& config) {
   }
 }
 
+namespace {
+
+// The command line of gearcoupling-service, bound to `command`: CLI11 assigns a flag's value
+// only when it is given, and runs --config's callback first (options are processed in the
+// order declared), so flags override the file wherever --config appears.
+void declare_flags(CLI::App& app, ServiceCommand& command) {
+  ServiceConfig& c = command.config;
+  // A flag given twice: the last wins, as flags win over the file (a wrapper script adds to a
+  // command line rather than editing it).
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.set_version_flag("--version", "gearcoupling-service " GC_VERSION);
+  app.get_formatter()->column_width(34);
+  app.add_option_function<std::string>(
+      "--config", [&c](const std::string& path) { apply_config_file(path, c); },
+      "settings in protobuf text format (service/service_config.proto); flags override it")
+      ->type_name("FILE");
+  app.add_option("--domain", c.domain,
+                 "DDS domain id, 0..232; the network comes from the Cyclone XML named by "
+                 "CYCLONEDDS_URI (deploy/cyclonedds-loopback.xml)")
+      ->type_name("N")->capture_default_str();
+  app.add_option("-j,--jobs,--threads", c.threads,
+                 "worker threads, 0 = one per core, 0..1024 (--threads: the older spelling)")
+      ->type_name("N")->capture_default_str();
+  app.add_option("--catalogue", c.catalogue_dir,
+                 "directory of *.textproto couplings (default: the bundled NREL ones or "
+                 "$GEARCOUPLING_CATALOG)")
+      ->type_name("DIR");
+  app.add_option("--log-level", c.log_level,
+                 "trace, debug (one line per request), info, warn, error, off")
+      ->type_name("LEVEL")->capture_default_str();
+  const auto seconds = [&app](const std::string& names, double& value, const std::string& help) {
+    app.add_option(names, value, help + " [s]")->type_name("S")->capture_default_str();
+  };
+  seconds("--status-interval-s,--status-interval", c.status_interval_s, "status topic period");
+  seconds("--stats-interval-s,--stats-interval", c.stats_log_interval_s,
+          "periodic stats log line");
+  seconds("--lease-s,--lease", c.liveliness_lease_s, "liveliness lease of the status writer");
+  seconds("--reply-match-timeout-s,--reply-match-timeout", c.reply_match_timeout_s,
+          "longest a request waits (parked, before any work) for its client's reply reader, "
+          "then it is dropped");
+  seconds("--reply-block-s,--reply-block", c.reply_block_s,
+          "longest a reply waits, retried without blocking a worker, for a client that does "
+          "not acknowledge (slow, stopped, killed)");
+  seconds("--departed-hold-s,--departed-hold", c.departed_hold_s,
+          "then drop that client's requests for this long");
+  seconds("--shutdown-grace-s,--shutdown-grace", c.shutdown_grace_s,
+          "after SIGINT/SIGTERM keep answering this long, then exit");
+  seconds("--deadline-s,--deadline", c.calculation_deadline_s,
+          "a request not answered this long after it arrived (queued or computing) gets "
+          "STATUS_DEADLINE_EXCEEDED, 1e-6..60");
+  app.footer("Flags ending in -s take seconds; each older name without the unit is an alias.");
+}
+
+}  // namespace
+
 ServiceCommand parse_service_command(const std::vector<std::string>& args) {
   ServiceCommand command;
-  // The file first, so flags override it wherever --config appears.
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--config") {
-      if (i + 1 >= args.size()) throw InvalidInput("--config", "needs a file");
-      apply_config_file(args[i + 1], command.config);
-    }
+  CLI::App app{"gearcoupling-service: crowned-tooth gear coupling calculations over DDS "
+               "request/reply",
+               "gearcoupling-service"};
+  app.allow_extras();
+  declare_flags(app, command);
+  try {
+    app.parse(std::vector<std::string>(args.rbegin(), args.rend()));  // CLI11 pops the back
+  } catch (const CLI::CallForHelp&) {
+    command.help = true;
+    return command;
+  } catch (const CLI::CallForVersion&) {
+    command.version = true;
+    return command;
+  } catch (const CLI::ParseError& error) {
+    throw InvalidInput("command line", error.what());
   }
-  ServiceConfig& c = command.config;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (flag == "--help" || flag == "-h") {
-      command.help = true;
-      continue;
-    }
-    if (i + 1 >= args.size()) throw InvalidInput(flag, "unknown flag or missing value");
-    const std::string& value = args[++i];
-    if (flag == "--config") continue;
-    if (flag == "--domain") {
-      c.domain = parse_integer(flag, value);
-    } else if (flag == "--threads") {
-      const int threads = parse_integer(flag, value);
-      if (threads < 0) throw InvalidInput(flag, threads, "[0, 1024]; 0 = one per core");
-      c.threads = static_cast<unsigned>(threads);
-    } else if (flag == "--catalogue" || flag == "--catalog") {
-      c.catalogue_dir = value;
-    } else if (flag == "--log-level") {
-      c.log_level = value;
-    } else if (flag == "--status-interval") {
-      c.status_interval_s = parse_number(flag, value);
-    } else if (flag == "--stats-interval") {
-      c.stats_log_interval_s = parse_number(flag, value);
-    } else if (flag == "--lease") {
-      c.liveliness_lease_s = parse_number(flag, value);
-    } else if (flag == "--reply-match-timeout") {
-      c.reply_match_timeout_s = parse_number(flag, value);
-    } else if (flag == "--reply-block") {
-      c.reply_block_s = parse_number(flag, value);
-    } else if (flag == "--departed-hold") {
-      c.departed_hold_s = parse_number(flag, value);
-    } else if (flag == "--shutdown-grace") {
-      c.shutdown_grace_s = parse_number(flag, value);
-    } else if (flag == "--deadline") {
-      c.calculation_deadline_s = parse_number(flag, value);
-    } else {
-      throw InvalidInput(flag, "unknown flag (see --help)");
-    }
+  if (!app.remaining().empty()) {
+    throw InvalidInput(app.remaining().front(), "unknown flag or stray argument (see --help)");
   }
-  validate(c);
+  validate(command.config);
   return command;
 }
 
@@ -149,33 +158,14 @@ void validate(const ServiceConfig& c) {
 }
 
 std::string service_usage() {
-  return R"(gearcoupling-service: crowned-tooth gear coupling calculations over DDS request/reply
-
-usage: gearcoupling-service [--config FILE] [--domain N] [--threads N] [--catalogue DIR]
-                            [--log-level LEVEL] [--status-interval S] [--stats-interval S]
-                            [--lease S] [--reply-match-timeout S] [--reply-block S]
-                            [--departed-hold S] [--shutdown-grace S] [--deadline S]
-
-  --config FILE          settings in protobuf text format (service/service_config.proto);
-                         flags override it
-  --domain N             DDS domain id, 0..232 (default 0); the network comes from the Cyclone
-                         XML named by CYCLONEDDS_URI (deploy/cyclonedds-loopback.xml)
-  --threads N            worker threads, 0 = one per core (default 0)
-  --catalogue DIR        directory of *.textproto couplings (default: the bundled NREL ones or
-                         $GEARCOUPLING_CATALOG)
-  --log-level LEVEL      trace, debug (one line per request), info (default), warn, error, off
-  --status-interval S    status topic period in seconds (default 1)
-  --stats-interval S     periodic stats log line in seconds (default 10)
-  --lease S              liveliness lease of the status writer in seconds (default 2)
-  --reply-match-timeout S  longest a request waits (parked, before any work) for its
-                         client's reply reader, then it is dropped (default 1)
-  --reply-block S        longest a reply waits, retried without blocking a worker, for a
-                         client that does not acknowledge (slow, stopped, killed) (default 0.5)
-  --departed-hold S      then drop that client's requests for this long (default 5)
-  --shutdown-grace S     after SIGINT/SIGTERM keep answering this long, then exit (default 0.2)
-  --deadline S           a request not answered this long after it arrived (queued or
-                         computing) gets STATUS_DEADLINE_EXCEEDED, 1e-6..60 (default 1)
-)";
+  ServiceCommand command;
+  CLI::App app{"gearcoupling-service: crowned-tooth gear coupling calculations over DDS "
+               "request/reply",
+               "gearcoupling-service"};
+  declare_flags(app, command);
+  return app.help();
 }
+
+std::string service_version() { return "gearcoupling-service " GC_VERSION "\n"; }
 
 }  // namespace gc::service

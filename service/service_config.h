@@ -34,13 +34,16 @@ struct ServiceConfig {
 /// What the command line asked for.
 struct ServiceCommand {
   ServiceConfig config;
-  bool help = false;
+  bool help = false;     ///< --help: print service_usage()
+  bool version = false;  ///< --version: print service_version()
 };
 
-/// Parses `args` (without the program name): --config FILE is applied first wherever it
-/// appears, then --domain N, --threads N, --catalogue DIR (or --catalog), --log-level L,
-/// --status-interval S, --stats-interval S, --lease S, --reply-match-timeout S,
-/// --reply-block S, --departed-hold S, --shutdown-grace S, --deadline S, --help. Throws InvalidInput naming the flag or the file's field.
+/// Parses `args` (without the program name) with CLI11, "--flag value" or "--flag=value":
+/// --config FILE is applied first wherever it appears, then --domain N, -j/--jobs N,
+/// --catalogue DIR, --log-level L and the durations in seconds (--status-interval-s,
+/// --stats-interval-s, --lease-s, --reply-match-timeout-s, --reply-block-s, --departed-hold-s,
+/// --shutdown-grace-s, --deadline-s; each also without "-s"), --help, --version. Throws
+/// InvalidInput naming the flag, or the setting out of range, or the file's field.
 ServiceCommand parse_service_command(const std::vector<std::string>& args);
 
 /// Reads a config file into `config` (fields it sets override). Errors name the file, line and
@@ -50,7 +53,10 @@ void apply_config_file(const std::string& path, ServiceConfig& config);
 /// Throws InvalidInput naming the first setting out of range.
 void validate(const ServiceConfig& config);
 
-/// The usage text of gearcoupling-service.
+/// The usage text of gearcoupling-service: every flag with its unit and default.
 std::string service_usage();
+
+/// "gearcoupling-service <version>\n", the CMake project version.
+std::string service_version();
 
 }  // namespace gc::service

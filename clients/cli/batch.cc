@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "analysis/batch_csv.h"
+#include "clients/cli/jobs_flag.h"
 #include "clients/cli/operating_point_flags.h"
 #include "clients/cli/subcommand.h"
 #include "core/model_error.h"
@@ -38,10 +39,12 @@ std::vector<FlagSpec> batch_flags() {
   std::vector<FlagSpec> flags = {
       {"in", "FILE|-", "input CSV of load cases ('-': standard input)", std::nullopt},
       {"out", "FILE|-", "output CSV of results ('-': standard output)", "-"},
-      {"jobs", "N", "worker threads",
-       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
+      jobs_flag(),
   };
-  for (FlagSpec& flag : contact_option_flags()) flags.push_back(std::move(flag));
+  append(flags, contact_option_flags());
+  append(flags, calculator_flags(/*json=*/false));
+  flags.push_back({"json", "", "", std::nullopt, true, '\0', {},
+                   "batch writes CSV (see --out and --help)"});
   return flags;
 }
 
@@ -164,8 +167,7 @@ void write_parts(const std::vector<ChunkPart>& parts, std::FILE* out) {
 }
 
 int run_batch(const Flags& flags, const Calculator& calculator, std::FILE* standard_output) {
-  if (flags.enabled("json")) throw UsageError("--json: batch writes CSV (see --help)");
-  const int threads = flags.integer("jobs", 1, 256);
+  const int threads = jobs_from(flags);
   const std::unique_ptr<std::istream> in = open_input(flags.text("in"));
   std::string header;
   long line_number = 0;

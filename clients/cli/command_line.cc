@@ -1,5 +1,6 @@
 #include "clients/cli/command_line.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "analysis/number_text.h"
@@ -8,54 +9,49 @@ namespace gc::cli {
 
 using analysis::parse_double;
 using analysis::parse_int;
+namespace {
 
-Flags::Flags(std::vector<FlagSpec> specs, std::span<const char* const> args)
-    : specs_(std::move(specs)), values_(specs_.size()) {
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string_view arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      help_ = true;
-      continue;
-    }
-    std::optional<std::string> inline_value;
-    if (arg.size() >= 2 && arg[0] == '-' && arg[1] != '-') {  // "-j 2" or "-j2"
-      if (arg.size() > 2) inline_value = std::string(arg.substr(2));
-      arg = long_name(arg[1]);
-    } else if (arg.starts_with("--")) {
-      arg.remove_prefix(2);
-    } else {
-      throw UsageError(fmt::format("unexpected argument '{}'", arg));
-    }
-    if (const auto equals = arg.find('='); equals != std::string_view::npos) {
-      inline_value = std::string(arg.substr(equals + 1));
-      arg = arg.substr(0, equals);
-    }
-    const std::size_t k = index(arg);
-    if (values_[k]) throw UsageError(fmt::format("--{} given twice", arg));
-    if (specs_[k].is_switch) {
-      if (inline_value) throw UsageError(fmt::format("--{} takes no value", arg));
-      values_[k] = "true";
-    } else if (inline_value) {
-      values_[k] = std::move(inline_value);
-    } else if (i + 1 < args.size()) {
-      values_[k] = args[++i];
-    } else {
-      throw UsageError(fmt::format("--{} needs a value ({})", arg, specs_[k].value_name));
-    }
-  }
-  if (help_) return;
+// "-j,--jobs,--threads": the names CLI11 matches.
+std::string cli11_names(const FlagSpec& spec) {
+  std::string names = spec.short_name != '\0' ? fmt::format("-{},", spec.short_name) : "";
+  names += "--" + spec.name;
+  for (const std::string& alias : spec.aliases) names += ",--" + alias;
+  return names;
+}
+
+}  // namespace
+
+Flags::Flags(std::vector<FlagSpec> specs) : specs_(std::move(specs)), values_(specs_.size()) {}
+
+void Flags::add_to(CLI::App& app) {
   for (std::size_t k = 0; k < specs_.size(); ++k) {
-    if (!values_[k] && !specs_[k].is_switch && !specs_[k].default_value) {
-      throw UsageError(fmt::format("--{} is required ({})", specs_[k].name, specs_[k].help));
+    const FlagSpec& spec = specs_[k];
+    if (spec.is_switch) {
+      app.add_flag_function(cli11_names(spec), [this, k](std::int64_t count) {
+        if (count > 0) values_[k] = "true";
+      }, spec.help)->group(spec.refused.empty() ? "flags" : "");
+    } else if (!spec.refused.empty()) {  // its value is taken so check() can name the flag
+      app.add_option_function<std::string>(
+             cli11_names(spec), [this, k](const std::string& value) { values_[k] = value; })
+          ->group("");
+    } else {
+      app.add_option_function<std::string>(
+          cli11_names(spec), [this, k](const std::string& value) { values_[k] = value; },
+          spec.help);
     }
   }
 }
 
-std::string_view Flags::long_name(char short_name) const {
-  for (const FlagSpec& spec : specs_) {
-    if (spec.short_name == short_name) return spec.name;
+void Flags::check() const {
+  for (std::size_t k = 0; k < specs_.size(); ++k) {
+    const FlagSpec& spec = specs_[k];
+    if (!spec.refused.empty() && values_[k]) {
+      throw UsageError(fmt::format("--{}: {}", spec.name, spec.refused));
+    }
+    if (!values_[k] && !spec.is_switch && !spec.default_value && spec.refused.empty()) {
+      throw UsageError(fmt::format("--{} is required ({})", spec.name, spec.help));
+    }
   }
-  throw UsageError(fmt::format("unknown flag -{} (see --help)", short_name));
 }
 
 std::size_t Flags::index(std::string_view name) const {
@@ -67,12 +63,22 @@ std::size_t Flags::index(std::string_view name) const {
 
 const FlagSpec& Flags::spec(std::string_view name) const { return specs_[index(name)]; }
 
-bool Flags::enabled(std::string_view name) const { return values_[index(name)].has_value(); }
+bool Flags::has(std::string_view name) const {
+  for (const FlagSpec& spec : specs_) {
+    if (spec.name == name && spec.refused.empty()) return true;
+  }
+  return false;
+}
+
+bool Flags::enabled(std::string_view name) const { return has(name) && given(name); }
+
+bool Flags::given(std::string_view name) const { return values_[index(name)].has_value(); }
 
 const std::string& Flags::text(std::string_view name) const {
   const std::size_t k = index(name);
   if (values_[k]) return *values_[k];
-  return *specs_[k].default_value;  // present: the constructor checked required flags
+  if (!specs_[k].default_value) throw UsageError(fmt::format("--{} is required", name));
+  return *specs_[k].default_value;
 }
 
 double Flags::number(std::string_view name) const {
@@ -98,23 +104,48 @@ int Flags::integer(std::string_view name, int lo, int hi) const {
   return *parsed;
 }
 
+bool parse_flags(Flags& flags, std::span<const char* const> args) {
+  CLI::App app;
+  app.allow_extras();
+  flags.add_to(app);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 pops from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    return false;
+  } catch (const CLI::ParseError& error) {
+    throw UsageError(error.what());
+  }
+  if (!app.remaining().empty()) throw UsageError(unexpected_arguments(app.remaining()));
+  flags.check();
+  return true;
+}
+
+std::string unexpected_arguments(const std::vector<std::string>& remaining) {
+  const std::string& first = remaining.front();
+  return first.starts_with("-") ? fmt::format("unknown flag {} (see --help)", first)
+                                : fmt::format("unexpected argument '{}'", first);
+}
+
 std::string usage_text(std::string_view subcommand, std::string_view summary,
                        const std::vector<FlagSpec>& specs) {
   std::string text = fmt::format("usage: gearcoupling {} [flags]\n\n{}\n\nflags:\n", subcommand,
                                  summary);
   for (const FlagSpec& spec : specs) {
+    if (!spec.refused.empty()) continue;
     std::string left =
         spec.is_switch ? "--" + spec.name : fmt::format("--{} <{}>", spec.name, spec.value_name);
     if (spec.short_name != '\0') left = fmt::format("-{}, {}", spec.short_name, left);
     std::string right = spec.help;
     if (spec.default_value) {
-      right += fmt::format(" (default {})", *spec.default_value);
+      right += fmt::format(" (default {})", spec.default_value->empty() ? "none" : *spec.default_value);
     } else if (!spec.is_switch) {
       right += " (required)";
     }
-    text += fmt::format("  {:<28} {}\n", left, right);
+    for (const std::string& alias : spec.aliases) right += fmt::format("; alias --{}", alias);
+    text += fmt::format("  {:<30} {}\n", left, right);
   }
-  text += fmt::format("  {:<28} {}\n", "--help", "this text");
+  text += fmt::format("  {:<30} {}\n", "-h, --help", "this text");
   return text;
 }
 

@@ -1,5 +1,6 @@
-// Flags of one subcommand: "--name value", "--name=value" or a bare "--switch". Each subcommand
-// declares its flags; anything else on the command line is a usage error.
+// Flags of one subcommand, declared as a table (FlagSpec) and parsed by CLI11: "--name value",
+// "--name=value", "-j 2", "-j2" or a bare "--switch". The same table gives the help text and the
+// bash completion (bash_completion.h); anything not in it is a usage error.
 #pragma once
 
 #include <optional>
@@ -8,6 +9,10 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace gc::cli {
 
@@ -18,22 +23,34 @@ class UsageError : public std::runtime_error {
 };
 
 struct FlagSpec {
-  std::string name;                        ///< without the leading "--"
+  std::string name;                        ///< without the leading "--"; ends in its unit
   std::string value_name;                  ///< shown in help, e.g. "N·m"; empty for a switch
   std::string help;
   std::optional<std::string> default_value;  ///< none: the flag is required (unless a switch)
   bool is_switch = false;
   char short_name = '\0';                  ///< e.g. 'j' for "-j N"; '\0' for none
+  std::vector<std::string> aliases = {};   ///< older spellings still accepted, without "--"
+  /// Not empty: the flag is refused with this reason (a flag other subcommands take that this
+  /// one cannot honour); such a flag is left out of the help and the completion.
+  std::string refused = {};
 };
 
+/// The values of one subcommand's flags. Bound to a CLI::App by add_to(), so it stays where it
+/// was made (neither copied nor moved).
 class Flags {
  public:
-  /// Parses `args` (after the subcommand name). Throws UsageError for an unknown flag, a missing
-  /// value, a flag given twice or a required flag absent. "--help" is always accepted.
-  Flags(std::vector<FlagSpec> specs, std::span<const char* const> args);
+  explicit Flags(std::vector<FlagSpec> specs);
+  Flags(const Flags&) = delete;
+  Flags& operator=(const Flags&) = delete;
 
-  bool help_requested() const { return help_; }
+  /// Declares every flag on `app` (a subcommand): parsing `app` fills this object.
+  void add_to(CLI::App& app);
+  /// After parsing: UsageError for a refused flag given, or a required flag absent.
+  void check() const;
+
+  bool has(std::string_view name) const;              ///< this subcommand declares the flag
   bool enabled(std::string_view name) const;          ///< a switch
+  bool given(std::string_view name) const;            ///< on the command line, not defaulted
   const std::string& text(std::string_view name) const;  ///< as given, or the default
   /// The flag as a number; UsageError naming the flag when it is not one.
   double number(std::string_view name) const;
@@ -43,15 +60,21 @@ class Flags {
 
  private:
   const FlagSpec& spec(std::string_view name) const;
-  std::string_view long_name(char short_name) const;
   std::size_t index(std::string_view name) const;
 
   std::vector<FlagSpec> specs_;
   std::vector<std::optional<std::string>> values_;  // parallel to specs_
-  bool help_ = false;
 };
 
-/// Help text: usage line, summary, every flag with its unit, default or "required".
+/// Parses `args` (after the subcommand name) into `flags` with a CLI::App of their own; for
+/// tests and one-subcommand programs. Returns false when --help was asked for.
+bool parse_flags(Flags& flags, std::span<const char* const> args);
+
+/// "unknown flag --x (see --help)" or "unexpected argument 'x'": what CLI11 could not place
+/// (CLI::App::remaining()), which must not be empty.
+std::string unexpected_arguments(const std::vector<std::string>& remaining);
+
+/// Help text: usage line, summary, every flag with its unit, aliases, default or "required".
 std::string usage_text(std::string_view subcommand, std::string_view summary,
                        const std::vector<FlagSpec>& specs);
 

@@ -8,25 +8,58 @@
 
 namespace gc::cli {
 
-std::vector<FlagSpec> common_flags() {
-  return {
+FlagSpec catalogue_flag() {
+  return {"catalogue", "DIR",
+          "catalogue directory of *.textproto couplings ($GEARCOUPLING_CATALOG)",
+          codec::default_catalog_dir().string()};
+}
+
+FlagSpec json_flag() {
+  return {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
+          true};
+}
+
+std::vector<FlagSpec> calculator_flags(bool json) {
+  std::vector<FlagSpec> flags = {
       {"coupling", "NAME|FILE",
        "coupling: a name in the catalogue, or a .textproto file (a path with '/' or ending in "
        ".textproto)",
        "nrel_upwind"},
-      {"catalog", "DIR", "catalogue directory of *.textproto couplings ($GEARCOUPLING_CATALOG)",
-       codec::default_catalog_dir().string()},
-      {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
-       true},
+      catalogue_flag(),
       {"remote", "", "compute on gearcoupling-service over DDS (CYCLONEDDS_URI) instead of here",
        std::nullopt, true},
-      {"domain", "N", "DDS domain of the service, with --remote", "0"},
-      {"timeout", "S", "seconds to wait for each reply, with --remote", "10"},
+      {"domain", "N", "DDS domain of the service, with --remote, 0..232", "0"},
+      {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
+       '\0', {"timeout"}},
       {"client-id-prefix", "HEX8",
        "with --remote and DDS Security: the client_id_prefix of this identity "
        "(docs/security.md; $GC_CLIENT_ID_PREFIX)",
        std::getenv("GC_CLIENT_ID_PREFIX") != nullptr ? std::getenv("GC_CLIENT_ID_PREFIX") : ""},
   };
+  if (json) flags.push_back(json_flag());
+  return flags;
+}
+
+std::vector<FlagSpec> refused_calculator_flags(std::string_view subcommand) {
+  const std::string reason = fmt::format(
+      "not taken by {}: it computes in process, on the model file's coupling (--model); the "
+      "service computes single load cases only (docs/cli.md)",
+      subcommand);
+  std::vector<FlagSpec> flags;
+  for (FlagSpec& flag : calculator_flags(/*json=*/false)) {
+    if (flag.name == "catalogue") continue;
+    flag.refused = reason;
+    flags.push_back(std::move(flag));
+  }
+  return flags;
+}
+
+FlagSpec live_domain_flag() {
+  return {"domain", "N", "DDS domain of the live test cell (CYCLONEDDS_URI), 0..232", "0"};
+}
+
+void append(std::vector<FlagSpec>& flags, std::vector<FlagSpec> more) {
+  for (FlagSpec& flag : more) flags.push_back(std::move(flag));
 }
 
 void print_json(const google::protobuf::Message& message, std::FILE* out) {

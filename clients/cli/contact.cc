@@ -18,7 +18,8 @@ using codec::degrees_from_radians;
 
 std::vector<FlagSpec> contact_flags() {
   std::vector<FlagSpec> flags = operating_point_flags(/*friction_used=*/false);
-  for (FlagSpec& flag : contact_option_flags()) flags.push_back(std::move(flag));
+  append(flags, contact_option_flags());
+  append(flags, calculator_flags());
   return flags;
 }
 

@@ -7,6 +7,7 @@
 #include "analysis/diagnosis_summary.h"
 #include "analysis/recording_csv.h"
 #include "analysis/validation_result.h"
+#include "clients/cli/jobs_flag.h"
 #include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
@@ -22,14 +23,16 @@ using analysis::read_recording;
 namespace {
 
 std::vector<FlagSpec> diagnose_flags() {
-  return {
+  std::vector<FlagSpec> flags = {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
       columns_flag(),
       {"write-model", "FILE", "also write the model with the effects found (text format)", ""},
-      {"threads", "N", "threads for the model evaluations",
-       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
+      jobs_flag(),
   };
+  append(flags, {catalogue_flag(), json_flag()});
+  append(flags, refused_calculator_flags("diagnose"));
+  return flags;
 }
 
 /// The model with every effect the diagnosis added, as a model file.
@@ -58,7 +61,7 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
   analysis::require_compared_samples(flags.text("data"), model.name, check.compared, recording.rows_read,
                                      recording.excluded_rows, recording.samples.size(), check.first_refusal);
   const Diagnosis diagnosis =
-      diagnose(model.model, recording.samples, thread_parallel_for(flags.integer("threads", 1, 1024)));
+      diagnose(model.model, recording.samples, thread_parallel_for(jobs_from(flags)));
   gearcoupling::v1::DiagnosisResult result = codec::to_message(diagnosis);
   result.set_recording(flags.text("data"));
   result.set_model(model.name);

@@ -11,23 +11,25 @@ using analysis::quantity_table;
 namespace {
 
 std::vector<FlagSpec> friction_flags() {
-  return {
-      {"torque", "N·m", "measured torque T [N·m], > 0", std::nullopt},
+  std::vector<FlagSpec> flags = {
+      {"torque-nm", "N·m", "measured torque T [N·m], > 0", std::nullopt, false, '\0', {"torque"}},
       {"misalignment-deg", "deg", "measured misalignment zeta [deg]", std::nullopt},
       {"direction-deg", "deg", "direction beta of the misalignment axis [deg]", "0"},
-      {"msy", "N·m", "measured sensor moment M_sy' [N·m]", std::nullopt},
-      {"msz", "N·m", "measured sensor moment M_sz' [N·m]", std::nullopt},
+      {"msy-nm", "N·m", "measured sensor moment M_sy' [N·m]", std::nullopt, false, '\0', {"msy"}},
+      {"msz-nm", "N·m", "measured sensor moment M_sz' [N·m]", std::nullopt, false, '\0', {"msz"}},
   };
+  append(flags, calculator_flags());
+  return flags;
 }
 
 int run_friction(const Flags& flags, const Calculator& calculator, std::FILE* out) {
   const std::string& coupling = flags.text("coupling");
   const FrictionMeasurement measurement{
-      .torque_nm = flags.number("torque"),
+      .torque_nm = flags.number("torque-nm"),
       .misalignment_rad = codec::radians_from_degrees(flags.number("misalignment-deg")),
       .direction_rad = codec::radians_from_degrees(flags.number("direction-deg")),
-      .sensor_moment_y_nm = flags.number("msy"),
-      .sensor_moment_z_nm = flags.number("msz")};
+      .sensor_moment_y_nm = flags.number("msy-nm"),
+      .sensor_moment_z_nm = flags.number("msz-nm")};
   const FrictionEstimate estimate = calculator.estimate_friction(coupling, measurement);
   const std::string name = calculator.coupling_name(coupling);
   if (flags.enabled("json")) {

@@ -12,8 +12,6 @@ namespace {
 
 using codec::degrees_from_radians;
 
-std::vector<FlagSpec> no_flags() { return {}; }
-
 int run_jam_angle(const Flags& flags, const Calculator& calculator, std::FILE* out) {
   const std::string& coupling = flags.text("coupling");
   const JamAngleReport report = calculator.jam_angle(coupling);
@@ -50,7 +48,7 @@ const Subcommand& jam_angle_subcommand() {
       "jam-angle",
       "Jam angle and its three criteria (eqs 23-35).\n"
       "The both-flanks, facewidth and radial criteria; the smallest governs.",
-      no_flags, run_jam_angle};
+      [] { return calculator_flags(); }, run_jam_angle};
   return subcommand;
 }
 

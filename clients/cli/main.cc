@@ -1,17 +1,18 @@
-// gearcoupling: the command-line client. Picks the subcommand, parses its flags, runs it on the
-// in-process calculator and turns every error into a one-line message and an exit code:
-// 0 success, 1 failure after running (a batch row, an output file), 2 bad input.
-#include <array>
+// gearcoupling: the command-line client. CLI11 picks the subcommand and parses its flags (the
+// tables of subcommand.h); the subcommand runs on the calculator the flags ask for; every error
+// becomes a one-line message and an exit code: 0 success, 1 failure after running (a batch
+// row, an output file), 2 bad input.
 #include <cstdio>
 #include <memory>
-#include <optional>
 #include <span>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "clients/cli/make_calculator.h"
 #include "analysis/format_error.h"
 #include "analysis/input_names.h"
+#include "clients/cli/bash_completion.h"
+#include "clients/cli/make_calculator.h"
 #include "clients/cli/subcommand.h"
 #include "core/model_error.h"
 
@@ -23,16 +24,6 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-std::vector<const Subcommand*> subcommands() {
-  return {&contact_subcommand(),          &jam_angle_subcommand(), &moments_subcommand(),
-          &restoring_torque_subcommand(), &friction_subcommand(),  &batch_subcommand(),
-          &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand(),
-#ifdef GC_CLI_LIVE
-          &replay_subcommand(),           &record_subcommand(),    &swap_model_subcommand(),
-#endif
-  };
-}
-
 std::string overview() {
   std::string text =
       "usage: gearcoupling <subcommand> [flags]\n\n"
@@ -42,52 +33,48 @@ std::string overview() {
         subcommand->summary.substr(0, subcommand->summary.find('\n'));
     text += fmt::format("  {:<18} {}\n", subcommand->name, first_line);
   }
-  return text + "\n'gearcoupling <subcommand> --help' lists its flags.\n";
+  return text +
+         "\n'gearcoupling <subcommand> --help' lists its flags.\n"
+         "--version prints the version; --bash-completion prints the bash completion script.\n";
 }
 
-const Subcommand* find_subcommand(std::string_view name) {
+bool is_subcommand(std::string_view name) {
   for (const Subcommand* subcommand : subcommands()) {
-    if (subcommand->name == name) return subcommand;
+    if (subcommand->name == name) return true;
   }
-  return nullptr;
+  return false;
 }
 
-std::vector<FlagSpec> all_flags(const Subcommand& subcommand) {
-  std::vector<FlagSpec> flags = subcommand.flags();
-  for (FlagSpec& flag : common_flags()) flags.push_back(std::move(flag));
-  return flags;
+std::string subcommand_names() {
+  std::string names;
+  for (const Subcommand* known : subcommands()) {
+    names += (names.empty() ? "" : ", ") + std::string(known->name);
+  }
+  return names;
 }
 
 // The core's message, led by the flag and value the user typed when a flag set the field.
 std::string describe(const InvalidInput& error, const Flags& flags) {
   const std::string_view flag = flag_for_field(error.field());
-  if (flag.empty()) return error.what();
-  for (const FlagSpec& spec : flags.specs()) {
-    if (spec.name == flag) return describe_input_error(error, "--" + spec.name, flags.text(flag));
-  }
-  return error.what();
+  if (flag.empty() || !flags.has(flag)) return error.what();
+  return describe_input_error(error, "--" + std::string(flag), flags.text(flag));
 }
 
-int run(const Subcommand& subcommand, std::span<const char* const> args) {
+int run(const Subcommand& subcommand, const Flags& flags) {
   const auto fail = [&](const std::string& message) {
     fmt::print(stderr, "gearcoupling {}: error: {}\n", subcommand.name, message);
     return kBadInput;
   };
-  std::optional<Flags> flags;
   try {
-    flags.emplace(all_flags(subcommand), args);
-    if (flags->help_requested()) {
-      fmt::print("{}", usage_text(subcommand.name, subcommand.summary, flags->specs()));
-      return 0;
-    }
-    const std::unique_ptr<Calculator> calculator = make_calculator(*flags);
-    return subcommand.run(*flags, *calculator, stdout);
+    flags.check();
+    const std::unique_ptr<Calculator> calculator = make_calculator(flags);
+    return subcommand.run(flags, *calculator, stdout);
   } catch (const UsageError& error) {
     return fail(error.what());
   } catch (const analysis::FormatError& error) {
     return fail(error.what());
   } catch (const InvalidInput& error) {
-    return fail(flags ? describe(error, *flags) : error.what());
+    return fail(describe(error, flags));
   } catch (const NotConverged& error) {
     return fail(std::string(error.what()) + " (see --tolerance and --max-iterations)");
   } catch (const ModelError& error) {
@@ -98,26 +85,78 @@ int run(const Subcommand& subcommand, std::span<const char* const> args) {
   }
 }
 
+// The top-level app with one CLI11 subcommand per Subcommand, each bound to its Flags.
+struct CommandLine {
+  CLI::App app{"Crowned-tooth gear coupling model (Guo et al.)", "gearcoupling"};
+  std::vector<std::unique_ptr<Flags>> flags;  // parallel to subcommands()
+  bool print_completion = false;
+
+  CommandLine() {
+    app.set_version_flag("--version", "gearcoupling " GC_VERSION);
+    app.add_flag("--bash-completion", print_completion, "print the bash completion script");
+    app.formatter_fn([](const CLI::App*, std::string, CLI::AppFormatMode) { return overview(); });
+    for (const Subcommand* subcommand : subcommands()) {
+      Flags* parsed = flags.emplace_back(std::make_unique<Flags>(subcommand->flags())).get();
+      CLI::App* sub = app.add_subcommand(std::string(subcommand->name),
+                                         std::string(subcommand->summary));
+      sub->allow_extras();
+      sub->formatter_fn([subcommand, parsed](const CLI::App*, std::string, CLI::AppFormatMode) {
+        return usage_text(subcommand->name, subcommand->summary, parsed->specs());
+      });
+      parsed->add_to(*sub);
+    }
+  }
+
+  // The subcommand parsed, or -1.
+  int chosen() const {
+    for (std::size_t k = 0; k < subcommands().size(); ++k) {
+      if (app.got_subcommand(std::string(subcommands()[k]->name))) return static_cast<int>(k);
+    }
+    return -1;
+  }
+};
+
+int main(int argc, char** argv) {
+  const std::span<const char* const> args(argv, static_cast<std::size_t>(argc));
+  if (args.size() < 2) {
+    fmt::print(stderr, "{}", overview());
+    return kBadInput;
+  }
+  if (!std::string_view(args[1]).starts_with("-") && !is_subcommand(args[1])) {
+    fmt::print(stderr, "gearcoupling: error: unknown subcommand '{}' (one of {}; see --help)\n",
+               args[1], subcommand_names());
+    return kBadInput;
+  }
+  CommandLine command_line;
+  try {
+    command_line.app.parse(argc, argv);
+  } catch (const CLI::Success& done) {  // --help, --version
+    return command_line.app.exit(done);
+  } catch (const CLI::ParseError& error) {
+    const int k = command_line.chosen();
+    fmt::print(stderr, "gearcoupling{}{}: error: {}\n", k < 0 ? "" : " ",
+               k < 0 ? "" : subcommands()[k]->name, error.what());
+    return kBadInput;
+  }
+  if (command_line.print_completion) {
+    fmt::print("{}", bash_completion(subcommands()));
+    return 0;
+  }
+  const int k = command_line.chosen();
+  if (k < 0) {
+    fmt::print(stderr, "{}", overview());
+    return kBadInput;
+  }
+  const Subcommand& subcommand = *subcommands()[k];
+  const auto remaining = command_line.app.get_subcommand(std::string(subcommand.name))->remaining();
+  if (!remaining.empty()) {
+    fmt::print(stderr, "gearcoupling {}: error: {}\n", subcommand.name, unexpected_arguments(remaining));
+    return kBadInput;
+  }
+  return run(subcommand, *command_line.flags[k]);
+}
+
 }  // namespace
 }  // namespace gc::cli
 
-int main(int argc, char** argv) {
-  using namespace gc::cli;
-  const std::span<const char* const> args(argv, static_cast<std::size_t>(argc));
-  if (args.size() < 2 || std::string_view(args[1]) == "--help" ||
-      std::string_view(args[1]) == "-h") {
-    fmt::print(args.size() < 2 ? stderr : stdout, "{}", overview());
-    return args.size() < 2 ? kBadInput : 0;
-  }
-  const Subcommand* subcommand = find_subcommand(args[1]);
-  if (subcommand == nullptr) {
-    std::string names;
-    for (const Subcommand* known : subcommands()) {
-      names += (names.empty() ? "" : ", ") + std::string(known->name);
-    }
-    fmt::print(stderr, "gearcoupling: error: unknown subcommand '{}' (one of {}; see --help)\n",
-               args[1], names);
-    return kBadInput;
-  }
-  return run(*subcommand, args.subspan(2));
-}
+int main(int argc, char** argv) { return gc::cli::main(argc, argv); }

@@ -31,13 +31,13 @@ std::uint32_t client_id_prefix(const std::string& text) {
 #endif
 
 std::unique_ptr<Calculator> make_calculator(const Flags& flags) {
-  if (!flags.enabled("remote")) return std::make_unique<InProcessCalculator>(flags.text("catalog"));
+  if (!flags.enabled("remote")) return std::make_unique<InProcessCalculator>(flags.text("catalogue"));
 #if GC_CLI_REMOTE
   client::ClientOptions options;
   options.domain = flags.integer("domain", 0, 232);
-  const double timeout_s = flags.number("timeout");
+  const double timeout_s = flags.number("timeout-s");
   if (!(timeout_s > 0.0 && timeout_s <= 3600.0)) {
-    throw UsageError("--timeout " + flags.text("timeout") + ": seconds in (0, 3600]");
+    throw UsageError("--timeout-s " + flags.text("timeout-s") + ": seconds in (0, 3600]");
   }
   options.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000.0));
   options.client_id_prefix = client_id_prefix(flags.text("client-id-prefix"));

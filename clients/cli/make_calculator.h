@@ -8,8 +8,8 @@
 
 namespace gc::cli {
 
-/// --remote [--domain N] [--timeout S]: a RemoteCalculator; otherwise an InProcessCalculator
-/// on --catalog. Throws UsageError for --remote in a build without the service.
+/// --remote [--domain N] [--timeout-s S]: a RemoteCalculator; otherwise an InProcessCalculator
+/// on --catalogue. Throws UsageError for --remote in a build without the service.
 std::unique_ptr<Calculator> make_calculator(const Flags& flags);
 
 }  // namespace gc::cli

@@ -25,7 +25,7 @@ std::filesystem::path model_flag_path(const Flags& flags) {
 }
 
 codec::ModelFile load_model_flag(const Flags& flags) {
-  return codec::load_model_description(model_flag_path(flags), flags.text("catalog"));
+  return codec::load_model_description(model_flag_path(flags), flags.text("catalogue"));
 }
 
 }  // namespace gc::cli

@@ -10,7 +10,7 @@ namespace gc::cli {
 /// The flag spec of --model (required).
 FlagSpec model_flag();
 
-/// Loads the model named by --model, couplings from --catalog. Throws gc::InvalidInput naming
+/// Loads the model named by --model, couplings from --catalogue. Throws gc::InvalidInput naming
 /// the field and file.
 codec::ModelFile load_model_flag(const Flags& flags);
 

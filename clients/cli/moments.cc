@@ -15,7 +15,8 @@ using codec::degrees_from_radians;
 
 std::vector<FlagSpec> moments_flags() {
   std::vector<FlagSpec> flags = operating_point_flags(/*friction_used=*/true);
-  for (FlagSpec& flag : contact_option_flags()) flags.push_back(std::move(flag));
+  append(flags, contact_option_flags());
+  append(flags, calculator_flags());
   return flags;
 }
 

@@ -20,7 +20,8 @@ std::string shortest(double value) {
 
 std::vector<FlagSpec> operating_point_flags(bool friction_used) {
   std::vector<FlagSpec> flags = {
-      {"torque", "N·m", "transmitted torque T [N·m], > 0", std::nullopt},
+      {"torque-nm", "N·m", "transmitted torque T [N·m], > 0", std::nullopt, false, '\0',
+       {"torque"}},
       {"misalignment-deg", "deg", "angular misalignment zeta [deg], below the jam angle",
        std::nullopt},
       {"direction-deg", "deg", "direction beta of the misalignment axis [deg]", "0"},
@@ -48,7 +49,7 @@ std::vector<FlagSpec> contact_option_flags() {
 }
 
 OperatingPoint operating_point_from(const Flags& flags) {
-  return {.torque_nm = flags.number("torque"),
+  return {.torque_nm = flags.number("torque-nm"),
           .misalignment_rad = codec::radians_from_degrees(flags.number("misalignment-deg")),
           .direction_rad = codec::radians_from_degrees(flags.number("direction-deg")),
           .friction_coefficient = flags.number("mu")};

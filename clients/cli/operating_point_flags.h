@@ -10,7 +10,7 @@
 
 namespace gc::cli {
 
-/// --torque, --misalignment-deg, --direction-deg and --mu. `friction_used` says whether the
+/// --torque-nm, --misalignment-deg, --direction-deg and --mu. `friction_used` says whether the
 /// calculation reads mu: then --mu is required, otherwise it defaults to 0 and is ignored.
 std::vector<FlagSpec> operating_point_flags(bool friction_used);
 

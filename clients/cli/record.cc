@@ -12,9 +12,11 @@ namespace {
 std::vector<FlagSpec> record_flags() {
   return {
       {"test-cell", "ID", "the test cell to record", std::nullopt},
-      {"seconds", "S", "how long to record [s]", std::nullopt},
+      {"seconds", "s", "how long to record", std::nullopt},
       {"out", "FILE", "the recording to write (CSV, docs/recordings.md); - for standard output",
        std::nullopt},
+      live_domain_flag(),
+      catalogue_flag(),   // every subcommand has one (make_calculator); not read here
   };
 }
 

@@ -9,8 +9,6 @@ using analysis::Table;
 using analysis::quantity_table;
 namespace {
 
-std::vector<FlagSpec> no_flags() { return {}; }
-
 int run_restoring_torque(const Flags& flags, const Calculator& calculator, std::FILE* out) {
   const std::string& coupling = flags.text("coupling");
   const RestoringTorque torque = calculator.restoring_torque(coupling);
@@ -39,7 +37,7 @@ const Subcommand& restoring_torque_subcommand() {
       "restoring-torque",
       "Torque that lifts the hub off the sleeve and centres it (eqs 49-53).\n"
       "With the root-clearance case the geometry selects and the teeth in contact.",
-      no_flags, run_restoring_torque};
+      [] { return calculator_flags(); }, run_restoring_torque};
   return subcommand;
 }
 

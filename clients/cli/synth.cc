@@ -18,7 +18,7 @@ using analysis::recording_header;
 namespace {
 
 std::vector<FlagSpec> synth_flags() {
-  return {
+  std::vector<FlagSpec> flags = {
       model_flag(),
       {"sequence", "KIND",
        "load sequence: moment-sweep (Figures 10-11), torque-sweep (Figures 12-13) or "
@@ -27,10 +27,16 @@ std::vector<FlagSpec> synth_flags() {
       {"samples", "N", "samples in the sequence", "2000"},
       {"noise-nm", "N·m", "standard deviation of the noise on M_sy' and M_sz'", "0"},
       {"seed", "N", "noise seed: the same seed gives the same file", "1"},
-      {"reference-torque", "N·m", "T_ref the sequence's torque fractions refer to", "1.5e6"},
-      {"sample-period", "s", "time between samples", "0.01"},
+      {"reference-torque-nm", "N·m", "T_ref the sequence's torque fractions refer to", "1.5e6",
+       false, '\0', {"reference-torque"}},
+      {"sample-period-s", "s", "time between samples", "0.01", false, '\0', {"sample-period"}},
       {"out", "FILE", "the recording (CSV, docs/recordings.md); '-' for standard output", "-"},
+      catalogue_flag(),
+      {"json", "", "", std::nullopt, true, '\0', {},
+       "synth writes the recording as CSV (docs/recordings.md; see --out)"},
   };
+  append(flags, refused_calculator_flags("synth"));
+  return flags;
 }
 
 LoadSequenceOptions sequence_options(const Flags& flags, const CouplingModel& model) {
@@ -43,8 +49,8 @@ LoadSequenceOptions sequence_options(const Flags& flags, const CouplingModel& mo
   options.kind = *parsed;
   options.samples = flags.integer("samples", 2, 100'000'000);
   options.jam_angle_rad = model.geometry().jam_angle().angle_rad;
-  options.reference_torque_nm = flags.number("reference-torque");
-  options.sample_period_s = flags.number("sample-period");
+  options.reference_torque_nm = flags.number("reference-torque-nm");
+  options.sample_period_s = flags.number("sample-period-s");
   return options;
 }
 

@@ -11,6 +11,7 @@
 #include "analysis/validation_result.h"
 #include "analysis/validation_run.h"
 #include "analysis/validation_summary.h"
+#include "clients/cli/jobs_flag.h"
 #include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
@@ -28,24 +29,27 @@ using analysis::run_validation;
 namespace v1 = gearcoupling::v1;
 
 std::vector<FlagSpec> validate_flags() {
-  return {
+  std::vector<FlagSpec> flags = {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
       columns_flag(),
-      {"reference-torque", "N·m", "T_ref: errors are also given in % of it", "1.5e6"},
+      {"reference-torque-nm", "N·m", "T_ref: errors are also given in % of it", "1.5e6", false,
+       '\0', {"reference-torque"}},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
       {"add", "EFFECT[=p=v,...]",
        "also validate the model with this effect added (SI parameters, e.g. hysteresis=lag_rad=6e-4): "
        "before and after side by side", ""},
-      {"threads", "N", "threads for the model evaluations",
-       std::to_string(std::max(1u, std::thread::hardware_concurrency())), false, 'j'},
+      jobs_flag(),
   };
+  append(flags, {catalogue_flag(), json_flag()});
+  append(flags, refused_calculator_flags("validate"));
+  return flags;
 }
 
 int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
   BinningOptions binning;
-  binning.reference_torque_nm = flags.number("reference-torque");
+  binning.reference_torque_nm = flags.number("reference-torque-nm");
   binning.jam_angle_rad = model.model.geometry().jam_angle().angle_rad;
   std::vector<ModelRun> runs;
   runs.push_back({model.name, &model.model, ValidationAccumulator(binning), PointSampler()});
@@ -58,7 +62,7 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
                     PointSampler()});
   }
   const RecordingSummary recording = run_validation(
-      flags.text("data"), runs, {flags.integer("threads", 1, 1024), 1u << 15, column_renames(flags)});
+      flags.text("data"), runs, {jobs_from(flags), 1u << 15, column_renames(flags)});
   const v1::ValidationResult result = analysis::validation_result(recording, runs, binning);
   print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},
                         {result.warnings().begin(), result.warnings().end()});

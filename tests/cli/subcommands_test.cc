@@ -32,7 +32,7 @@ constexpr double kDegree = M_PI / 180.0;
 
 // 1.5 MN·m, 0.4 deg, direction 30 deg, mu 0.1, as the flags below state it.
 OperatingPoint nominal_point() { return {1.5e6, 0.4 * kDegree, 30.0 * kDegree, 0.1}; }
-const std::vector<std::string> kNominalFlags = {"--torque", "1.5e6", "--misalignment-deg", "0.4",
+const std::vector<std::string> kNominalFlags = {"--torque-nm", "1.5e6", "--misalignment-deg", "0.4",
                                                 "--direction-deg", "30"};
 
 std::vector<std::string> with(std::vector<std::string> args, std::vector<std::string> more) {
@@ -145,8 +145,8 @@ TEST(CliRestoringTorque, TableAndJsonMatchTheCore) {
 }
 
 TEST(CliFriction, TableAndJsonMatchTheCore) {
-  const std::vector<std::string> args = {"friction", "--torque", "1.5e6", "--misalignment-deg",
-                                         "0.4", "--msy", "-50000", "--msz", "120000"};
+  const std::vector<std::string> args = {"friction", "--torque-nm", "1.5e6", "--misalignment-deg",
+                                         "0.4", "--msy-nm", "-50000", "--msz-nm", "120000"};
   const FrictionEstimate core =
       estimate_friction(upwind(), {1.5e6, 0.4 * kDegree, 0.0, -50000.0, 120000.0});
   const ProcessResult table = run_gearcoupling(args);
@@ -180,39 +180,39 @@ TEST_P(CliBadInput, ExitsTwoWithOneLineNamingFlagValueAndRange) {
 INSTANTIATE_TEST_SUITE_P(
     Flags, CliBadInput,
     ::testing::Values(
-        BadInputCase{{"contact", "--torque", "-5", "--misalignment-deg", "0.4"},
-                     {"--torque -5", "operating_point.torque_nm", "allowed (0, 1e12] N·m"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "2"},
+        BadInputCase{{"contact", "--torque-nm", "-5", "--misalignment-deg", "0.4"},
+                     {"--torque-nm -5", "operating_point.torque_nm", "allowed (0, 1e12] N·m"}},
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "2"},
                      {"--misalignment-deg 2", "jam angle", "0.750906 deg"}},
-        BadInputCase{{"moments", "--torque", "1e6", "--misalignment-deg", "0.4", "--mu", "1.5"},
+        BadInputCase{{"moments", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--mu", "1.5"},
                      {"--mu 1.5", "allowed [0, 1]"}},
-        BadInputCase{{"moments", "--torque", "1e6", "--misalignment-deg", "0.4"},
+        BadInputCase{{"moments", "--torque-nm", "1e6", "--misalignment-deg", "0.4"},
                      {"--mu is required"}},
-        BadInputCase{{"contact", "--torque", "abc", "--misalignment-deg", "0.4"},
-                     {"--torque 'abc' is not a number"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "3"},
+        BadInputCase{{"contact", "--torque-nm", "abc", "--misalignment-deg", "0.4"},
+                     {"--torque-nm 'abc' is not a number"}},
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--slices", "3"},
                      {"--slices 3", "even number in [2, 1000]"}},
-        BadInputCase{{"moments", "--torque", "1e308", "--misalignment-deg", "0.4", "--mu", "0.1"},
-                     {"--torque 1e308", "operating_point.torque_nm", "out of range: allowed"}},
+        BadInputCase{{"moments", "--torque-nm", "1e308", "--misalignment-deg", "0.4", "--mu", "0.1"},
+                     {"--torque-nm 1e308", "operating_point.torque_nm", "out of range: allowed"}},
         // Eq 4 divides the moments by the torque: 1e308 / 1e-300 overflows; the core refuses.
-        BadInputCase{{"friction", "--torque", "1e-300", "--misalignment-deg", "0.4", "--msy",
-                      "1e308", "--msz", "1e308"},
-                     {"--torque 1e-300", "(eq 4) is finite"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--slices", "x"},
+        BadInputCase{{"friction", "--torque-nm", "1e-300", "--misalignment-deg", "0.4", "--msy-nm",
+                      "1e308", "--msz-nm", "1e308"},
+                     {"--torque-nm 1e-300", "(eq 4) is finite"}},
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--slices", "x"},
                      {"--slices 'x' is not a whole number"}},
-        BadInputCase{{"contact", "--torque", "nan", "--misalignment-deg", "0.4"},
-                     {"--torque nan", "allowed (0, 1e12] N·m"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
+        BadInputCase{{"contact", "--torque-nm", "nan", "--misalignment-deg", "0.4"},
+                     {"--torque-nm nan", "allowed (0, 1e12] N·m"}},
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--colour", "red"},
                      {"unknown flag --colour"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4", "--coupling",
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--coupling",
                       "nrel_sideways"},
                      {"--coupling nrel_sideways", "nrel_downwind, nrel_upwind"}},
-        BadInputCase{{"contact", "--torque", "1e6", "--misalignment-deg", "0.4",
+        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4",
                       "--max-iterations", "1"},
                      {"did not reach tolerance", "--max-iterations"}},
-        BadInputCase{{"friction", "--torque", "1e6", "--misalignment-deg", "0.4", "--msy", "0",
-                      "--msz", "inf"},
-                     {"--msz inf", "measurement.sensor_moment_z_nm", "finite"}},
+        BadInputCase{{"friction", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--msy-nm", "0",
+                      "--msz-nm", "inf"},
+                     {"--msz-nm inf", "measurement.sensor_moment_z_nm", "finite"}},
         BadInputCase{{"batch", "--in", "/nonexistent/cases.csv"},
                      {"--in /nonexistent/cases.csv", "cannot open"}},
         BadInputCase{{"spin"}, {"unknown subcommand 'spin'"}}));
@@ -238,7 +238,7 @@ TEST(CliCouplingFile, MissingFieldInAUserFileNamesFieldAndFile) {
 TEST(CliCouplingFile, AGivenFileIsUsedInsteadOfTheCatalogue) {
   const ProcessResult run = run_gearcoupling(
       {"jam-angle", "--json", "--coupling",
-       std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_downwind.textproto", "--catalog",
+       std::string(GC_BUNDLED_CATALOG_DIR) + "/nrel_downwind.textproto", "--catalogue",
        "/nonexistent"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(parse_json<v1::JamAngleResult>(run.out).coupling(), "nrel_downwind");
@@ -258,8 +258,11 @@ INSTANTIATE_TEST_SUITE_P(
     Subcommands, CliHelp,
     ::testing::Values(std::pair{"contact", "--misalignment-deg <deg>"},
                       std::pair{"jam-angle", "--coupling"}, std::pair{"moments", "--mu"},
-                      std::pair{"restoring-torque", "--catalog"}, std::pair{"friction", "--msz"},
-                      std::pair{"batch", "-j, --jobs"}));
+                      std::pair{"restoring-torque", "--catalogue"}, std::pair{"friction", "--msz-nm"},
+                      std::pair{"batch", "-j, --jobs"},
+                      std::pair{"validate", "-j, --jobs <N>"},
+                      std::pair{"diagnose", "alias --threads"},
+                      std::pair{"synth", "--sample-period-s <s>"}));
 
 }  // namespace
 }  // namespace gc::cli::testing

@@ -89,7 +89,7 @@ unset GEARCOUPLING_CATALOG GEARCOUPLING_MODELS
   --domain "$domain" 2>"$tmp/service.log" &
 service=$!
 cli=$root/usr/bin/gearcoupling
-remote=$("$cli" jam-angle --coupling nrel_downwind --remote --domain "$domain" --timeout 30) ||
+remote=$("$cli" jam-angle --coupling nrel_downwind --remote --domain "$domain" --timeout-s 30) ||
   fail "remote jam-angle"
 local=$("$cli" jam-angle --coupling nrel_downwind)
 echo "$remote"

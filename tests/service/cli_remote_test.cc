@@ -39,17 +39,17 @@ TEST(RemoteCli, EverySubcommandPrintsWhatItPrintsInProcess) {
       };
       expect_same_output(with({"jam-angle"}));
       expect_same_output(with({"restoring-torque"}));
-      expect_same_output(with({"contact", "--torque", "1.5e6", "--misalignment-deg", "0.5",
+      expect_same_output(with({"contact", "--torque-nm", "1.5e6", "--misalignment-deg", "0.5",
                                "--mu", "0.1"}));
-      expect_same_output(with({"moments", "--torque", "2.2e6", "--misalignment-deg", "0.3",
+      expect_same_output(with({"moments", "--torque-nm", "2.2e6", "--misalignment-deg", "0.3",
                                "--direction-deg", "30", "--mu", "0.12", "--slices", "12"}));
-      expect_same_output(with({"friction", "--torque", "1.5e6", "--misalignment-deg", "0.4",
-                               "--msy", "5.0e4", "--msz", "8.0e4"}));
+      expect_same_output(with({"friction", "--torque-nm", "1.5e6", "--misalignment-deg", "0.4",
+                               "--msy-nm", "5.0e4", "--msz-nm", "8.0e4"}));
     }
   }
   expect_same_output({"jam-angle", "--coupling", file});
   // A bad input fails the same way (exit code 2, nothing on standard output).
-  expect_same_output({"moments", "--torque", "-1", "--misalignment-deg", "0.3", "--mu", "0.1"});
+  expect_same_output({"moments", "--torque-nm", "-1", "--misalignment-deg", "0.3", "--mu", "0.1"});
 }
 
 TEST(RemoteCli, BatchWithRequestsInFlightPrintsWhatItPrintsInProcess) {

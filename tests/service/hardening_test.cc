@@ -53,7 +53,7 @@ protocol::ToothContactRequest costliest_request() {
 }
 
 TEST(Deadline, ATinyDeadlineAnswersDeadlineExceededAndTheServiceKeepsServing) {
-  test::ServiceProcess service({"--deadline", "1e-6"});
+  test::ServiceProcess service({"--deadline-s", "1e-6"});
   client::Client client({test::test_domain(), std::chrono::seconds(20)});
   try {
     client.call<Calculation::kToothContact>(costliest_request());

@@ -71,7 +71,7 @@ std::string read_text(const std::string& path) {
 TEST(InlineAnswer, LoneCheapRequestsAreAnsweredInTheListenerAndCostlyOnesOnWorkers) {
   const std::string log = ::testing::TempDir() + "inline_answer_service.log";
   {
-    test::ServiceProcess service({"--log-level", "info", "--stats-interval", "60"}, log);
+    test::ServiceProcess service({"--log-level", "info", "--stats-interval-s", "60"}, log);
     client::Client client({test::test_domain(), std::chrono::seconds(20)});
     const protocol::CouplingRef upwind = CatalogueName{"nrel_upwind"};
     for (int i = 0; i < 20; ++i) client.call<Calculation::kJamAngle>({upwind});

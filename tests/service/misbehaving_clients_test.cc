@@ -1,7 +1,7 @@
 // Issue 9, replies never block the workers: a client that sends made-up client ids, or one that
 // never reads its replies, runs beside a well-behaved client, which must still get every answer
 // promptly. The bounds are generous (seconds); they are chosen so that the behaviour before the
-// fix, a worker held for --reply-match-timeout or --reply-block (set to 5 s here) per request,
+// fix, a worker held for --reply-match-timeout-s or --reply-block-s (set to 5 s here) per request,
 // cannot pass. The misbehaving client runs in a process of its own (tests/service/
 // misbehaving_client.cc). Latency figures are in bench/misbehaving_clients_bench.sh, not here.
 #include <signal.h>
@@ -101,7 +101,7 @@ double worst_round_trip_s(client::Client& client, double seconds) {
 TEST(MisbehavingClients, MadeUpClientIdsCostAWellBehavedClientNothing) {
   const std::string log = "/tmp/gc_misbehaving_ids_" + std::to_string(getpid()) + ".txt";
   test::ServiceProcess service(
-      {"--threads", "2", "--reply-match-timeout", "5", "--log-level", "info"}, log);
+      {"--jobs", "2", "--reply-match-timeout-s", "5", "--log-level", "info"}, log);
   client::Client good({test::test_domain(), std::chrono::seconds(20)});
   ASSERT_TRUE(good.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
 
@@ -126,7 +126,7 @@ TEST(MisbehavingClients, MadeUpClientIdsCostAWellBehavedClientNothing) {
 
 TEST(MisbehavingClients, RequestsStillParkedAtShutdownAreLoggedAsDropped) {
   const std::string log = "/tmp/gc_misbehaving_parked_" + std::to_string(getpid()) + ".txt";
-  test::ServiceProcess service({"--reply-match-timeout", "60"}, log);
+  test::ServiceProcess service({"--reply-match-timeout-s", "60"}, log);
   client::Client good({test::test_domain(), std::chrono::seconds(20)});
   ASSERT_TRUE(good.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
   MisbehavingClient flood("fake-ids", 0.3);
@@ -144,14 +144,14 @@ TEST(MisbehavingClients, RequestsStillParkedAtShutdownAreLoggedAsDropped) {
 
 TEST(MisbehavingClients, AClientThatNeverReadsItsRepliesSlowsOnlyItself) {
   const std::string log = "/tmp/gc_misbehaving_reader_" + std::to_string(getpid()) + ".txt";
-  test::ServiceProcess service({"--threads", "2", "--reply-block", "5", "--log-level", "info"},
+  test::ServiceProcess service({"--jobs", "2", "--reply-block-s", "5", "--log-level", "info"},
                                log);
   client::Client good({test::test_domain(), std::chrono::seconds(20)});
   ASSERT_TRUE(good.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
 
   // Tooth-contact requests (2 kB replies) for 3 s from a client whose reader holds 100 replies
   // and is never read: its replies overflow the reply writer's window (0.5 MB unacknowledged).
-  // Before issue 9 a worker then blocked 5 s (--reply-block) on each write to it.
+  // Before issue 9 a worker then blocked 5 s (--reply-block-s) on each write to it.
   MisbehavingClient deaf("deaf", 3.0);
   EXPECT_LT(worst_round_trip_s(good, 5.0), 2.0) << "a client that does not read held up a good one";
   // It stays, full and silent, for 8 s more: 5 s after its replies began to wait, they are given

@@ -280,14 +280,14 @@ class SecureService : public SecurityScript {
 
 TEST_F(SecureService, TheCliGetsWhatItComputesInProcess) {
   start_service();
-  const std::vector<std::string> moments = {"moments", "--torque", "2.2e6", "--misalignment-deg",
+  const std::vector<std::string> moments = {"moments", "--torque-nm", "2.2e6", "--misalignment-deg",
                                             "0.3", "--mu", "0.12"};
   const auto local = cli::testing::run_gearcoupling(moments);
   ScopedEnv env({{"CYCLONEDDS_URI", cell_->uri("client-a")},
                  {"GC_CLIENT_ID_PREFIX", fmt::format("{:08x}", cell_->client_prefix("a"))}});
   std::vector<std::string> remote = moments;
   remote.insert(remote.end(), {"--remote", "--domain", std::to_string(test::test_domain()),
-                               "--timeout", "30"});
+                               "--timeout-s", "30"});
   const auto over_dds = cli::testing::run_gearcoupling(remote);
   EXPECT_EQ(over_dds.exit_code, 0) << over_dds.err;
   EXPECT_EQ(over_dds.out, local.out);

@@ -30,6 +30,41 @@ TEST(ServiceConfig, FlagsOverrideTheFileWhereverConfigAppears) {
   std::remove(file.c_str());
 }
 
+TEST(ServiceConfig, EqualsFormAliasesAndShortJobs) {
+  const std::string file = write_temp("threads: 3\n");
+  const ServiceCommand command = parse_service_command(
+      {"--domain=9", "--config=" + file, "--catalogue=/y", "--lease", "3", "--reply-block-s=0.25"});
+  EXPECT_EQ(command.config.domain, 9);
+  EXPECT_EQ(command.config.threads, 3u);
+  EXPECT_EQ(command.config.catalogue_dir, "/y");
+  EXPECT_DOUBLE_EQ(command.config.liveliness_lease_s, 3.0);
+  EXPECT_DOUBLE_EQ(command.config.reply_block_s, 0.25);
+  EXPECT_EQ(parse_service_command({"-j", "4"}).config.threads, 4u);
+  EXPECT_EQ(parse_service_command({"--jobs=5"}).config.threads, 5u);
+  EXPECT_EQ(parse_service_command({"--threads", "6"}).config.threads, 6u);  // documented alias
+  EXPECT_EQ(parse_service_command({"-j", "1", "--jobs", "2"}).config.threads, 2u);  // last wins
+  std::remove(file.c_str());
+}
+
+TEST(ServiceConfig, CatalogueHasOneSpelling) {
+  try {
+    parse_service_command({"--catalog", "/x"});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.field(), "--catalog");
+  }
+}
+
+TEST(ServiceConfig, VersionAndHelp) {
+  EXPECT_TRUE(parse_service_command({"--version"}).version);
+  EXPECT_EQ(service_version(), "gearcoupling-service " GC_VERSION "\n");
+  EXPECT_TRUE(parse_service_command({"--help"}).help);
+  const std::string usage = service_usage();
+  EXPECT_NE(usage.find("--deadline-s,--deadline S=1"), std::string::npos) << usage;
+  EXPECT_NE(usage.find("-j,--jobs,--threads N=0"), std::string::npos) << usage;
+  EXPECT_EQ(usage.find("--catalog "), std::string::npos) << usage;
+}
+
 TEST(ServiceConfig, BundledDeployFileParses) {
   const ServiceCommand command =
       parse_service_command({"--config", GC_SOURCE_DIR "/deploy/service.conf"});
@@ -56,6 +91,13 @@ TEST(ServiceConfig, ErrorsNameTheSetting) {
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.field(), "--bogus");
   }
+  try {
+    parse_service_command({"--domain", "seven"});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("--domain"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("seven"), std::string::npos) << e.what();
+  }
   const std::string file = write_temp("domian: 3\n");
   try {
     parse_service_command({"--config", file});
@@ -75,13 +117,13 @@ TEST(ServiceConfig, CalculationDeadlineFromFileOrFlagWithinItsRange) {
       1.0);
   const std::string file = write_temp("calculation_deadline_s: 0.25\n");
   EXPECT_DOUBLE_EQ(parse_service_command({"--config", file}).config.calculation_deadline_s, 0.25);
-  EXPECT_DOUBLE_EQ(parse_service_command({"--config", file, "--deadline", "2"})
+  EXPECT_DOUBLE_EQ(parse_service_command({"--config", file, "--deadline-s", "2"})
                        .config.calculation_deadline_s,
                    2.0);
   std::remove(file.c_str());
   for (const char* bad : {"0", "-1", "61", "inf", "nan"}) {
     try {
-      parse_service_command({"--deadline", bad});
+      parse_service_command({"--deadline-s", bad});
       ADD_FAILURE() << bad << " accepted";
     } catch (const InvalidInput& e) {
       EXPECT_EQ(e.field(), "calculation_deadline_s") << bad;

@@ -15,7 +15,7 @@ using protocol::Calculation;
 using protocol::CatalogueName;
 
 TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
-  test::ServiceProcess service({"--status-interval", "0.1", "--threads", "2"});
+  test::ServiceProcess service({"--status-interval-s", "0.1", "--jobs", "2"});
   client::Client client({test::test_domain(), std::chrono::seconds(10)});
   for (int r = 0; r < 10; ++r) client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
   for (int r = 0; r < 3; ++r) {
@@ -60,7 +60,7 @@ TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
 // A client can fetch a catalogue coupling's whole definition from the status, and a request that
 // carries it inline gets the same answer, bit for bit, as one by name.
 TEST(Service, StatusCarriesEachCatalogueCouplingsDefinition) {
-  test::ServiceProcess service({"--status-interval", "0.1"});
+  test::ServiceProcess service({"--status-interval-s", "0.1"});
   client::Client client({test::test_domain(), std::chrono::seconds(10)});
   ASSERT_TRUE(client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
   ASSERT_TRUE(protocol::wait_until([&] { return client.catalogue_definition("nrel_downwind").has_value(); },
