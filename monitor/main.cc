@@ -13,19 +13,10 @@
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "live/monitor.h"
+#include "protocol/shutdown_signals.h"
 
 namespace {
 
-// SIGINT and SIGTERM blocked in every thread, waited for by one: DDS calls are not
-// async-signal-safe.
-sigset_t block_shutdown_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
-}
 
 gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::string& log_level) {
   gc::live::MonitorOptions o;
@@ -68,7 +59,7 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
 }  // namespace
 
 int main(int argc, char** argv) {
-  const sigset_t signals = block_shutdown_signals();
+  const sigset_t signals = gc::protocol::block_shutdown_signals();
   spdlog::set_default_logger(spdlog::stderr_color_mt("gearcoupling-monitor"));
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
   spdlog::flush_on(spdlog::level::info);

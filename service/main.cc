@@ -13,26 +13,12 @@
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "protocol/dds_entity.h"
+#include "protocol/shutdown_signals.h"
 #include "service/service.h"
 #include "service/service_config.h"
 
-namespace {
-
-/// Blocks SIGINT and SIGTERM in every thread (call before starting any) and returns the set, for
-/// a thread that waits for them with sigwait: DDS calls are not async-signal-safe.
-sigset_t block_shutdown_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-  const sigset_t signals = block_shutdown_signals();
+  const sigset_t signals = gc::protocol::block_shutdown_signals();
   auto logger = spdlog::stderr_color_mt("gearcoupling-service");
   spdlog::set_default_logger(logger);
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
