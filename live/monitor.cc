@@ -123,8 +123,26 @@ Monitor::Cell& Monitor::cell(const std::string& test_cell) {
     found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
                                           CellMonitor(model_for(test_cell), options_.cell)}))
                 .first;
+    const auto refusal = model_refusals_.find(test_cell);
+    if (refusal != model_refusals_.end()) {
+      found->second->monitor.refuse_model(refusal->second);
+      model_refusals_.erase(refusal);
+    }
   }
   return *found->second;
+}
+
+CellModel Monitor::parsed_model(const std::string& text, const std::string& test_cell) {
+  auto found = parsed_models_.find(text);
+  if (found == parsed_models_.end()) {
+    if (parsed_models_.size() >= kParsedModelsKept) parsed_models_.clear();
+    found = parsed_models_
+                .emplace(text, parse_cell_model(text, "model swap for " + test_cell, options_.catalog_dir))
+                .first;
+  }
+  CellModel model = found->second;
+  model.since = std::chrono::system_clock::now();
+  return model;
 }
 
 void Monitor::take_models() {
@@ -146,13 +164,18 @@ void Monitor::take_models() {
       if (text.empty()) continue;
       const auto existing = cells_.find(test_cell);
       try {
-        CellModel model = parse_cell_model(text, "model swap for " + test_cell, options_.catalog_dir);
+        CellModel model = parsed_model(text, test_cell);
         spdlog::info("test cell {}: model {} in force", test_cell, model.name);
         models_[test_cell] = model;
+        model_refusals_.erase(test_cell);
         if (existing != cells_.end()) existing->second->monitor.swap_model(std::move(model));
       } catch (const ModelError& error) {
         spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
-        if (existing != cells_.end()) existing->second->monitor.refuse_model(error.what());
+        if (existing != cells_.end()) {
+          existing->second->monitor.refuse_model(error.what());
+        } else {
+          model_refusals_[test_cell] = error.what();   // told when the test cell appears
+        }
       }
     }
   }

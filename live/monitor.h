@@ -50,12 +50,19 @@ class Monitor {
   void publish_health();
   Cell& cell(const std::string& test_cell);
   CellModel model_for(const std::string& test_cell);
+  /// The model of a swap's text, parsed once (throws InvalidInput as parse_cell_model).
+  CellModel parsed_model(const std::string& text, const std::string& test_cell);
 
   MonitorOptions options_;
   std::uint64_t monitor_id_;
   CellModel default_model_;
   std::map<std::string, CellModel> models_;       // configured, or swapped in while absent
   std::map<std::string, std::uint32_t> decimations_;
+  std::map<std::string, std::string> model_refusals_;   // for test cells not seen yet
+  // Models parsed from swap texts, by text: a dashboard switching between before and after
+  // sends the same few texts again and again, and parsing one builds a whole coupling.
+  std::map<std::string, CellModel> parsed_models_;
+  static constexpr std::size_t kParsedModelsKept = 16;
   std::map<std::string, std::unique_ptr<Cell>> cells_;
   protocol::Entity participant_;
   protocol::Entity subscriber_, publisher_;

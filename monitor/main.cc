@@ -13,19 +13,10 @@
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "live/monitor.h"
+#include "parallel/shutdown_signals.h"
 
 namespace {
 
-// SIGINT and SIGTERM blocked in every thread, waited for by one: DDS calls are not
-// async-signal-safe.
-sigset_t block_shutdown_signals() {
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  return signals;
-}
 
 gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::string& log_level) {
   gc::live::MonitorOptions o;
@@ -37,18 +28,18 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
                  "model of every test cell not named by --cell: a .textproto file, or a name in "
                  "data/models")->capture_default_str();
   app.add_option("--cell", cell_models, "CELL=MODEL: test cell CELL's model (repeatable)");
-  app.add_option("--catalog", o.catalog_dir, "coupling catalogue directory")->capture_default_str();
-  app.add_option("--window", o.cell.window_s, "health window in measurement time [s]")
+  app.add_option("--catalogue", o.catalog_dir, "coupling catalogue directory")->capture_default_str();
+  app.add_option("--window-s,--window", o.cell.window_s, "health window in measurement time [s]")
       ->check(CLI::Range(1e-3, 1e6))->capture_default_str();
-  app.add_option("--reference-torque", o.cell.reference_torque_nm,
+  app.add_option("--reference-torque-nm,--reference-torque", o.cell.reference_torque_nm,
                  "T_ref of the worst-region wording [N·m]")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--loading-dead-band", o.cell.loading_dead_band_rad,
+  app.add_option("--loading-dead-band-rad,--loading-dead-band", o.cell.loading_dead_band_rad,
                  "dead band of the loading direction [rad]")->check(CLI::NonNegativeNumber)->capture_default_str();
-  app.add_option("--health-period", o.health_period_s, "health publication period [s]")
+  app.add_option("--health-period-s,--health-period", o.health_period_s, "health publication period [s]")
       ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
-  app.add_option("--stale", o.stale_s, "health stale after this long without samples [s]")
+  app.add_option("--stale-s,--stale", o.stale_s, "health stale after this long without samples [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--dispose", o.dispose_s, "health disposed after this long without samples [s]")
+  app.add_option("--dispose-s,--dispose", o.dispose_s, "health disposed after this long without samples [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--decimate", o.decimation, "publish one residual per N evaluated samples")
       ->check(CLI::Range(1u, 1000000u))->capture_default_str();
@@ -68,7 +59,7 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
 }  // namespace
 
 int main(int argc, char** argv) {
-  const sigset_t signals = block_shutdown_signals();
+  const sigset_t signals = gc::parallel::block_shutdown_signals();
   spdlog::set_default_logger(spdlog::stderr_color_mt("gearcoupling-monitor"));
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
   spdlog::flush_on(spdlog::level::info);
@@ -79,7 +70,8 @@ int main(int argc, char** argv) {
   try {
     options = parse_flags(app, argc, argv, log_level);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help is exit 0; a bad flag is bad input, exit 2 as everywhere in gearcoupling.
+    return app.exit(e) == 0 ? 0 : 2;
   }
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {

@@ -56,6 +56,10 @@ std::vector<FlagSpec> refused_calculator_flags(std::string_view subcommand) {
   return flags;
 }
 
+FlagSpec live_domain_flag() {
+  return {"domain", "N", "DDS domain of the live test cell (CYCLONEDDS_URI), 0..232", "0"};
+}
+
 void append(std::vector<FlagSpec>& flags, std::vector<FlagSpec> more) {
   for (FlagSpec& flag : more) flags.push_back(std::move(flag));
 }

@@ -12,12 +12,11 @@ namespace {
 std::vector<FlagSpec> record_flags() {
   return {
       {"test-cell", "ID", "the test cell to record", std::nullopt},
-      {"seconds", "S", "how long to record [s]", std::nullopt},
+      {"seconds", "s", "how long to record", std::nullopt},
       {"out", "FILE", "the recording to write (CSV, docs/recordings.md); - for standard output",
        std::nullopt},
-      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
-      domain_flag("DDS domain of the live test cells, 0..232"),
-      catalogue_flag(),
+      live_domain_flag(),
+      catalogue_flag(),   // every subcommand has one (make_calculator); not read here
   };
 }
 

@@ -13,15 +13,14 @@ std::vector<FlagSpec> replay_flags() {
   return {
       {"in", "FILE", "the recording to publish (CSV, docs/recordings.md)", std::nullopt},
       {"test-cell", "ID", "the test cell to publish as (1-64 of A-Z a-z 0-9 . _ -)", std::nullopt},
-      {"rate", "HZ", "samples per second (or --speed)", ""},
+      {"rate-hz", "Hz", "samples per second (or --speed)", "", false, '\0', {"rate"}},
       {"speed", "X", "times the recording's own pace (or --rate)", ""},
       {"batch", "N", "most samples per DDS sample (those already due)", "64"},
       {"readers", "N", "matched readers (monitor, record, ...) to wait for before the first sample", "1"},
-      {"wait", "S", "seconds to wait for them at most", "10"},
+      {"wait-s", "s", "seconds to wait for them at most", "10", false, '\0', {"wait"}},
       columns_flag(),
-      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
-      domain_flag("DDS domain of the live test cells, 0..232"),
-      catalogue_flag(),
+      live_domain_flag(),
+      catalogue_flag(),   // every subcommand has one (make_calculator); not read here
   };
 }
 
@@ -33,10 +32,10 @@ std::optional<double> optional_number(const Flags& flags, std::string_view name)
 int run_replay(const Flags& flags, const Calculator&, std::FILE* out) {
   live::ReplayOptions options;
   options.test_cell = flags.text("test-cell");
-  options.rate_hz = optional_number(flags, "rate");
+  options.rate_hz = optional_number(flags, "rate-hz");
   options.speed = optional_number(flags, "speed");
   options.max_batch = static_cast<std::size_t>(flags.integer("batch", 1, 4096));
-  options.wait_s = flags.number("wait");
+  options.wait_s = flags.number("wait-s");
   options.wait_for_readers = static_cast<std::uint32_t>(flags.integer("readers", 0, 1000));
   options.recording.renames = column_renames(flags);
   const protocol::Entity participant = live::make_participant(flags.integer("domain", 0, 232));

@@ -55,6 +55,9 @@ std::vector<FlagSpec> calculator_flags(bool json = true);
 /// subcommand that computes in process from a model file (validate, diagnose, synth).
 std::vector<FlagSpec> refused_calculator_flags(std::string_view subcommand);
 
+/// --domain N: the DDS domain of the live test cell (replay, record, swap-model).
+FlagSpec live_domain_flag();
+
 /// Appends `more` to `flags`.
 void append(std::vector<FlagSpec>& flags, std::vector<FlagSpec> more);
 

@@ -19,10 +19,10 @@ std::vector<FlagSpec> swap_model_flags() {
       {"test-cell", "ID", "the test cell whose model to change", std::nullopt},
       model_flag(),
       {"decimate", "N", "also publish one residual per N evaluated samples (0: keep)", "0"},
-      {"wait", "S", "seconds to wait for the monitor's health to show the model in force", "10"},
-      // CLI11 migration (main): the flags every subcommand used to get from main.cc.
-      domain_flag("DDS domain of the live test cells, 0..232"),
+      {"wait-s", "s", "seconds to wait for the monitor's health to show the model in force", "10",
+       false, '\0', {"wait"}},
       catalogue_flag(),
+      live_domain_flag(),
   };
 }
 
@@ -37,12 +37,12 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
   // Checked here first, so a typo is an error at once rather than a refusal in the health.
   const codec::ModelFile model = load_model_flag(flags);
   const std::string& test_cell = flags.text("test-cell");
-  const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait") * 1e3));
+  const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait-s") * 1e3));
   const protocol::Entity participant = live::make_participant(flags.integer("domain", 0, 232));
   live::ModelSwapPublisher swaps(participant.get());
   live::HealthSubscriber health(participant.get());
   if (!swaps.wait_for_readers(1, wait)) {
-    throw std::runtime_error("no gearcoupling-monitor matched within --wait " + flags.text("wait") + " s");
+    throw std::runtime_error("no gearcoupling-monitor matched within --wait " + flags.text("wait-s") + " s");
   }
   const std::string previous_refusal = health.wait_for(test_cell, [](const auto&) { return true; },
                                                        std::chrono::milliseconds(500))

@@ -22,8 +22,8 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   const std::string cell = "e2e-cell";
   // A window longer than the recording (10 s of measurement time): the health then covers
   // what validate covers, so the two can be compared sentence for sentence.
-  auto monitor = start_monitor({"--window", "20", "--health-period", "0.2", "--stale", "30",
-                                "--dispose", "60"});
+  auto monitor = start_monitor({"--window-s", "20", "--health-period-s", "0.2", "--stale-s", "30",
+                                "--dispose-s", "60"});
   const std::string capture = temp_path("capture") + ".csv";
   const std::string record_log = temp_path("record_log");
   ChildProcess record({GC_GEARCOUPLING_PATH, "record", "--test-cell", cell, "--seconds", "6",
@@ -33,7 +33,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   // 1. Replay at 20x, once the monitor and the recorder are both matched.
   const auto replay = run_gearcoupling(on_test_domain(
       {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--readers",
-       "2", "--wait", "20"}));
+       "2", "--wait-s", "20"}));
   ASSERT_EQ(replay.exit_code, 0) << replay.err;
 
   // 2. The health: every sample counted once, the error above the noise, at validate's region.
@@ -67,7 +67,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
 
   // 4. Swap the diagnosed model in.
   const auto swap = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--model", fixed, "--wait", "20"}));
+      {"swap-model", "--test-cell", cell, "--model", fixed, "--wait-s", "20"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
   const auto swapped = health_.wait_for(
@@ -80,7 +80,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   // 5. The test cell runs on (a new run: time starts again); within one window the error is
   // at the noise level.
   const auto again = run_gearcoupling(on_test_domain(
-      {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait", "20"}));
+      {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait-s", "20"}));
   ASSERT_EQ(again.exit_code, 0) << again.err;
   const auto after = health_.wait_for(
       cell, [](const live::HealthView& h) { return h.taken >= 2 * kRecordingSamples; }, 20s);
@@ -104,7 +104,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
 // monitor's own check of published text: robustness_test.cc, NanAndGarbage...).
 TEST_F(LiveTest, SwapModelRefusesABadModelWithTheReasonAndKeepsTheModelInForce) {
   const std::string cell = "refuses";
-  auto monitor = start_monitor({"--health-period", "0.1"});
+  auto monitor = start_monitor({"--health-period-s", "0.1"});
   live::MeasurementPublisher publisher(participant_.get(), cell);
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   publish_stream(publisher, paper_samples(), 1, 1000.0);

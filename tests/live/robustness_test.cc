@@ -30,7 +30,7 @@ std::string variant_text(const std::string& name, double mu0) {
 }
 
 TEST_F(LiveTest, AStoppedTestCellGoesStaleThenIsDisposed) {
-  auto monitor = start_monitor({"--health-period", "0.1", "--stale", "0.5", "--dispose", "1.5"});
+  auto monitor = start_monitor({"--health-period-s", "0.1", "--stale-s", "0.5", "--dispose-s", "1.5"});
   live::MeasurementPublisher publisher(participant_.get(), "stops");
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   publish_stream(publisher, paper_samples(), 200, 2000.0);
@@ -51,7 +51,7 @@ TEST_F(LiveTest, AStoppedTestCellGoesStaleThenIsDisposed) {
 }
 
 TEST_F(LiveTest, TimeGoingBackwardsIsRefusedWithinARunAndAcceptedFromANewRun) {
-  auto monitor = start_monitor({"--health-period", "0.1"});
+  auto monitor = start_monitor({"--health-period-s", "0.1"});
   const auto samples = paper_samples();
   {
     live::MeasurementPublisher first(participant_.get(), "backwards");
@@ -76,7 +76,7 @@ TEST_F(LiveTest, TimeGoingBackwardsIsRefusedWithinARunAndAcceptedFromANewRun) {
 }
 
 TEST_F(LiveTest, NanAndGarbageAreCountedAndRefusedAndTheMonitorServesOn) {
-  auto monitor = start_monitor({"--health-period", "0.1"});
+  auto monitor = start_monitor({"--health-period-s", "0.1"});
   auto samples = paper_samples();
   live::MeasurementPublisher publisher(participant_.get(), "garbage");
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
@@ -133,7 +133,7 @@ TEST_F(LiveTest, NanAndGarbageAreCountedAndRefusedAndTheMonitorServesOn) {
 // The issue asks for a minute; 10 s (100 swaps, 20,000 samples) in the suite keeps it short.
 // bench/ runs the full minute (docs/benchmarks.md).
 TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
-  auto monitor = start_monitor({"--health-period", "0.2"});
+  auto monitor = start_monitor({"--health-period-s", "0.2"});
   live::MeasurementPublisher publisher(participant_.get(), "swaps");
   live::ModelSwapPublisher swaps(participant_.get());
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
@@ -164,14 +164,14 @@ TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
 TEST_F(LiveTest, ARestartedMonitorResumesWithTheLatestModelSwap) {
   live::MeasurementPublisher publisher(participant_.get(), "restart");
   live::ModelSwapPublisher swaps(participant_.get());
-  auto first = start_monitor({"--health-period", "0.1"});
+  auto first = start_monitor({"--health-period-s", "0.1"});
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   swaps.publish("restart", variant_text("mu012", 0.12));
   publish_stream(publisher, paper_samples(), 300, 2000.0);
   ASSERT_TRUE(health_.wait_for("restart", [](const HealthView& h) { return h.taken == 300; }, 10s));
   first->signal(SIGKILL);
 
-  auto second = start_monitor({"--health-period", "0.1"});
+  auto second = start_monitor({"--health-period-s", "0.1"});
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   // The swap is TRANSIENT_LOCAL: the new monitor reads it before the stream goes on.
   std::this_thread::sleep_for(300ms);
@@ -187,7 +187,7 @@ TEST_F(LiveTest, ARestartedMonitorResumesWithTheLatestModelSwap) {
 
 TEST_F(LiveTest, TheMonitorDoesNotDependOnTheServiceRestarting) {
   auto service = std::make_unique<ServiceProcess>();
-  auto monitor = start_monitor({"--health-period", "0.1"});
+  auto monitor = start_monitor({"--health-period-s", "0.1"});
   live::MeasurementPublisher publisher(participant_.get(), "service");
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   publish_stream(publisher, paper_samples(), 200, 2000.0);
@@ -199,6 +199,19 @@ TEST_F(LiveTest, TheMonitorDoesNotDependOnTheServiceRestarting) {
   ASSERT_TRUE(health.has_value());
   EXPECT_EQ(health->evaluated, 600u);
   EXPECT_EQ(health->lost, 0u);
+}
+
+TEST(Monitor, RefusesABadFlagOrModelWithExitTwoAndTheReason) {
+  std::string log;
+  auto bad_window = start_monitor({"--window-s", "-1"}, &log);
+  EXPECT_EQ(bad_window->wait_exit(20.0), 2);
+  EXPECT_NE(read_file(log).find("--window-s"), std::string::npos) << read_file(log);
+  const std::string model = cli::testing::temp_path("bad_model") + ".textproto";
+  cli::testing::write_file(model, "name: \"bad\" coupling: \"nrel_upwind\" effects { name: \"friction\" "
+                                  "parameters { name: \"mu0\" value: 7 } }\n");
+  auto bad_model = start_monitor({"--cell", "c1=" + model}, &log);
+  EXPECT_EQ(bad_model->wait_exit(20.0), 2);
+  EXPECT_NE(read_file(log).find("mu0"), std::string::npos) << read_file(log);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ grep -q "^libgearcoupling-core 0 " "$tmp/control/shlibs" || fail "shlibs: $(cat 
 root=$tmp/root
 dpkg -x "$deb" "$root"
 libdir=$(dirname "$(find "$root/usr/lib" -name libgearcoupling-core.so.0)")
-for file in usr/bin/gearcoupling usr/bin/gearcoupling-service \
+for file in usr/bin/gearcoupling usr/bin/gearcoupling-service usr/bin/gearcoupling-monitor \
     usr/lib/systemd/system/gearcoupling-service.service \
     etc/gearcoupling/service.conf etc/gearcoupling/cyclonedds.xml \
     usr/share/gearcoupling/couplings/nrel_upwind.textproto \
