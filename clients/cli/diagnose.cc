@@ -5,6 +5,7 @@
 
 #include "analysis/atomic_file.h"
 #include "analysis/diagnosis_summary.h"
+#include "analysis/effect_spec.h"
 #include "analysis/recording_csv.h"
 #include "analysis/validation_result.h"
 #include "clients/cli/jobs_flag.h"
@@ -67,6 +68,7 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
   result.set_model(model.name);
   for (const std::string& warning : check.warnings) result.add_warnings(warning);
   for (const std::string& column : recording.ignored_columns) result.add_ignored_columns(column);
+  for (const auto& effect : diagnosis.added) result.add_add_flags(analysis::effect_spec_text(*effect));
   if (!flags.text("write-model").empty()) {
     write_model(flags.text("write-model"), model, diagnosis);
     result.set_written_model(flags.text("write-model"));

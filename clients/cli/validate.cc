@@ -20,7 +20,6 @@ namespace gc::cli {
 namespace {
 
 using analysis::ModelRun;
-using analysis::parse_effect_spec;
 using analysis::print_before_after;
 using analysis::print_validation_summary;
 using analysis::RecordingSummary;
@@ -56,10 +55,9 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   // --add: the same recording through the model with one more effect, compared side by side.
   std::optional<CouplingModel> with_added;
   if (!flags.text("add").empty()) {
-    const auto effect = parse_effect_spec(flags.text("add"));
-    with_added.emplace(model.model.with_effect(effect));
-    runs.push_back({model.name + " + " + effect->name(), &*with_added, ValidationAccumulator(binning),
-                    PointSampler()});
+    const AddedEffect added = added_effect(flags.text("add"), model);
+    with_added.emplace(model.model.with_effect(added.effect));
+    runs.push_back({added.label, &*with_added, ValidationAccumulator(binning), PointSampler()});
   }
   const RecordingSummary recording = run_validation(
       flags.text("data"), runs, {jobs_from(flags), 1u << 15, column_renames(flags)});
