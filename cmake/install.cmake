@@ -8,6 +8,8 @@ set(gc_programs gearcoupling)
 if(GC_BUILD_SERVICE)
   list(APPEND gc_public_libraries gc_client)
   list(APPEND gc_programs gearcoupling-service)
+  install(FILES ${PROJECT_BINARY_DIR}/service/gearcoupling-service.bash
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME gearcoupling-service)
 endif()
 install(TARGETS ${gc_programs})
 install(FILES ${PROJECT_BINARY_DIR}/clients/cli/gearcoupling.bash

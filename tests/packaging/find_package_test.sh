@@ -30,6 +30,8 @@ fi
 completion=$prefix/share/bash-completion/completions/gearcoupling
 [ "$(bash -c "source '$completion' && COMP_WORDS=(gearcoupling jam) && COMP_CWORD=1 && _gearcoupling && echo \${COMPREPLY[*]}")" = jam-angle ] ||
   fail "the installed bash completion does not complete jam-angle"
+[ "$(bash -c "source '$completion-service' && COMP_WORDS=(gearcoupling-service --dead) && COMP_CWORD=1 && _gearcoupling_service && echo \${COMPREPLY[*]}")" = --deadline-s ] ||
+  fail "the installed bash completion of the service does not complete --deadline-s"
 cp -r "$source/tests/packaging/consumer" "$tmp/consumer"
 cmake -S "$tmp/consumer" -B "$tmp/consumer/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
