@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/table.h"
+#include "core/engineering_text.h"
 
 namespace gc::analysis {
 namespace {
@@ -23,8 +24,7 @@ std::vector<std::string> cells(const std::string& region, const v1::ChannelError
 }
 
 std::string bin_name(const v1::BinningRecord& binning, const v1::ErrorBinRecord& bin) {
-  return fmt::format("{} {} .. {} {}", binning.dimension(), format_number(bin.lower()), format_number(bin.upper()),
-                     binning.unit());
+  return binning.dimension() + " " + engineering_range(bin.lower(), bin.upper(), binning.unit());
 }
 
 void compare(const v1::ModelValidation& before, const v1::ModelValidation& after, std::FILE* out) {

@@ -1,8 +1,12 @@
 #include "analysis/diagnosis_summary.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "analysis/table.h"
+#include "core/engineering_text.h"
 #include "analysis/validation_summary.h"
 
 namespace gc::analysis {
@@ -13,9 +17,11 @@ namespace v1 = gearcoupling::v1;
 std::string parameters_text(const google::protobuf::RepeatedPtrField<v1::ParameterEstimateRecord>& parameters) {
   std::string text;
   for (const v1::ParameterEstimateRecord& p : parameters) {
-    text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", p.name(), format_number(p.value()));
+    // Value and standard error under one prefix, that of the larger (a value at 0 has an error).
+    const double reference = std::max(std::abs(p.value()), p.has_standard_error() ? p.standard_error() : 0.0);
+    text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", p.name(), engineering_text(p.value(), p.unit(), reference));
     if (p.held()) text += " (held)";
-    if (p.has_standard_error()) text += fmt::format(" +/- {:.2g}", p.standard_error());
+    if (p.has_standard_error()) text += " +/- " + engineering_text(p.standard_error(), p.unit(), reference);
   }
   return text;
 }
@@ -78,6 +84,10 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
     if (round.ranking_size() > 0) print_ranking(round, out);
     if (round.outcome() == "unexplained") print_signature(round, out);
     fmt::print(out, "\n{}\n", round.verdict());
+  }
+  for (const std::string& add : result.add_flags()) {
+    fmt::print(out, "\nTo validate with it: gearcoupling validate --data {} --model {} --add {}\n",
+               result.recording(), result.model(), add);
   }
   if (!result.written_model().empty()) fmt::print(out, "\nModel with the effects found: {}\n", result.written_model());
   print_input_notes(result.warnings(), result.ignored_columns(), out);

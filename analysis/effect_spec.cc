@@ -28,4 +28,14 @@ std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec) {
   return make_effect(name, values);
 }
 
+std::string effect_spec_text(const Effect& effect) {
+  std::string text = effect.name();
+  const std::vector<ParameterSpec>& parameters = effect.info().parameters;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    text += (i == 0 ? "=" : ",") + parameters[i].name + "=";
+    append_number(text, effect.values()[i]);
+  }
+  return text;
+}
+
 }  // namespace gc::analysis

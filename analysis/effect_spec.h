@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "core/effects/effect.h"
@@ -14,5 +15,9 @@ namespace gc::analysis {
 /// naming "effects.<name>[.<parameter>]" for an unknown effect or parameter or a value out of
 /// its bounds.
 std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec);
+
+/// The spec parse_effect_spec reads back to `effect`: "name" or "name=p=v,..." with every
+/// parameter in SI, shortest round-trip numbers (what diagnose prints for --add).
+std::string effect_spec_text(const Effect& effect);
 
 }  // namespace gc::analysis

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "analysis/effect_spec.h"
 #include "codec/diagnosis_messages.h"
 
 namespace gc::analysis {
@@ -16,6 +17,7 @@ gearcoupling::v1::DiagnosisResult diagnosis_result(const Diagnosis& diagnosis,
   result.set_model(std::string(model_name));
   for (const std::string& warning : check.warnings) result.add_warnings(warning);
   for (const std::string& column : recording.ignored_columns) result.add_ignored_columns(column);
+  for (const auto& effect : diagnosis.added) result.add_add_flags(effect_spec_text(*effect));
   return result;
 }
 

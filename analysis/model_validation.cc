@@ -1,9 +1,27 @@
 #include "analysis/model_validation.h"
 
+#include <fmt/format.h>
+
 #include "analysis/effect_spec.h"
+#include "analysis/format_error.h"
 #include "analysis/validation_result.h"
 
 namespace gc::analysis {
+
+AddedEffect added_effect(std::string_view spec, const codec::ModelFile& model) {
+  std::shared_ptr<const Effect> effect = parse_effect_spec(spec);
+  const std::shared_ptr<const Effect> existing = model.model.effect(effect->name());
+  if (existing == nullptr) return {effect, model.name + " + " + effect->name(), ""};
+  const std::string had = effect_spec_text(*existing);
+  if (existing->values() == effect->values()) {
+    throw FormatError(fmt::format("--add {}: model {} already has {} with these parameters ({}): "
+                                  "the comparison would change nothing",
+                                  spec, model.name, effect->name(), had));
+  }
+  return {effect, model.name + ", " + effect->name() + " replaced",
+          fmt::format("model {} already has {} ({}); --add replaces it with {}", model.name,
+                      effect->name(), had, effect_spec_text(*effect))};
+}
 
 std::unique_ptr<ModelValidation> validate_model(const std::filesystem::path& path,
                                                 const codec::ModelFile& model,
@@ -17,10 +35,11 @@ std::unique_ptr<ModelValidation> validate_model(const std::filesystem::path& pat
   std::vector<ModelRun>& runs = validation->runs;
   runs.push_back({model.name, &model.model, ValidationAccumulator(binning), PointSampler()});
   if (!added_effect.empty()) {
-    const auto effect = parse_effect_spec(added_effect);
-    validation->with_added.emplace(model.model.with_effect(effect));
-    runs.push_back({model.name + " + " + effect->name(), &*validation->with_added,
-                    ValidationAccumulator(binning), PointSampler()});
+    const AddedEffect added = analysis::added_effect(added_effect, model);
+    validation->note = added.note;
+    validation->with_added.emplace(model.model.with_effect(added.effect));
+    runs.push_back({added.label, &*validation->with_added, ValidationAccumulator(binning),
+                    PointSampler()});
   }
   const RecordingSummary recording = run_validation(path, runs, options);
   validation->result = validation_result(recording, runs, binning);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/engineering_text.h"
+
 namespace gc::analysis {
 namespace {
 
@@ -62,9 +64,10 @@ std::vector<std::string> MomentScale::warnings(std::string_view model_name) cons
     const std::optional<double> slip = unit_slip_factor(ratio);
     if (!slip) continue;
     warnings.push_back(fmt::format(
-        "{} measured RMS {:.4g} N·m is {:.4g} times the model {}'s {:.4g} N·m, {} by about {:g}: "
+        "{} measured RMS {} is {:.4g} times the model {}'s {}, {} by about {:g}: "
         "check the unit of the {} column (N·m under _knm? kN·m under _nm?{})",
-        c.name, c.measured, ratio, model_name, c.model, channel_hint(ratio), *slip, c.column,
+        c.name, engineering_text(c.measured, "N·m"), ratio, model_name,
+        engineering_text(c.model, "N·m"), channel_hint(ratio), *slip, c.column,
         *slip == kUnitSlips.back() ? " or degrees and radians in the misalignment's" : ""));
   }
   return warnings;
@@ -76,15 +79,17 @@ std::optional<std::string> misalignment_scale_warning(double largest_misalignmen
   const double in_jam_angles = largest_misalignment_rad / jam_angle_rad;
   const auto plausible = [](double x) { return x >= kPlausibleLow && x <= kPlausibleHigh; };
   if (in_jam_angles > kPlausibleHigh && plausible(in_jam_angles / kDegreesPerRadian)) {
-    return fmt::format("misalignment reaches {:.3g} rad, {:.3g} times the jam angle ({:.3g} rad): "
+    return fmt::format("misalignment reaches {}, {:.3g} times the jam angle ({}): "
                        "degrees under a _rad header? (57.3 times too large)",
-                       largest_misalignment_rad, in_jam_angles, jam_angle_rad);
+                       engineering_text(largest_misalignment_rad, "rad"), in_jam_angles,
+                       engineering_text(jam_angle_rad, "rad"));
   }
   if (in_jam_angles < kPlausibleLow && plausible(in_jam_angles * kDegreesPerRadian)) {
-    return fmt::format("misalignment reaches only {:.3g} rad, {:.3g} of the jam angle ({:.3g} rad): "
+    return fmt::format("misalignment reaches only {}, {:.3g} of the jam angle ({}): "
                        "radians under a _deg header? (57.3 times too small; ignore this if the "
                        "test ran that close to aligned)",
-                       largest_misalignment_rad, in_jam_angles, jam_angle_rad);
+                       engineering_text(largest_misalignment_rad, "rad"), in_jam_angles,
+                       engineering_text(jam_angle_rad, "rad"));
   }
   return std::nullopt;
 }

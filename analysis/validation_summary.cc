@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis/table.h"
+#include "core/engineering_text.h"
 
 namespace gc::analysis {
 namespace {
@@ -18,16 +19,15 @@ constexpr std::size_t kProblemsShown = 10;
 void add_metrics_row(Table& table, const std::string& model, std::string_view channel,
                      const v1::ErrorMetricsRecord& m) {
   table.add_row({model, std::string(channel), std::to_string(m.count()),
-                 fmt::format("{:.2f}", m.rmse_nm() / 1e3), fmt::format("{:.3f}", m.rmse_pct()),
-                 fmt::format("{:+.2f}", m.bias_nm() / 1e3), fmt::format("{:+.3f}", m.bias_pct()),
+                 fmt::format("{:.2f}", m.rmse_nm() / 1e3), fmt::format("{:+.2f}", m.bias_nm() / 1e3),
                  m.has_r_squared() ? fmt::format("{:.4f}", m.r_squared()) : "n/a",
-                 fmt::format("{:.2f}", m.max_abs_error_nm() / 1e3),
-                 fmt::format("{:.3f}", m.max_abs_error_pct())});
+                 fmt::format("{:.2f}", m.max_abs_error_nm() / 1e3)});
 }
 
 void print_metrics(const v1::ValidationResult& result, std::FILE* out) {
-  Table table({"model", "channel", "samples", "RMSE [kN·m]", "RMSE [% T_ref]", "bias [kN·m]",
-               "bias [% T_ref]", "R^2", "max |err| [kN·m]", "max [% T_ref]"});
+  // kN·m throughout, as the HTML report: a percentage of T_ref hides the scale of the error.
+  Table table({"model", "channel", "samples", "RMSE [kN·m]", "bias [kN·m]", "R^2",
+               "max |err| [kN·m]"});
   for (const v1::ModelValidation& model : result.models()) {
     add_metrics_row(table, model.model(), "M_sy'", model.overall().msy());
     add_metrics_row(table, model.model(), "M_sz'", model.overall().msz());
@@ -120,9 +120,9 @@ void print_input_notes(const google::protobuf::RepeatedPtrField<std::string>& wa
 }
 
 void print_validation_summary(const v1::ValidationResult& result, std::FILE* out) {
-  fmt::print(out, "Recording {}: {} rows; reference torque T_ref {:.3f} MN·m; errors are model - "
+  fmt::print(out, "Recording {}: {} rows; reference torque T_ref {}; errors are model - "
              "measurement\n\n", result.recording(), result.recording_rows(),
-             result.reference_torque_nm() / 1e6);
+             engineering_text(result.reference_torque_nm(), "N·m"));
   print_metrics(result, out);
   for (const v1::ModelValidation& model : result.models()) {
     print_regions(model, out);

@@ -8,6 +8,8 @@ set(gc_programs gearcoupling)
 if(GC_BUILD_SERVICE)
   list(APPEND gc_public_libraries gc_client)
   list(APPEND gc_programs gearcoupling-service gearcoupling-monitor gearcoupling-dashboard)
+  install(FILES ${PROJECT_BINARY_DIR}/service/gearcoupling-service.bash
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME gearcoupling-service)
 endif()
 install(TARGETS ${gc_programs})
 install(FILES ${PROJECT_BINARY_DIR}/clients/cli/gearcoupling.bash
@@ -20,10 +22,13 @@ install(DIRECTORY core codec DESTINATION ${gc_include_dir} FILES_MATCHING PATTER
 install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
   FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
 if(GC_BUILD_SERVICE)
-  install(DIRECTORY protocol DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
-  install(DIRECTORY clients/remote DESTINATION ${gc_include_dir}/clients
-    FILES_MATCHING PATTERN "*.h")
-  install(FILES ${PROJECT_BINARY_DIR}/idl/gearcoupling.h DESTINATION ${gc_include_dir})
+  # What clients/remote/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
+  install(FILES protocol/calculation.h protocol/calculation_types.h protocol/dds_error.h
+                protocol/jam_angle_result.h protocol/requests.h
+    DESTINATION ${gc_include_dir}/protocol)
+  install(FILES clients/remote/client.h clients/remote/client_error.h
+                clients/remote/client_types.h clients/remote/reply_error.h
+    DESTINATION ${gc_include_dir}/clients/remote)
 endif()
 
 # find_package(gearcoupling): the targets, and the packages their headers need.

@@ -56,7 +56,7 @@ v1::RegionRecord region_message(const RegionError& region, double reference_torq
   record.set_bin(static_cast<std::uint32_t>(region.bin));
   record.set_contrast(region.contrast);
   record.set_region(describe_region(region));
-  record.set_description(describe(region, reference_torque_nm));
+  record.set_description(describe(region));
   *record.mutable_metrics() = to_message(region.metrics, reference_torque_nm);
   return record;
 }

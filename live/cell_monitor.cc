@@ -131,7 +131,7 @@ namespace {
 
 // validate's sentence for the worst region of the channel with the larger systematic error,
 // "" when both are at the noise level or no region stands out.
-std::string worst_region_text(const ValidationAccumulator& validation, double reference_torque_nm) {
+std::string worst_region_text(const ValidationAccumulator& validation) {
   std::optional<ErrorSignature> worst;
   for (Channel channel : kChannels) {
     const ErrorSignature signature = error_signature(validation, channel);
@@ -140,7 +140,7 @@ std::string worst_region_text(const ValidationAccumulator& validation, double re
   }
   if (!worst) return "";
   for (const RegionError& region : worst_regions(validation, worst->channel)) {
-    if (region.contrast >= analysis::kNotableContrast) return describe(region, reference_torque_nm);
+    if (region.contrast >= analysis::kNotableContrast) return describe(region);
   }
   return "";
 }
@@ -156,7 +156,7 @@ HealthReport CellMonitor::health(std::chrono::system_clock::time_point now) cons
   report.model = period(now);
   report.previous_model = previous_model_;
   if (report.window_samples >= 2) {
-    report.worst_region = worst_region_text(window.validation, options_.reference_torque_nm);
+    report.worst_region = worst_region_text(window.validation);
   }
   report.last_refusal = last_refusal_;
   report.last_model_refusal = last_model_refusal_;

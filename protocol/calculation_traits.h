@@ -12,6 +12,7 @@
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
 #include "protocol/calculation.h"
+#include "protocol/calculation_types.h"
 #include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"
 
@@ -20,12 +21,10 @@ namespace gc::protocol {
 template <Calculation kCalculation>
 struct CalculationTraits;
 
-#define GC_PROTOCOL_CALCULATION_TRAITS(ENUM, NAME, RESULT)                               \
+#define GC_PROTOCOL_CALCULATION_TRAITS(ENUM, NAME)                                       \
   template <>                                                                            \
-  struct CalculationTraits<Calculation::ENUM> {                                          \
+  struct CalculationTraits<Calculation::ENUM> : CalculationTypes<Calculation::ENUM> {     \
     static constexpr Calculation kId = Calculation::ENUM;                                \
-    using Request = NAME##Request;                                                       \
-    using Result = RESULT;                                                               \
     using WireRequest = gearcoupling_##NAME##Request;                                    \
     using WireReply = gearcoupling_##NAME##Reply;                                        \
     static const dds_topic_descriptor_t& request_type() {                                \
@@ -34,11 +33,11 @@ struct CalculationTraits;
     static const dds_topic_descriptor_t& reply_type() { return gearcoupling_##NAME##Reply_desc; } \
   };
 
-GC_PROTOCOL_CALCULATION_TRAITS(kToothContact, ToothContact, gc::ToothContact)
-GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle, protocol::JamAngleResult)
-GC_PROTOCOL_CALCULATION_TRAITS(kInducedMoments, InducedMoments, gc::InducedMoments)
-GC_PROTOCOL_CALCULATION_TRAITS(kRestoringTorque, RestoringTorque, gc::RestoringTorque)
-GC_PROTOCOL_CALCULATION_TRAITS(kFrictionEstimate, FrictionEstimate, gc::FrictionEstimate)
+GC_PROTOCOL_CALCULATION_TRAITS(kToothContact, ToothContact)
+GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle)
+GC_PROTOCOL_CALCULATION_TRAITS(kInducedMoments, InducedMoments)
+GC_PROTOCOL_CALCULATION_TRAITS(kRestoringTorque, RestoringTorque)
+GC_PROTOCOL_CALCULATION_TRAITS(kFrictionEstimate, FrictionEstimate)
 
 #undef GC_PROTOCOL_CALCULATION_TRAITS
 

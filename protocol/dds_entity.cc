@@ -2,7 +2,7 @@
 
 namespace gc::protocol {
 
-DdsError::DdsError(const std::string& call, dds_return_t code)
+DdsError::DdsError(const std::string& call, std::int32_t code)
     : std::runtime_error(call + " failed: " + dds_strretcode(code)), code_(code) {}
 
 dds_entity_t check_dds(dds_entity_t result, const char* call) {

@@ -4,21 +4,17 @@
 
 #include <dds/dds.h>
 
+#include "protocol/dds_error.h"
+
+#include <cstdint>
 #include <stdexcept>
+#include <type_traits>
 #include <string>
 #include <utility>
 
 namespace gc::protocol {
 
-/// A DDS call failed. what() names the call and Cyclone's return code text.
-class DdsError : public std::runtime_error {
- public:
-  DdsError(const std::string& call, dds_return_t code);
-  dds_return_t code() const noexcept { return code_; }
-
- private:
-  dds_return_t code_;
-};
+static_assert(std::is_same_v<dds_return_t, std::int32_t>, "DdsError's code is a dds_return_t");
 
 /// Returns `result` (an entity or a count) when it is not negative, else throws DdsError.
 dds_entity_t check_dds(dds_entity_t result, const char* call);

@@ -31,6 +31,10 @@ int main(int argc, char** argv) {
                  gc::service::service_usage().c_str());
     return 2;
   }
+  if (command.bash_completion) {
+    std::fputs(gc::service::service_bash_completion().c_str(), stdout);
+    return 0;
+  }
   if (command.help || command.version) {
     std::fputs(command.help ? gc::service::service_usage().c_str()
                             : gc::service::service_version().c_str(),

@@ -69,6 +69,7 @@ void declare_flags(CLI::App& app, ServiceCommand& command) {
   // command line rather than editing it).
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.set_version_flag("--version", "gearcoupling-service " GC_VERSION);
+  app.add_flag("--bash-completion", command.bash_completion, "print the bash completion script");
   app.get_formatter()->column_width(34);
   app.add_option_function<std::string>(
       "--config", [&c](const std::string& path) { apply_config_file(path, c); },
@@ -164,6 +165,30 @@ std::string service_usage() {
                "gearcoupling-service"};
   declare_flags(app, command);
   return app.help();
+}
+
+std::string service_bash_completion() {
+  ServiceCommand command;
+  CLI::App app;
+  declare_flags(app, command);
+  std::string flags = "--help";
+  for (const CLI::Option* option : app.get_options()) {
+    if (!option->get_lnames().empty() && option->get_lnames().front() != "help") {
+      flags += " --" + option->get_lnames().front();
+    }
+  }
+  return R"(# bash completion for gearcoupling-service; written by `gearcoupling-service --bash-completion`
+# from the flag declarations of its parser.
+_gearcoupling_service() {
+  local cur="${COMP_WORDS[COMP_CWORD]}" prev="${COMP_WORDS[COMP_CWORD-1]}"
+  case "$prev" in
+    --config|--catalogue) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --log-level) COMPREPLY=($(compgen -W "trace debug info warn error off" -- "$cur")); return ;;
+  esac
+  COMPREPLY=($(compgen -W ")" + flags + R"(" -- "$cur"))
+}
+complete -o filenames -F _gearcoupling_service gearcoupling-service
+)";
 }
 
 std::string service_version() { return "gearcoupling-service " GC_VERSION "\n"; }

@@ -36,6 +36,7 @@ struct ServiceCommand {
   ServiceConfig config;
   bool help = false;     ///< --help: print service_usage()
   bool version = false;  ///< --version: print service_version()
+  bool bash_completion = false;  ///< --bash-completion: print service_bash_completion()
 };
 
 /// Parses `args` (without the program name) with CLI11, "--flag value" or "--flag=value":
@@ -58,5 +59,10 @@ std::string service_usage();
 
 /// "gearcoupling-service <version>\n", the CMake project version.
 std::string service_version();
+
+/// The bash completion of gearcoupling-service, from the same flag declarations as the parser
+/// (each flag under its canonical name; paths after --config and --catalogue, the levels after
+/// --log-level). Installed to share/bash-completion/completions/gearcoupling-service.
+std::string service_bash_completion();
 
 }  // namespace gc::service

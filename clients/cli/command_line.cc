@@ -37,7 +37,8 @@ void Flags::add_to(CLI::App& app) {
     } else {
       app.add_option_function<std::string>(
           cli11_names(spec), [this, k](const std::string& value) { values_[k] = value; },
-          spec.help);
+          spec.help)
+          ->type_name(spec.value_name);
     }
   }
 }
@@ -114,11 +115,19 @@ bool parse_flags(Flags& flags, std::span<const char* const> args) {
   } catch (const CLI::CallForHelp&) {
     return false;
   } catch (const CLI::ParseError& error) {
-    throw UsageError(error.what());
+    throw UsageError(parse_error_text(error.what()));
   }
   if (!app.remaining().empty()) throw UsageError(unexpected_arguments(app.remaining()));
   flags.check();
   return true;
+}
+
+std::string parse_error_text(std::string_view cli11_message) {
+  constexpr std::string_view kRepeated = ": At Most 1 required but received ";
+  const std::size_t at = cli11_message.find(kRepeated);
+  if (at == std::string_view::npos) return std::string(cli11_message);
+  return fmt::format("{} given {} times (at most once)", cli11_message.substr(0, at),
+                     cli11_message.substr(at + kRepeated.size()));
 }
 
 std::string unexpected_arguments(const std::vector<std::string>& remaining) {

@@ -74,6 +74,10 @@ bool parse_flags(Flags& flags, std::span<const char* const> args);
 /// (CLI::App::remaining()), which must not be empty.
 std::string unexpected_arguments(const std::vector<std::string>& remaining);
 
+/// CLI11's message for a parse error in the CLI's words: "--torque-nm given 2 times (at most
+/// once)" for its "At Most 1 required but received 2"; other messages as they are.
+std::string parse_error_text(std::string_view cli11_message);
+
 /// Help text: usage line, summary, every flag with its unit, aliases, default or "required".
 std::string usage_text(std::string_view subcommand, std::string_view summary,
                        const std::vector<FlagSpec>& specs);

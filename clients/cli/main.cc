@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     const int k = command_line.chosen();
     fmt::print(stderr, "gearcoupling{}{}: error: {}\n", k < 0 ? "" : " ",
-               k < 0 ? "" : subcommands()[k]->name, error.what());
+               k < 0 ? "" : subcommands()[k]->name, parse_error_text(error.what()));
     return kBadInput;
   }
   if (command_line.print_completion) {

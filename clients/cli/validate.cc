@@ -47,6 +47,7 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const auto validation = analysis::validate_model(
       flags.text("data"), model, flags.text("add"), flags.number("reference-torque-nm"),
       {jobs_from(flags), 1u << 15, column_renames(flags)});
+  if (!validation->note.empty()) fmt::print(stderr, "gearcoupling validate: note: {}\n", validation->note);
   const v1::ValidationResult& result = validation->result;
   const std::vector<ModelRun>& runs = validation->runs;
   print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},

@@ -43,7 +43,7 @@ std::shared_ptr<client::Client> make_client(int domain, double timeout_s) {
 }
 
 template <Calculation kCalculation>
-auto call(const Client& self, const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+auto call(const Client& self, const typename protocol::CalculationTypes<kCalculation>::Request& request) {
   py::gil_scoped_release release;
   return self.client->call<kCalculation>(request);
 }

@@ -1,394 +1,45 @@
 #include "clients/remote/client.h"
 
-#include <fmt/format.h>
-
-#include "protocol/matching.h"
-#include "protocol/names.h"
-#include "protocol/qos.h"
-#include "protocol/random_id.h"
-#include "protocol/topics.h"
-#include "protocol/wire_inputs.h"
+#include "clients/remote/client_core.h"
 
 namespace gc::client {
 
 using protocol::Calculation;
-using protocol::check_dds;
-using protocol::Entity;
 
-namespace {
+Client::Client(ClientOptions options) : core_(std::make_unique<ClientCore>(std::move(options))) {}
 
-/// A disposed status means a graceful shutdown: the instance answered what it had before
-/// disposing, so give those replies this long to arrive before sending the rest elsewhere.
-constexpr std::chrono::milliseconds kDisposedResendDelay{500};
-/// How often the receive loop checks deadlines and readiness when nothing arrives.
-constexpr dds_duration_t kTick = DDS_MSECS(10);
-/// Longest a caller waiting for a ready instance sleeps between looks. Matching events wake it
-/// at once (matched listeners); this only bounds a wake-up lost to the race between a look and
-/// the wait. Looking costs a copy of every matched writer's QoS: a hundred clients discovering
-/// at once and looking every millisecond kept a 2-core host saturated (docs/benchmarks.md).
-constexpr std::chrono::milliseconds kReadyPoll{20};
-
-}  // namespace
-
-struct Client::Instance {
-  InstanceInfo info;
-  Entity publisher;  ///< in the instance's request partition
-  std::array<Entity, 5> writers;
-  std::array<bool, 5> ready{};  ///< both directions matched for this calculation
-};
-
-Client::Client(ClientOptions options)
-    : options_(options),
-      client_id_(protocol::random_id_with_prefix(options.client_id_prefix)),
-      participant_(check_dds(
-          dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
-          "dds_create_participant")),
-      request_topics_(protocol::make_request_topics(participant_.get())),
-      reply_topics_(protocol::make_reply_topics(participant_.get())),
-      status_topic_(protocol::make_status_topic(participant_.get())) {
-  waitset_ = Entity(check_dds(dds_create_waitset(participant_.get()), "dds_create_waitset"));
-  const protocol::Qos reply_partition =
-      protocol::partition_qos(protocol::reply_partition(client_id_));
-  reply_subscriber_ = Entity(check_dds(
-      dds_create_subscriber(participant_.get(), reply_partition.get(), nullptr),
-      "dds_create_subscriber(replies)"));
-  // Reply readers are made on a calculation's first use; under DDS Security, find out now, not
-  // at the first call, whether this identity may read its reply partition (a wrong prefix).
-  if (options_.client_id_prefix != 0) {
-    const protocol::Qos qos = protocol::request_reply_qos();
-    const dds_entity_t probe = dds_create_reader(
-        reply_subscriber_.get(), reply_topics_[0].get(), qos.get(), nullptr);
-    if (probe == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(probe);
-    if (probe > 0) dds_delete(probe);
-  }
-  const protocol::Qos status_partition = protocol::partition_qos(protocol::kStatusPartition);
-  status_subscriber_ = Entity(check_dds(
-      dds_create_subscriber(participant_.get(), status_partition.get(), nullptr),
-      "dds_create_subscriber(status)"));
-  const protocol::Qos status_qos = protocol::status_reader_qos();
-  status_reader_ = Entity(check_dds(
-      dds_create_reader(status_subscriber_.get(), status_topic_.get(), status_qos.get(), nullptr),
-      "dds_create_reader(status)"));
-  dds_set_status_mask(status_reader_.get(), DDS_DATA_AVAILABLE_STATUS);
-  check_dds(dds_waitset_attach(waitset_.get(), status_reader_.get(), 0), "dds_waitset_attach");
-  guard_ = Entity(check_dds(dds_create_guardcondition(participant_.get()),
-                            "dds_create_guardcondition"));
-  check_dds(dds_waitset_attach(waitset_.get(), guard_.get(), 0), "dds_waitset_attach");
-  receiver_ = std::thread([this] { receive_loop(); });
-}
-
-Client::~Client() {
-  {
-    std::lock_guard lock(mutex_);
-    closing_ = true;
-  }
-  instances_changed_.notify_all();
-  dds_set_guardcondition(guard_.get(), true);
-  receiver_.join();
-  for (const Entity& reader : reply_readers_) {
-    if (reader) dds_set_listener(reader.get(), nullptr);
-  }
-  std::map<std::uint64_t, Pending> pending;
-  {
-    std::lock_guard lock(mutex_);
-    pending.swap(pending_);
-  }
-  for (auto& [sequence, p] : pending) {
-    p.fail(std::make_exception_ptr(ClientClosed(fmt::format(
-        "{} request {} abandoned: the client closed", protocol::to_string(p.calculation),
-        sequence))));
-  }
-}
-
-void Client::use_locked(Calculation calculation) {
-  const std::size_t i = protocol::index_of(calculation);
-  if (reply_readers_[i]) return;
-  // Replies are taken in Cyclone's delivery thread (a data-available listener) and handed
-  // straight to the waiting caller: no extra thread between the network and the caller.
-  protocol::for_each_calculation([&](auto c) {
-    constexpr Calculation kCalculation = decltype(c)::value;
-    if (kCalculation != calculation) return;
-    dds_listener_t* listener = dds_create_listener(this);
-    dds_lset_data_available(listener, [](dds_entity_t reader, void* client) {
-      static_cast<Client*>(client)->take_replies<kCalculation>(reader);
-    });
-    dds_lset_subscription_matched(listener, [](dds_entity_t, dds_subscription_matched_status_t,
-                                               void* client) {
-      static_cast<Client*>(client)->matching_changed();
-    });
-    const protocol::Qos qos = protocol::request_reply_qos();
-    const dds_entity_t reader =
-        dds_create_reader(reply_subscriber_.get(), reply_topics_[i].get(), qos.get(), listener);
-    dds_delete_listener(listener);
-    if (reader == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) throw reply_reader_refused(reader);
-    reply_readers_[i] = Entity(check_dds(reader, "dds_create_reader(reply)"));
-  });
-  for (auto& [id, instance] : instances_) create_request_writer_locked(*instance, i);
-}
-
-void Client::create_request_writer_locked(Instance& instance, std::size_t i) {
-  const protocol::Qos qos = protocol::request_reply_qos();
-  dds_listener_t* listener = dds_create_listener(this);
-  dds_lset_publication_matched(listener, [](dds_entity_t, dds_publication_matched_status_t,
-                                            void* client) {
-    static_cast<Client*>(client)->matching_changed();
-  });
-  instance.writers[i] = Entity(check_dds(
-      dds_create_writer(instance.publisher.get(), request_topics_[i].get(), qos.get(), listener),
-      "dds_create_writer(request)"));
-  dds_delete_listener(listener);
-}
-
-void Client::matching_changed() {
-  // Without mutex_: Cyclone may call this inside dds_create_writer, which take_status() calls
-  // with mutex_ held. A wake-up lost to that is made up by kReadyPoll.
-  instances_changed_.notify_all();
-}
-
-std::uint64_t Client::next_sequence() {
-  std::lock_guard lock(mutex_);
-  return ++sequence_;
-}
-
-protocol::DdsError Client::reply_reader_refused(dds_return_t code) const {
-  return protocol::DdsError(
-      fmt::format("dds_create_reader(reply) in partition \"{}\": this participant's DDS Security "
-                  "permissions do not allow reading it; the client id prefix ({:08x}, "
-                  "--client-id-prefix or GC_CLIENT_ID_PREFIX) must be the client_id_prefix "
-                  "written next to the identity's certificate",
-                  protocol::reply_partition(client_id_), options_.client_id_prefix),
-      code);
-}
-
-bool Client::ready_locked(Instance& instance, Calculation calculation) {
-  const std::size_t i = protocol::index_of(calculation);
-  if (!instance.ready[i] && instance.writers[i]) {
-    instance.ready[i] =
-        protocol::matched_reader_count(instance.writers[i].get()) > 0 &&
-        protocol::matched_with_tagged_writer(reply_readers_[i].get(),
-                                             protocol::hex_id(instance.info.id));
-  }
-  return instance.ready[i];
-}
-
-Client::Instance* Client::pick_ready_locked(Calculation calculation) {
-  std::vector<Instance*> candidates;
-  for (auto& [id, instance] : instances_) {
-    if (instance->info.accepting) candidates.push_back(instance.get());
-  }
-  if (candidates.empty()) return nullptr;
-  const std::size_t start = round_robin_++;
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    Instance* instance = candidates[(start + k) % candidates.size()];
-    if (ready_locked(*instance, calculation)) return instance;
-  }
-  return nullptr;
-}
-
-void Client::send(std::uint64_t sequence, Pending pending) {
-  std::unique_lock lock(mutex_);
-  use_locked(pending.calculation);
-  for (;;) {
-    if (closing_) {
-      lock.unlock();
-      pending.fail(std::make_exception_ptr(ClientClosed("the client is closing")));
-      return;
-    }
-    if (Instance* instance = pick_ready_locked(pending.calculation)) {
-      const dds_entity_t writer =
-          instance->writers[protocol::index_of(pending.calculation)].get();
-      pending.instance = instance->info.id;
-      auto write = pending.write;
-      pending_.emplace(sequence, std::move(pending));
-      counters_.sent += 1;
-      lock.unlock();
-      const dds_return_t rc = write(writer);
-      if (rc < 0) {
-        std::lock_guard relock(mutex_);
-        const auto found = pending_.find(sequence);
-        // The instance went while writing (its writer was deleted): send it elsewhere.
-        if (found != pending_.end()) found->second.instance = 0;
-      }
-      return;
-    }
-    const Clock::time_point now = Clock::now();
-    if (now >= pending.deadline) {
-      counters_.timeouts += 1;
-      const std::size_t known = instances_.size();
-      lock.unlock();
-      pending.fail(std::make_exception_ptr(Timeout(fmt::format(
-          "{} request {}: no gearcoupling-service instance ready on domain {} within {} ms "
-          "({} instance(s) discovered)",
-          protocol::to_string(pending.calculation), sequence, options_.domain,
-          options_.timeout.count(), known))));
-      return;
-    }
-    // Woken by status samples and matching events (matching_changed()).
-    instances_changed_.wait_until(lock, std::min(pending.deadline, now + kReadyPoll));
-  }
-}
-
-bool Client::wait_for_service(Calculation calculation, std::chrono::milliseconds timeout) {
-  const Clock::time_point deadline = Clock::now() + timeout;
-  std::unique_lock lock(mutex_);
-  use_locked(calculation);
-  for (;;) {
-    for (auto& [id, instance] : instances_) {
-      if (instance->info.accepting && ready_locked(*instance, calculation)) return true;
-    }
-    if (Clock::now() >= deadline || closing_) return false;
-    instances_changed_.wait_until(lock, std::min(deadline, Clock::now() + kReadyPoll));
-  }
-}
-
-std::vector<InstanceInfo> Client::instances() const {
-  std::lock_guard lock(mutex_);
-  std::vector<InstanceInfo> out;
-  for (const auto& [id, instance] : instances_) out.push_back(instance->info);
-  return out;
-}
-
-std::optional<CouplingDefinition> Client::catalogue_definition(const std::string& name) const {
-  std::lock_guard lock(mutex_);
-  for (const auto& [id, instance] : instances_) {
-    for (const CouplingDefinition& d : instance->info.definitions) if (d.name == name) return d;
-  }
-  return std::nullopt;
-}
-
-ClientCounters Client::counters() const {
-  std::lock_guard lock(mutex_);
-  return counters_;
-}
+Client::~Client() = default;
 
 template <Calculation kCalculation>
-void Client::take_replies(dds_entity_t reader) {
-  using T = protocol::CalculationTraits<kCalculation>;
-  for (;;) {
-    protocol::LoanedSamples<typename T::WireReply> samples(reader);
-    if (samples.size() == 0) return;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-      if (!samples.info(i).valid_data) continue;
-      const typename T::WireReply& reply = samples[i];
-      Pending pending;
-      {
-        std::lock_guard lock(mutex_);
-        if (reply.correlation.client_id != client_id_) {
-          counters_.foreign += 1;
-          continue;
-        }
-        const auto found = pending_.find(reply.correlation.sequence_number);
-        if (found == pending_.end() || found->second.calculation != kCalculation) {
-          counters_.duplicates += 1;
-          continue;
-        }
-        pending = std::move(found->second);
-        pending_.erase(found);
-        counters_.replies += 1;
-      }
-      pending.deliver(&reply);
-    }
-  }
+void Client::call_then(const Request<kCalculation>& request, Callback<kCalculation> done) {
+  core_->call_then<kCalculation>(request, std::move(done));
 }
 
-void Client::take_status() {
-  for (;;) {
-    protocol::LoanedSamples<gearcoupling_ServiceStatus> samples(status_reader_.get());
-    if (samples.size() == 0) return;
-    std::lock_guard lock(mutex_);
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-      const dds_sample_info_t& info = samples.info(i);
-      if (info.instance_state != DDS_IST_ALIVE) {
-        const auto handle = status_handles_.find(info.instance_handle);
-        if (handle == status_handles_.end()) continue;
-        const std::uint64_t id = handle->second;
-        status_handles_.erase(handle);
-        instances_.erase(id);  // deletes its writers
-        const Clock::time_point resend_at =
-            Clock::now() + (info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED
-                                ? kDisposedResendDelay
-                                : std::chrono::milliseconds(0));
-        for (auto& [sequence, pending] : pending_) {
-          if (pending.instance == id) {
-            pending.instance = 0;
-            pending.resend_at = resend_at;
-          }
-        }
-        continue;
-      }
-      if (!info.valid_data) continue;
-      const gearcoupling_ServiceStatus& status = samples[i];
-      status_handles_[info.instance_handle] = status.instance_id;
-      auto& instance = instances_[status.instance_id];
-      if (!instance) {
-        instance = std::make_unique<Instance>();
-        instance->info.id = status.instance_id;
-        const protocol::Qos partition =
-            protocol::partition_qos(protocol::request_partition(status.instance_id));
-        instance->publisher = Entity(check_dds(
-            dds_create_publisher(participant_.get(), partition.get(), nullptr),
-            "dds_create_publisher(requests)"));
-        for (std::size_t c = 0; c < instance->writers.size(); ++c) {
-          if (reply_readers_[c]) create_request_writer_locked(*instance, c);
-        }
-      }
-      instance->info = instance_info_from_wire(status);
-    }
-    instances_changed_.notify_all();
-  }
+template void Client::call_then<Calculation::kToothContact>(
+    const Request<Calculation::kToothContact>&, Callback<Calculation::kToothContact>);
+template void Client::call_then<Calculation::kJamAngle>(const Request<Calculation::kJamAngle>&,
+                                                        Callback<Calculation::kJamAngle>);
+template void Client::call_then<Calculation::kInducedMoments>(
+    const Request<Calculation::kInducedMoments>&, Callback<Calculation::kInducedMoments>);
+template void Client::call_then<Calculation::kRestoringTorque>(
+    const Request<Calculation::kRestoringTorque>&, Callback<Calculation::kRestoringTorque>);
+template void Client::call_then<Calculation::kFrictionEstimate>(
+    const Request<Calculation::kFrictionEstimate>&, Callback<Calculation::kFrictionEstimate>);
+
+bool Client::wait_for_service(Calculation calculation, std::chrono::milliseconds timeout) {
+  return core_->wait_for_service(calculation, timeout);
 }
 
-void Client::maintain() {
-  struct Resend {
-    std::function<dds_return_t(dds_entity_t)> write;
-    dds_entity_t writer;
-  };
-  std::vector<Resend> resends;
-  std::vector<std::pair<Pending, std::string>> expired;
-  {
-    std::lock_guard lock(mutex_);
-    const Clock::time_point now = Clock::now();
-    for (auto it = pending_.begin(); it != pending_.end();) {
-      Pending& pending = it->second;
-      if (now >= pending.deadline) {
-        counters_.timeouts += 1;
-        std::string message = fmt::format(
-            "{} request {} (client {}) to instance {}: no reply within {} ms",
-            protocol::to_string(pending.calculation), it->first, protocol::hex_id(client_id_),
-            pending.instance != 0 ? protocol::hex_id(pending.instance) : "(none left)",
-            options_.timeout.count());
-        expired.emplace_back(std::move(pending), std::move(message));
-        it = pending_.erase(it);
-        continue;
-      }
-      if (pending.instance == 0 && now >= pending.resend_at) {
-        if (Instance* instance = pick_ready_locked(pending.calculation)) {
-          pending.instance = instance->info.id;
-          resends.push_back(
-              {pending.write, instance->writers[protocol::index_of(pending.calculation)].get()});
-          counters_.resent += 1;
-          counters_.sent += 1;
-        }
-      }
-      ++it;
-    }
-  }
-  for (const Resend& resend : resends) resend.write(resend.writer);
-  for (auto& [pending, message] : expired) {
-    pending.fail(std::make_exception_ptr(Timeout(message)));
-  }
+std::vector<InstanceInfo> Client::instances() const { return core_->instances(); }
+
+std::optional<CouplingDefinition> Client::catalogue_definition(const std::string& name) const {
+  return core_->catalogue_definition(name);
 }
 
-void Client::receive_loop() {
-  for (;;) {
-    dds_waitset_wait(waitset_.get(), nullptr, 0, kTick);
-    {
-      std::lock_guard lock(mutex_);
-      if (closing_) return;
-    }
-    take_status();
-    maintain();
-  }
-}
+ClientCounters Client::counters() const { return core_->counters(); }
+
+std::uint64_t Client::client_id() const { return core_->client_id(); }
+
+const ClientOptions& Client::options() const { return core_->options(); }
 
 }  // namespace gc::client

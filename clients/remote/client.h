@@ -17,65 +17,31 @@
 // (gc::InvalidInput naming the field, gc::NotConverged), or protocol::ServiceError for the rest;
 // a call that gets no reply within ClientOptions::timeout fails with client::Timeout.
 // Thread-safe: any number of threads may call at once.
+//
+// The header names no Cyclone type and no header generated into the build tree: the DDS side is
+// in ClientCore (client_core.h, not installed), behind a pointer.
 #pragma once
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <future>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "clients/remote/client_error.h"
-#include "clients/remote/instance_info.h"
+#include "clients/remote/client_types.h"
 #include "clients/remote/reply_error.h"
-#include "protocol/calculation_traits.h"
-#include "protocol/dds_entity.h"
+#include "protocol/calculation.h"
+#include "protocol/calculation_types.h"
+#include "protocol/dds_error.h"
 #include "protocol/requests.h"
-#include "protocol/samples.h"
-#include "protocol/wire_requests.h"
-#include "protocol/wire_results.h"
 
 namespace gc::client {
 
-struct ClientOptions {
-  int domain = 0;  ///< DDS domain id [0, 232]; the network comes from CYCLONEDDS_URI
-  /// Longest a call waits, from the call to its reply, including discovery of a service.
-  std::chrono::milliseconds timeout{5000};
-  /// With DDS Security: the client_id_prefix of this participant's identity (8 hex digits,
-  /// written by deploy/security/make-security.sh next to its certificate). Its permissions allow
-  /// reading replies only for client ids whose top 32 bits are this prefix. 0: no security, all
-  /// 64 bits at random.
-  std::uint32_t client_id_prefix = 0;
-};
-
-/// What a call_then callback receives: the result, or the error call() would throw.
-template <typename Result>
-struct Outcome {
-  std::optional<Result> result;  ///< set on success
-  std::exception_ptr error;      ///< set on failure
-  /// The result, or rethrows the error.
-  const Result& value() const {
-    if (error) std::rethrow_exception(error);
-    return *result;
-  }
-};
-
-/// What happened to this client's requests so far.
-struct ClientCounters {
-  std::uint64_t sent = 0;          ///< requests written, resends included
-  std::uint64_t replies = 0;       ///< replies matched to a pending request
-  std::uint64_t resent = 0;        ///< requests sent again after their instance disappeared
-  std::uint64_t duplicates = 0;    ///< replies for a request no longer pending (dropped)
-  std::uint64_t foreign = 0;       ///< replies carrying another client's id (never expected)
-  std::uint64_t timeouts = 0;      ///< requests failed with Timeout
-};
+class ClientCore;
 
 class Client {
  public:
@@ -89,8 +55,11 @@ class Client {
   Client& operator=(const Client&) = delete;
 
   template <protocol::Calculation kCalculation>
-  using Callback =
-      std::function<void(Outcome<typename protocol::CalculationTraits<kCalculation>::Result>)>;
+  using Request = typename protocol::CalculationTypes<kCalculation>::Request;
+  template <protocol::Calculation kCalculation>
+  using Result = typename protocol::CalculationTypes<kCalculation>::Result;
+  template <protocol::Calculation kCalculation>
+  using Callback = std::function<void(Outcome<Result<kCalculation>>)>;
 
   /// Sends `request` (waiting, like call_async, for a ready instance) and returns; `done` is
   /// called once with the result or the error: in Cyclone's receive thread as the reply arrives
@@ -98,21 +67,30 @@ class Client {
   /// timeout or ClientClosed, or before call_then returns when no instance was ready in time.
   /// It must not block or throw. It may send the next request of a calculation that has just
   /// been answered (an instance is ready, so that send does not wait for discovery).
+  /// Defined in client.cc for the five calculations.
   template <protocol::Calculation kCalculation>
-  void call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
-                 Callback<kCalculation> done);
+  void call_then(const Request<kCalculation>& request, Callback<kCalculation> done);
 
   /// Sends `request` and returns at once; the future holds the result or the error.
   template <protocol::Calculation kCalculation>
-  std::future<typename protocol::CalculationTraits<kCalculation>::Result> call_async(
-      const typename protocol::CalculationTraits<kCalculation>::Request& request);
+  std::future<Result<kCalculation>> call_async(const Request<kCalculation>& request) {
+    auto promise = std::make_shared<std::promise<Result<kCalculation>>>();
+    std::future<Result<kCalculation>> future = promise->get_future();
+    call_then<kCalculation>(request, [promise](Outcome<Result<kCalculation>> outcome) {
+      if (outcome.error) {
+        promise->set_exception(outcome.error);
+      } else {
+        promise->set_value(std::move(*outcome.result));
+      }
+    });
+    return future;
+  }
 
   /// call_async(request).get(): the result, or throws the error. The caller sleeps in the
   /// future (a futex) and never spins: a sleeping thread keeps the scheduler's wake-up
   /// preference, so on a busy host the reply wakes it ahead of CPU hogs.
   template <protocol::Calculation kCalculation>
-  typename protocol::CalculationTraits<kCalculation>::Result call(
-      const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+  Result<kCalculation> call(const Request<kCalculation>& request) {
     return call_async<kCalculation>(request).get();
   }
 
@@ -124,121 +102,11 @@ class Client {
   /// no known instance serves that name.
   std::optional<CouplingDefinition> catalogue_definition(const std::string& name) const;
   ClientCounters counters() const;
-  std::uint64_t client_id() const { return client_id_; }
-  const ClientOptions& options() const { return options_; }
+  std::uint64_t client_id() const;
+  const ClientOptions& options() const;
 
  private:
-  struct Pending;
-  struct Instance;
-
-  /// Registers `pending` under a new sequence number and sends it (waiting for a ready instance
-  /// until its deadline). `write` writes the request sample with that sequence number.
-  void send(std::uint64_t sequence, Pending pending);
-  /// The error for a reply reader DDS Security refused (a client id prefix not this identity's).
-  protocol::DdsError reply_reader_refused(dds_return_t code) const;
-  std::uint64_t next_sequence();
-  /// A request writer or reply reader matched or lost a peer: wake the callers waiting for a
-  /// ready instance.
-  void matching_changed();
-  void receive_loop();
-  template <protocol::Calculation kCalculation>
-  void take_replies(dds_entity_t reader);
-  /// Creates `calculation`'s reply reader and request writers on its first use. A client makes
-  /// only the endpoints it uses (rule 2 of docs/protocol.md), and the service a reply writer
-  /// only for those: with a hundred clients discovering at once every endpoint counts, since
-  /// each is announced to every participant (docs/benchmarks.md, "Discovery at scale").
-  void use_locked(protocol::Calculation calculation);
-  void create_request_writer_locked(Instance& instance, std::size_t calculation_index);
-  void take_status();
-  /// Fails requests past their deadline and sends orphaned ones (instance gone) to another.
-  void maintain();
-  Instance* pick_ready_locked(protocol::Calculation calculation);
-  bool ready_locked(Instance& instance, protocol::Calculation calculation);
-
-  ClientOptions options_;
-  std::uint64_t client_id_;
-  protocol::Entity participant_;
-  std::array<protocol::Entity, 5> request_topics_;
-  std::array<protocol::Entity, 5> reply_topics_;
-  protocol::Entity status_topic_;
-  protocol::Entity reply_subscriber_;
-  std::array<protocol::Entity, 5> reply_readers_;  ///< created on first use (use_locked)
-  protocol::Entity status_subscriber_;
-  protocol::Entity status_reader_;
-  protocol::Entity guard_;
-  protocol::Entity waitset_;
-
-  mutable std::mutex mutex_;
-  std::condition_variable instances_changed_;
-  std::map<std::uint64_t, std::unique_ptr<Instance>> instances_;
-  std::map<dds_instance_handle_t, std::uint64_t> status_handles_;
-  std::map<std::uint64_t, Pending> pending_;
-  std::uint64_t sequence_ = 0;
-  std::size_t round_robin_ = 0;
-  ClientCounters counters_;
-  bool closing_ = false;
-  std::thread receiver_;
+  std::unique_ptr<ClientCore> core_;
 };
-
-// ---- implementation of the templates ----------------------------------------------------------
-
-struct Client::Pending {
-  protocol::Calculation calculation{};
-  std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
-  Clock::time_point deadline;
-  Clock::time_point resend_at;  ///< when instance == 0: not before this
-  std::function<dds_return_t(dds_entity_t writer)> write;
-  std::function<void(const void* wire_reply)> deliver;
-  std::function<void(std::exception_ptr)> fail;
-};
-
-template <protocol::Calculation kCalculation>
-void Client::call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
-                       Callback<kCalculation> done) {
-  using T = protocol::CalculationTraits<kCalculation>;
-  using Result = typename T::Result;
-  auto sample = std::make_shared<protocol::OwnedSample<typename T::WireRequest>>(T::request_type());
-  protocol::to_wire(request, sample->get());
-  const std::uint64_t sequence = next_sequence();
-  sample->get().correlation.client_id = client_id_;
-  sample->get().correlation.sequence_number = sequence;
-
-  auto callback = std::make_shared<Callback<kCalculation>>(std::move(done));
-  Pending pending;
-  pending.calculation = kCalculation;
-  pending.deadline = Clock::now() + options_.timeout;
-  pending.write = [sample](dds_entity_t writer) { return dds_write(writer, &sample->get()); };
-  pending.deliver = [callback](const void* wire) {
-    const auto& reply = *static_cast<const typename T::WireReply*>(wire);
-    Outcome<Result> outcome;
-    try {
-      if (reply.status != gearcoupling_STATUS_OK) {
-        throw_reply_error(reply.status, reply.field, reply.message);
-      }
-      outcome.result = protocol::from_wire(reply.result);
-    } catch (...) {
-      outcome.error = std::current_exception();
-    }
-    (*callback)(std::move(outcome));
-  };
-  pending.fail = [callback](std::exception_ptr error) { (*callback)({std::nullopt, error}); };
-  send(sequence, std::move(pending));
-}
-
-template <protocol::Calculation kCalculation>
-std::future<typename protocol::CalculationTraits<kCalculation>::Result> Client::call_async(
-    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
-  using Result = typename protocol::CalculationTraits<kCalculation>::Result;
-  auto promise = std::make_shared<std::promise<Result>>();
-  std::future<Result> future = promise->get_future();
-  call_then<kCalculation>(request, [promise](Outcome<Result> outcome) {
-    if (outcome.error) {
-      promise->set_exception(outcome.error);
-    } else {
-      promise->set_value(std::move(*outcome.result));
-    }
-  });
-  return future;
-}
 
 }  // namespace gc::client

@@ -1,9 +1,11 @@
 #include "core/diagnosis/verdict_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "core/diagnosis/diagnose.h"
+#include "core/engineering_text.h"
 #include "core/effects/expression_terms.h"
 
 namespace gc {
@@ -22,8 +24,8 @@ std::string channels(const Eigen::Vector2d& reduction) {
 }
 
 std::string noise_text(const DiagnosisRound& round) {
-  return "RMSE " + short_number(round.rmse_nm) + " N·m against a noise estimate of " +
-         short_number(round.noise.pooled_sigma_nm()) + " N·m (lag-1 autocorrelation " + short_number(round.noise.phi.maxCoeff()) + ")";
+  return "RMSE " + engineering_text(round.rmse_nm, "N·m") + " against a noise estimate of " +
+         engineering_text(round.noise.pooled_sigma_nm(), "N·m") + " (lag-1 autocorrelation " + short_number(round.noise.phi.maxCoeff()) + ")";
 }
 
 /// "c1 [formula1] + c2 [formula2]" with units and standard errors, then the mechanisms.
@@ -31,9 +33,10 @@ std::string formula_text(const EffectFit& fit) {
   std::string text, mechanisms;
   for (const ParameterEstimate& p : fit.parameters) {
     const ExpressionTerm* term = find_expression_term(p.name);
-    text += (text.empty() ? "" : " + ") + short_number(p.value);
-    if (p.standard_error) text += " (+/- " + short_number(*p.standard_error) + ")";
-    text += " " + p.unit + " x " + (term ? term->formula : p.name) + " [" + p.name + "]";
+    const double reference = std::max(std::abs(p.value), p.standard_error.value_or(0.0));
+    text += (text.empty() ? "" : " + ") + engineering_text(p.value, p.unit, reference);
+    if (p.standard_error) text += " (+/- " + engineering_text(*p.standard_error, p.unit, reference) + ")";
+    text += " x " + (term ? term->formula : p.name) + " [" + p.name + "]";
     if (term) mechanisms += (mechanisms.empty() ? "" : " | ") + p.name + ": " + term->mechanisms;
   }
   return "(M_sy', M_sz') += " + text + ". Such terms usually mean: " + mechanisms;
@@ -44,8 +47,8 @@ std::string formula_text(const EffectFit& fit) {
 std::string rival_formula_text(const DiagnosisRound& round) {
   if (!round.formula || round.formula_chosen || round.ranking.empty() || !round.formula->fit) return "";
   if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm) return "";
-  return " A formula of physical terms does as well on held-out data (RMSE " + short_number(round.formula->held_out_rmse_nm) +
-         " N·m), another reading of the same residual: " + formula_text(*round.formula->fit) + ".";
+  return " A formula of physical terms does as well on held-out data (RMSE " + engineering_text(round.formula->held_out_rmse_nm, "N·m") +
+         "), another reading of the same residual: " + formula_text(*round.formula->fit) + ".";
 }
 
 std::string dropped_text(const DiagnosisRound& round) {
@@ -67,9 +70,9 @@ std::string signature_text(const ResidualSignature& signature) {
       low_z = std::min(low_z, b.mean_z_nm); high_z = std::max(high_z, b.mean_z_nm);
     }
     text << (shown++ ? "; then " : "") << s.input << " (given the other inputs, its bin means carry "
-         << percent(s.explained_share) << " of the residual; Msy' " << short_number(low_y) << " to " << short_number(high_y)
-         << " N·m, Msz' " << short_number(low_z) << " to " << short_number(high_z) << " N·m; trend "
-         << short_number(s.slope_y) << " and " << short_number(s.slope_z) << " N·m per " << s.unit;
+         << percent(s.explained_share) << " of the residual; Msy' " << engineering_range(low_y, high_y, "N·m")
+         << ", Msz' " << engineering_range(low_z, high_z, "N·m") << "; trend "
+         << engineering_text(s.slope_y, "N·m") << " and " << engineering_text(s.slope_z, "N·m") << " per " << s.unit;
     for (const std::string& other : s.confounded_with) {
       text << "; it moves with " << other << " on this recording, which cannot tell the two apart";
     }
@@ -79,8 +82,10 @@ std::string signature_text(const ResidualSignature& signature) {
 }
 
 std::string gain_text(const DiagnosisRound& round, const CandidateScore& c) {
-  return "held-out RMSE falls " + percent(c.reduction) + " (" + short_number(round.search_base_rmse_nm) + " to " +
-         short_number(c.held_out_rmse_nm) + " N·m; noise " + short_number(round.noise.pooled_sigma_nm()) + " N·m)";
+  return "held-out RMSE falls " + percent(c.reduction) + " (" +
+         engineering_text(round.search_base_rmse_nm, "N·m") + " to " +
+         engineering_text(c.held_out_rmse_nm, "N·m", round.search_base_rmse_nm) + "; noise " +
+         engineering_text(round.noise.pooled_sigma_nm(), "N·m", round.search_base_rmse_nm) + ")";
 }
 
 }  // namespace
@@ -95,9 +100,9 @@ std::string short_number(double value) {
 std::string fitted_parameters_text(const EffectFit& fit) {
   std::string text;
   for (const ParameterEstimate& p : fit.parameters) {
-    text += (text.empty() ? "" : ", ") + p.name + " = " + short_number(p.value);
-    if (p.standard_error) text += " (+/- " + short_number(*p.standard_error) + ")";
-    if (p.unit != "-") text += " " + p.unit;
+    const double reference = std::max(std::abs(p.value), p.standard_error.value_or(0.0));
+    text += (text.empty() ? "" : ", ") + p.name + " = " + engineering_text(p.value, p.unit, reference);
+    if (p.standard_error) text += " (+/- " + engineering_text(*p.standard_error, p.unit, reference) + ")";
     if (p.held) text += " [held: " + p.note + "]";
     else if (!p.note.empty()) text += " [" + p.note + "]";
   }

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "core/engineering_text.h"
+
 namespace gc {
 namespace {
 
@@ -118,12 +120,12 @@ std::string describe_region(const RegionError& r) {
   const ErrorBin& bin = r.region;
   switch (r.dimension) {
     case BinDimension::torque:
-      return level_word(r.position, "low", "medium", "high") + " torque" +
-             printf_string(" (%.2f-%.2f MN·m)", bin.seen_min / 1e6, bin.seen_max / 1e6);
+      return level_word(r.position, "low", "medium", "high") + " torque (" +
+             engineering_range(bin.seen_min, bin.seen_max, "N·m") + ")";
     case BinDimension::misalignment:
-      return level_word(r.position, "small", "medium", "large") + " misalignment" +
-             printf_string(" (%.3f-%.3f deg)", bin.seen_min * kDegreesPerRadian,
-                           bin.seen_max * kDegreesPerRadian);
+      return level_word(r.position, "small", "medium", "large") + " misalignment (" +
+             engineering_range(bin.seen_min * kDegreesPerRadian, bin.seen_max * kDegreesPerRadian,
+                               "deg") + ")";
     case BinDimension::direction:
       return "misalignment direction" +
              printf_string(" %.0f to %.0f deg", bin.lower * kDegreesPerRadian,
@@ -133,20 +135,20 @@ std::string describe_region(const RegionError& r) {
              : bin.seen_max < -0.5 ? "falling misalignment"
                                    : "steady misalignment";
     case BinDimension::time:
-      return printf_string("time %.4g-%.4g s", bin.seen_min, bin.seen_max);
+      return "time " + engineering_range(bin.seen_min, bin.seen_max, "s");
   }
   return "";
 }
 
-std::string describe(const RegionError& r, double reference_torque_nm) {
-  char numbers[256];
-  std::snprintf(numbers, sizeof numbers,
-                ": bias %+.1f kN·m, RMSE %.1f kN·m (%.2f %% of T_ref) in %zu samples, against "
-                "%.1f kN·m overall",
-                r.metrics.bias_nm / 1e3, r.metrics.rmse_nm / 1e3,
-                100.0 * r.metrics.rmse_nm / reference_torque_nm, r.metrics.count,
-                r.overall.rmse_nm / 1e3);
-  return std::string(to_string(r.channel)) + " errs most at " + describe_region(r) + numbers;
+std::string describe(const RegionError& r) {
+  // Bias and both RMSEs under one prefix, read side by side.
+  const double reference = std::max(r.metrics.rmse_nm, r.overall.rmse_nm);
+  return std::string(to_string(r.channel)) + " errs most at " + describe_region(r) + ": bias " +
+         (r.metrics.bias_nm >= 0.0 ? "+" : "") +
+         engineering_text(r.metrics.bias_nm, "N·m", reference) + ", RMSE " +
+         engineering_text(r.metrics.rmse_nm, "N·m", reference) + " in " +
+         std::to_string(r.metrics.count) + " samples, against " +
+         engineering_text(r.overall.rmse_nm, "N·m", reference) + " overall";
 }
 
 }  // namespace gc

@@ -46,9 +46,10 @@ struct ErrorSignature {
 };
 ErrorSignature error_signature(const ValidationAccumulator& validation, Channel channel);
 
-/// One sentence naming the region in words, with its bias and RMSE in kN·m and % of T_ref.
-std::string describe(const RegionError& region, double reference_torque_nm);
-/// The region alone, e.g. "low torque (0.15-0.30 MN·m)", "rising misalignment".
+/// One sentence naming the region in words, with its bias and RMSE in engineering units
+/// (core/engineering_text.h), e.g. "bias +18.2 kN·m, RMSE 20.4 kN·m".
+std::string describe(const RegionError& region);
+/// The region alone, e.g. "low torque (150-300 kN·m)", "rising misalignment".
 std::string describe_region(const RegionError& region);
 
 }  // namespace gc

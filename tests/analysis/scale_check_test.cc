@@ -38,6 +38,10 @@ TEST(MomentScale, WarnsForTheChannelAThousandTimesTheModel) {
   EXPECT_NE(warnings[0].find("M_sy'"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("too large by about 1000"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("msy column"), std::string::npos) << warnings[0];
+  // Both RMS values in engineering notation: the measured in MN·m, the model's in kN·m.
+  EXPECT_NE(warnings[0].find(" MN·m is "), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("the model paper's 11.6 kN·m"), std::string::npos) << warnings[0];
+  EXPECT_EQ(warnings[0].find("e+"), std::string::npos) << warnings[0];
 }
 
 TEST(MomentScale, QuietForAModelWithinNoise) {

@@ -66,8 +66,9 @@ TEST(Flags, RejectsUnknownRepeatedMissingAndValuelessFlags) {
   EXPECT_STREQ(parse_error({"--torque-nm", "1", "--speed", "2"}).what(),
                "unknown flag --speed (see --help)");
   EXPECT_STREQ(parse_error({"torque", "1"}).what(), "unexpected argument 'torque'");
-  EXPECT_NE(std::string(parse_error({"--torque-nm", "1", "--torque-nm", "2"}).what()), "");
-  EXPECT_NE(std::string(parse_error({"--torque-nm"}).what()).find("torque-nm"), std::string::npos);
+  EXPECT_STREQ(parse_error({"--torque-nm", "1", "--torque", "2"}).what(),
+               "--torque-nm given 2 times (at most once)");
+  EXPECT_STREQ(parse_error({"--torque-nm"}).what(), "--torque-nm: 1 required N·m missing");
   EXPECT_STREQ(parse_error({"--direction-deg", "3"}).what(), "--torque-nm is required (torque)");
 }
 

@@ -44,6 +44,14 @@ TEST(DiagnoseCli, FindsTheBundledHiddenEccentricityAndThenOnlyNoise) {
   EXPECT_NEAR(parameter(result.rounds(0).claimed(), "gravity_direction_rad"), std::numbers::pi / 2, 0.05);
   EXPECT_EQ(result.rounds(1).outcome(), "noise");
   EXPECT_NEAR(result.rounds(1).rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+  // The ready-to-paste --add, with the fitted values, brings validate to the noise level.
+  ASSERT_EQ(result.add_flags_size(), 1);
+  EXPECT_EQ(result.add_flags(0).rfind("eccentricity=eccentric_misalignment_rad=", 0), 0u)
+      << result.add_flags(0);
+  const auto validated = parse<gearcoupling::v1::ValidationResult>(run_gearcoupling(
+      {"validate", "--data", kHidden, "--model", "paper", "--add", result.add_flags(0), "--json"}));
+  ASSERT_EQ(validated.models_size(), 2);
+  EXPECT_NEAR(validated.models(1).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
 }
 
 TEST(DiagnoseCli, TerminalVerdictNamesTheEffectAndTheFall) {
@@ -52,6 +60,33 @@ TEST(DiagnoseCli, TerminalVerdictNamesTheEffectAndTheFall) {
   EXPECT_NE(run.out.find("is explained by eccentricity"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("held-out RMSE falls"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("the residual is noise"), std::string::npos) << run.out;
+  // Fitted values in engineering notation, the standard error under the value's prefix.
+  EXPECT_NE(run.out.find("eccentric_misalignment_rad = 1."), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(" mrad +/- 0."), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("e+0"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("To validate with it: gearcoupling validate --data " + kHidden +
+                         " --model paper --add eccentricity=eccentric_misalignment_rad="),
+            std::string::npos)
+      << run.out;
+}
+
+TEST(ValidateAddCli, AnEffectTheModelHasIsRefusedWhenUnchangedAndNotedWhenReplaced) {
+  // data/models/paper.textproto has friction with mu0 = 0.1.
+  const ProcessResult same = run_gearcoupling(
+      {"validate", "--data", kHidden, "--model", "paper", "--add", "friction=mu0=0.1"});
+  EXPECT_EQ(same.exit_code, 2);
+  EXPECT_NE(same.err.find("model paper already has friction with these parameters"),
+            std::string::npos) << same.err;
+  const ProcessResult other = run_gearcoupling(
+      {"validate", "--data", kHidden, "--model", "paper", "--add", "friction=mu0=0.12", "--json"});
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.err.find("note: model paper already has friction (friction=mu0=0.1"),
+            std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("--add replaces it with friction=mu0=0.12"), std::string::npos)
+      << other.err;
+  const auto result = parse<gearcoupling::v1::ValidationResult>(other);
+  ASSERT_EQ(result.models_size(), 2);
+  EXPECT_EQ(result.models(1).model(), "paper, friction replaced");
 }
 
 TEST(DiagnoseCli, ClaimsNothingOnARecordingOfTheModelItself) {

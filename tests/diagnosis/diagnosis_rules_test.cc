@@ -226,7 +226,7 @@ TEST(DiagnosisRules, AddsAnEffectOnThePapersFormAndThenFreesItsShape) {
   EXPECT_EQ(d.rounds[0].chosen().kind, CandidateKind::addition);
   EXPECT_EQ(d.rounds[0].claimed->info->name, "eccentricity");
   EXPECT_EQ(d.rounds[0].claimed->effect->value("fade_sharpness"), 1.0);
-  EXPECT_NE(d.summary.find("fade_sharpness = 1 [held: a shape, held at its default until the effect is refined]"),
+  EXPECT_NE(d.summary.find("fade_sharpness = 1.00 [held: a shape, held at its default until the effect is refined]"),
             std::string::npos);
   ASSERT_TRUE(d.rounds[1].claimed.has_value());
   EXPECT_EQ(d.rounds[1].chosen().kind, CandidateKind::refinement);

@@ -45,11 +45,14 @@ for file in usr/bin/gearcoupling usr/bin/gearcoupling-service usr/bin/gearcoupli
     usr/share/gearcoupling/models/paper.textproto \
     usr/share/gearcoupling/deploy/cyclonedds-lan.example.xml \
     usr/share/gearcoupling/deploy/security/make-security.sh \
-    usr/include/gearcoupling/clients/remote/client.h usr/include/gearcoupling/gearcoupling.h \
+    usr/include/gearcoupling/clients/remote/client.h \
+    usr/share/bash-completion/completions/gearcoupling \
     usr/include/gearcoupling/core/jam_angle.h usr/include/gearcoupling/idl/coupling.pb.h \
     usr/share/doc/gearcoupling/deploy.md; do
   [ -e "$root/$file" ] || fail "missing /$file"
 done
+# The client's header needs no Cyclone header and nothing idlc generated (docs/deploy.md).
+[ ! -e "$root/usr/include/gearcoupling/gearcoupling.h" ] || fail "idlc's gearcoupling.h is packaged"
 for name in core codec client; do
   [ "$(readlink "$libdir/libgearcoupling-$name.so.0")" = "libgearcoupling-$name.so.0.1.0" ] ||
     fail "libgearcoupling-$name.so.0 is not the versioned library"

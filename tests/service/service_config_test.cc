@@ -65,6 +65,32 @@ TEST(ServiceConfig, VersionAndHelp) {
   EXPECT_EQ(usage.find("--catalog "), std::string::npos) << usage;
 }
 
+// What bash completes after sourcing the script, for `words` with the cursor on the last.
+std::string complete(const std::string& words, int current) {
+  const std::string path = "/tmp/gc_service_completion_" + std::to_string(getpid()) + ".bash";
+  std::ofstream(path) << service_bash_completion();
+  const std::string command = "bash -c 'source " + path + " && COMP_WORDS=(" + words +
+                              ") && COMP_CWORD=" + std::to_string(current) +
+                              " && _gearcoupling_service && printf \"%s \" \"${COMPREPLY[@]}\"'";
+  std::string out;
+  if (std::FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+    pclose(pipe);
+  }
+  std::remove(path.c_str());
+  return out;
+}
+
+TEST(ServiceConfig, BashCompletionCompletesFlagsAndLevels) {
+  EXPECT_TRUE(parse_service_command({"--bash-completion"}).bash_completion);
+  EXPECT_EQ(complete("gearcoupling-service --dead", 1), "--deadline-s ");
+  EXPECT_EQ(complete("gearcoupling-service --ja", 1), "");  // -j/--jobs is --jobs
+  EXPECT_EQ(complete("gearcoupling-service --jo", 1), "--jobs ");
+  EXPECT_EQ(complete("gearcoupling-service --catalog", 1), "--catalogue ");
+  EXPECT_EQ(complete("gearcoupling-service --log-level de", 2), "debug ");
+}
+
 TEST(ServiceConfig, BundledDeployFileParses) {
   const ServiceCommand command =
       parse_service_command({"--config", GC_SOURCE_DIR "/deploy/service.conf"});

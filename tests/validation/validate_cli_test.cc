@@ -77,7 +77,13 @@ TEST(ValidateCli, TerminalSummaryNamesTheLowTorqueRegionOfTheHiddenEccentricity)
   const ProcessResult run = run_gearcoupling(
       {"validate", "--data", kRecordings + "/hidden_eccentricity_torque_ramp.csv", "--model", "paper"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.out.find("M_sy' errs most at low torque"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("M_sy' errs most at low torque ("), std::string::npos) << run.out;
+  // Engineering units throughout: kN·m columns and regions, no % of T_ref, no exponents.
+  EXPECT_NE(run.out.find("reference torque T_ref 1.50 MN·m"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("RMSE [kN·m]"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("T_ref]"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("of T_ref"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("e+0"), std::string::npos) << run.out;
 }
 
 TEST(ValidateCli, SamplesBeyondTheJamAngleAreCountedNotDropped) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 
+#include <regex>
+
 #include <gtest/gtest.h>
 
 #include "core/restoring_torque.h"
@@ -116,11 +118,17 @@ TEST(Validation, HiddenEccentricityIsNamedAtTorquesBelowTheRestoringTorque) {
   const double t_m = restoring_torque(paper.model.geometry()).torque_nm;
   const std::vector<RegionError> regions = worst_regions(v, Channel::y);
   ASSERT_FALSE(regions.empty());
-  EXPECT_EQ(regions.front().dimension, BinDimension::torque) << describe(regions.front(), 1.5e6);
+  EXPECT_EQ(regions.front().dimension, BinDimension::torque) << describe(regions.front());
   EXPECT_LT(regions.front().region.seen_max, t_m);
   EXPECT_GT(regions.front().contrast, 1.5);
-  EXPECT_NE(describe(regions.front(), 1.5e6).find("M_sy' errs most at low torque"), std::string::npos)
-      << describe(regions.front(), 1.5e6);
+  EXPECT_NE(describe(regions.front()).find("M_sy' errs most at low torque"), std::string::npos)
+      << describe(regions.front());
+  // Engineering units, one prefix for bias and RMSEs, no % of T_ref, no exponents.
+  const std::string text = describe(regions.front());
+  EXPECT_TRUE(std::regex_search(text, std::regex(
+      R"(low torque \([0-9.]+-[0-9.]+ [kM]N·m\): bias [+-][0-9.]+ kN·m, RMSE [0-9.]+ kN·m in [0-9]+ samples, against [0-9.]+ kN·m overall$)")))
+      << text;
+  EXPECT_EQ(text.find("e+"), std::string::npos) << text;
   for (const ErrorBin& bin : v.binning(BinDimension::torque).bins()) {
     if (bin.errors.count() < 50 || bin.seen_min < t_m) continue;
     EXPECT_LT(bin.errors.y.metrics().rmse_nm, 1.2 * sigma) << bin.seen_min;
@@ -146,7 +154,7 @@ TEST(Validation, FrictionRisingWithMisalignmentIsNamedAtLargeMisalignment) {
       return r.dimension == BinDimension::misalignment;
     });
     ASSERT_NE(misalignment, regions.end());
-    EXPECT_GT(misalignment->position, 2.0 / 3.0) << describe(*misalignment, 1.5e6);
+    EXPECT_GT(misalignment->position, 2.0 / 3.0) << describe(*misalignment);
     EXPECT_GT(misalignment->contrast, 1.5);
   }
 }

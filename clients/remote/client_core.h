@@ -1,0 +1,194 @@
+// The implementation of gc::client::Client (clients/remote/client.h, the public API and its
+// documentation): DDS entities, discovery, pending requests. Not installed.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "clients/remote/client_error.h"
+#include "clients/remote/client_types.h"
+#include "clients/remote/reply_error.h"
+#include "protocol/calculation_traits.h"
+#include "protocol/dds_entity.h"
+#include "protocol/requests.h"
+#include "protocol/samples.h"
+#include "protocol/wire_requests.h"
+#include "protocol/wire_results.h"
+
+namespace gc::client {
+
+class ClientCore {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// Joins the domain and starts discovering instances. Throws protocol::DdsError.
+  explicit ClientCore(ClientOptions options);
+  /// Fails the pending requests with ClientClosed and leaves the domain.
+  ~ClientCore();
+  ClientCore(const ClientCore&) = delete;
+  ClientCore& operator=(const ClientCore&) = delete;
+
+  template <protocol::Calculation kCalculation>
+  using Callback =
+      std::function<void(Outcome<typename protocol::CalculationTraits<kCalculation>::Result>)>;
+
+  /// Sends `request` (waiting, like call_async, for a ready instance) and returns; `done` is
+  /// called once with the result or the error: in Cyclone's receive thread as the reply arrives
+  /// (no thread hand-off, as in ddsperf's listener mode), in this client's own thread for a
+  /// timeout or ClientClosed, or before call_then returns when no instance was ready in time.
+  /// It must not block or throw. It may send the next request of a calculation that has just
+  /// been answered (an instance is ready, so that send does not wait for discovery).
+  template <protocol::Calculation kCalculation>
+  void call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
+                 Callback<kCalculation> done);
+
+  /// Sends `request` and returns at once; the future holds the result or the error.
+  template <protocol::Calculation kCalculation>
+  std::future<typename protocol::CalculationTraits<kCalculation>::Result> call_async(
+      const typename protocol::CalculationTraits<kCalculation>::Request& request);
+
+  /// call_async(request).get(): the result, or throws the error. The caller sleeps in the
+  /// future (a futex) and never spins: a sleeping thread keeps the scheduler's wake-up
+  /// preference, so on a busy host the reply wakes it ahead of CPU hogs.
+  template <protocol::Calculation kCalculation>
+  typename protocol::CalculationTraits<kCalculation>::Result call(
+      const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+    return call_async<kCalculation>(request).get();
+  }
+
+  /// Waits until some instance is ready to take `calculation`; false at `timeout`.
+  bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
+  /// Live instances known from the status topic.
+  std::vector<InstanceInfo> instances() const;
+  /// The definition of catalogue coupling `name` as a live instance announces it; nullopt when
+  /// no known instance serves that name.
+  std::optional<CouplingDefinition> catalogue_definition(const std::string& name) const;
+  ClientCounters counters() const;
+  std::uint64_t client_id() const { return client_id_; }
+  const ClientOptions& options() const { return options_; }
+
+ private:
+  struct Pending;
+  struct Instance;
+
+  /// Registers `pending` under a new sequence number and sends it (waiting for a ready instance
+  /// until its deadline). `write` writes the request sample with that sequence number.
+  void send(std::uint64_t sequence, Pending pending);
+  /// The error for a reply reader DDS Security refused (a client id prefix not this identity's).
+  protocol::DdsError reply_reader_refused(dds_return_t code) const;
+  std::uint64_t next_sequence();
+  /// A request writer or reply reader matched or lost a peer: wake the callers waiting for a
+  /// ready instance.
+  void matching_changed();
+  void receive_loop();
+  template <protocol::Calculation kCalculation>
+  void take_replies(dds_entity_t reader);
+  /// Creates `calculation`'s reply reader and request writers on its first use. A client makes
+  /// only the endpoints it uses (rule 2 of docs/protocol.md), and the service a reply writer
+  /// only for those: with a hundred clients discovering at once every endpoint counts, since
+  /// each is announced to every participant (docs/benchmarks.md, "Discovery at scale").
+  void use_locked(protocol::Calculation calculation);
+  void create_request_writer_locked(Instance& instance, std::size_t calculation_index);
+  void take_status();
+  /// Fails requests past their deadline and sends orphaned ones (instance gone) to another.
+  void maintain();
+  Instance* pick_ready_locked(protocol::Calculation calculation);
+  bool ready_locked(Instance& instance, protocol::Calculation calculation);
+
+  ClientOptions options_;
+  std::uint64_t client_id_;
+  protocol::Entity participant_;
+  std::array<protocol::Entity, 5> request_topics_;
+  std::array<protocol::Entity, 5> reply_topics_;
+  protocol::Entity status_topic_;
+  protocol::Entity reply_subscriber_;
+  std::array<protocol::Entity, 5> reply_readers_;  ///< created on first use (use_locked)
+  protocol::Entity status_subscriber_;
+  protocol::Entity status_reader_;
+  protocol::Entity guard_;
+  protocol::Entity waitset_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable instances_changed_;
+  std::map<std::uint64_t, std::unique_ptr<Instance>> instances_;
+  std::map<dds_instance_handle_t, std::uint64_t> status_handles_;
+  std::map<std::uint64_t, Pending> pending_;
+  std::uint64_t sequence_ = 0;
+  std::size_t round_robin_ = 0;
+  ClientCounters counters_;
+  bool closing_ = false;
+  std::thread receiver_;
+};
+
+// ---- implementation of the templates ----------------------------------------------------------
+
+struct ClientCore::Pending {
+  protocol::Calculation calculation{};
+  std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
+  Clock::time_point deadline;
+  Clock::time_point resend_at;  ///< when instance == 0: not before this
+  std::function<dds_return_t(dds_entity_t writer)> write;
+  std::function<void(const void* wire_reply)> deliver;
+  std::function<void(std::exception_ptr)> fail;
+};
+
+template <protocol::Calculation kCalculation>
+void ClientCore::call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
+                       Callback<kCalculation> done) {
+  using T = protocol::CalculationTraits<kCalculation>;
+  using Result = typename T::Result;
+  auto sample = std::make_shared<protocol::OwnedSample<typename T::WireRequest>>(T::request_type());
+  protocol::to_wire(request, sample->get());
+  const std::uint64_t sequence = next_sequence();
+  sample->get().correlation.client_id = client_id_;
+  sample->get().correlation.sequence_number = sequence;
+
+  auto callback = std::make_shared<Callback<kCalculation>>(std::move(done));
+  Pending pending;
+  pending.calculation = kCalculation;
+  pending.deadline = Clock::now() + options_.timeout;
+  pending.write = [sample](dds_entity_t writer) { return dds_write(writer, &sample->get()); };
+  pending.deliver = [callback](const void* wire) {
+    const auto& reply = *static_cast<const typename T::WireReply*>(wire);
+    Outcome<Result> outcome;
+    try {
+      if (reply.status != gearcoupling_STATUS_OK) {
+        throw_reply_error(reply.status, reply.field, reply.message);
+      }
+      outcome.result = protocol::from_wire(reply.result);
+    } catch (...) {
+      outcome.error = std::current_exception();
+    }
+    (*callback)(std::move(outcome));
+  };
+  pending.fail = [callback](std::exception_ptr error) { (*callback)({std::nullopt, error}); };
+  send(sequence, std::move(pending));
+}
+
+template <protocol::Calculation kCalculation>
+std::future<typename protocol::CalculationTraits<kCalculation>::Result> ClientCore::call_async(
+    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
+  using Result = typename protocol::CalculationTraits<kCalculation>::Result;
+  auto promise = std::make_shared<std::promise<Result>>();
+  std::future<Result> future = promise->get_future();
+  call_then<kCalculation>(request, [promise](Outcome<Result> outcome) {
+    if (outcome.error) {
+      promise->set_exception(outcome.error);
+    } else {
+      promise->set_value(std::move(*outcome.result));
+    }
+  });
+  return future;
+}
+
+}  // namespace gc::client
