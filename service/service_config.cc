@@ -4,11 +4,13 @@
 #include <sstream>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 #include <spdlog/common.h>
 
 #include "core/model_error.h"
+#include "protocol/domain_id.h"
 #include "service/service_config.pb.h"
 
 namespace gc::service {
@@ -76,8 +78,9 @@ void declare_flags(CLI::App& app, ServiceCommand& command) {
       "settings in protobuf text format (service/service_config.proto); flags override it")
       ->type_name("FILE");
   app.add_option("--domain", c.domain,
-                 "DDS domain id, 0..232; the network comes from the Cyclone XML named by "
-                 "CYCLONEDDS_URI (deploy/cyclonedds-loopback.xml)")
+                 fmt::format("DDS domain id, 0..{}; the network comes from the Cyclone XML named by "
+                             "CYCLONEDDS_URI (deploy/cyclonedds-loopback.xml)",
+                             protocol::kMaxDomainId))
       ->type_name("N")->capture_default_str();
   app.add_option("-j,--jobs,--threads", c.threads,
                  "worker threads, 0 = one per core, 0..1024 (--threads: the older spelling)")
@@ -140,7 +143,9 @@ ServiceCommand parse_service_command(const std::vector<std::string>& args) {
 }
 
 void validate(const ServiceConfig& c) {
-  if (c.domain < 0 || c.domain > 232) throw InvalidInput("domain", c.domain, "[0, 232]");
+  if (c.domain < 0 || c.domain > protocol::kMaxDomainId) {
+    throw InvalidInput("domain", c.domain, fmt::format("[0, {}]", protocol::kMaxDomainId));
+  }
   if (c.threads > 1024) throw InvalidInput("threads", c.threads, "[0, 1024]; 0 = one per core");
   if (spdlog::level::from_str(c.log_level) == spdlog::level::off && c.log_level != "off") {
     throw InvalidInput("log_level", "\"" + c.log_level +

@@ -8,7 +8,7 @@
 namespace gc::service {
 
 struct ServiceConfig {
-  int domain = 0;                     ///< DDS domain id, [0, 232]
+  int domain = 0;                     ///< DDS domain id, [0, protocol::kMaxDomainId]
   unsigned threads = 0;               ///< workers; 0 = one per core
   std::string catalogue_dir;          ///< "" = codec::default_catalog_dir()
   std::string log_level = "info";     ///< spdlog level: trace, debug, info, warn, error, off

@@ -5,6 +5,7 @@
 #include "clients/cli/subcommand.h"
 #include "codec/coupling_catalog.h"
 #include "codec/result_json.h"
+#include "protocol/domain_id.h"
 
 namespace gc::cli {
 
@@ -14,7 +15,11 @@ FlagSpec catalogue_flag() {
           codec::default_catalog_dir().string()};
 }
 
-FlagSpec domain_flag(std::string help) { return {"domain", "N", std::move(help), "0"}; }
+FlagSpec domain_flag(std::string help) {
+  return {"domain", "N", help + ", 0.." + std::to_string(protocol::kMaxDomainId), "0"};
+}
+
+int domain_from(const Flags& flags) { return flags.integer("domain", 0, protocol::kMaxDomainId); }
 
 FlagSpec json_flag() {
   return {"json", "", "print the result as JSON (field names carry their units)", std::nullopt,
@@ -30,7 +35,7 @@ std::vector<FlagSpec> calculator_flags(bool json) {
       catalogue_flag(),
       {"remote", "", "compute on gearcoupling-service over DDS (CYCLONEDDS_URI) instead of here",
        std::nullopt, true},
-      domain_flag("DDS domain of the service, with --remote, 0..232"),
+      domain_flag("DDS domain of the service, with --remote"),
       {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
        '\0', {"timeout"}},
       {"client-id-prefix", "HEX8",
@@ -57,7 +62,7 @@ std::vector<FlagSpec> refused_calculator_flags(std::string_view subcommand) {
 }
 
 FlagSpec live_domain_flag() {
-  return {"domain", "N", "DDS domain of the live test cell (CYCLONEDDS_URI), 0..232", "0"};
+  return domain_flag("DDS domain of the live test cell (CYCLONEDDS_URI)");
 }
 
 void append(std::vector<FlagSpec>& flags, std::vector<FlagSpec> more) {

@@ -7,6 +7,7 @@
 #include "clients/cli/in_process_calculator.h"
 #if GC_CLI_REMOTE
 #include "clients/cli/remote_calculator.h"
+#include "clients/cli/subcommand.h"
 #endif
 
 namespace gc::cli {
@@ -34,7 +35,7 @@ std::unique_ptr<Calculator> make_calculator(const Flags& flags) {
   if (!flags.enabled("remote")) return std::make_unique<InProcessCalculator>(flags.text("catalogue"));
 #if GC_CLI_REMOTE
   client::ClientOptions options;
-  options.domain = flags.integer("domain", 0, 232);
+  options.domain = domain_from(flags);
   const double timeout_s = flags.number("timeout-s");
   if (!(timeout_s > 0.0 && timeout_s <= 3600.0)) {
     throw UsageError("--timeout-s " + flags.text("timeout-s") + ": seconds in (0, 3600]");

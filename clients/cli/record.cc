@@ -21,7 +21,7 @@ std::vector<FlagSpec> record_flags() {
 }
 
 int run_record(const Flags& flags, const Calculator&, std::FILE* out) {
-  const protocol::Entity participant = live::make_participant(flags.integer("domain", 0, 232));
+  const protocol::Entity participant = live::make_participant(domain_from(flags));
   const live::Capture capture = live::capture_measurements(
       participant.get(), {flags.text("test-cell"), flags.number("seconds")});
   if (capture.refused > 0) {

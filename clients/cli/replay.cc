@@ -38,7 +38,7 @@ int run_replay(const Flags& flags, const Calculator&, std::FILE* out) {
   options.wait_s = flags.number("wait-s");
   options.wait_for_readers = static_cast<std::uint32_t>(flags.integer("readers", 0, 1000));
   options.recording.renames = column_renames(flags);
-  const protocol::Entity participant = live::make_participant(flags.integer("domain", 0, 232));
+  const protocol::Entity participant = live::make_participant(domain_from(flags));
   const live::ReplayResult result = live::replay_recording(participant.get(), flags.text("in"), options);
   fmt::print(out, "replayed {} samples of {} as test cell {} in {:.3f} s (run {:016x})\n",
              result.published, flags.text("in"), options.test_cell, result.seconds, result.run_id);

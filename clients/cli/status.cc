@@ -16,7 +16,7 @@ std::vector<FlagSpec> status_flags() {
   FlagSpec catalogue = catalogue_flag();
   catalogue.refused = "not taken by status: it shows the instances' own catalogues";
   return {
-      domain_flag("DDS domain to report on, 0..232 (the network: CYCLONEDDS_URI)"),
+      domain_flag("DDS domain to report on (the network: CYCLONEDDS_URI)"),
       {"watch", "", "report again every --interval-s until Ctrl-C (or --count reports)",
        std::nullopt, true},
       {"interval-s", "s", "seconds between reports, with --watch, [0.1, 3600]", "1", false, '\0',
@@ -42,7 +42,7 @@ std::chrono::milliseconds seconds_flag(const Flags& flags, std::string_view name
 
 int run_status(const Flags& flags, const Calculator&, std::FILE* out) {
   status::StatusReportOptions options;
-  options.domain = flags.integer("domain", 0, 232);
+  options.domain = domain_from(flags);
   options.json = flags.enabled("json");
   options.watch = flags.enabled("watch");
   options.interval = seconds_flag(flags, "interval-s", 0.1, 3600.0);

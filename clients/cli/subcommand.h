@@ -46,8 +46,10 @@ std::span<const Subcommand* const> subcommands();
 FlagSpec catalogue_flag();
 /// --json: the result as the codec's JSON.
 FlagSpec json_flag();
-/// --domain N: a DDS domain id, 0..232 (default 0), described by `help`.
+/// --domain N: a DDS domain id, 0..protocol::kMaxDomainId (default 0), described by `help`.
 FlagSpec domain_flag(std::string help);
+/// The --domain flag's value; UsageError outside 0..protocol::kMaxDomainId.
+int domain_from(const Flags& flags);
 /// --coupling, --catalogue, --remote, --domain, --timeout-s, --client-id-prefix, and --json
 /// when `json`: the flags of a subcommand that computes on a Calculator (make_calculator.h).
 std::vector<FlagSpec> calculator_flags(bool json = true);

@@ -24,7 +24,7 @@ class Server;
 namespace gc::dashboard {
 
 struct DashboardOptions {
-  int domain = 0;                      ///< DDS domain id [0, 232]
+  int domain = 0;                      ///< DDS domain id [0, protocol::kMaxDomainId]
   std::string listen_host = "127.0.0.1";  ///< localhost only unless asked otherwise
   int listen_port = 8080;              ///< 0: any free port (port() says which)
   /// Live updates to the browser at most this often: 100 ms is 10 updates a second.

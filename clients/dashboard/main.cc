@@ -8,6 +8,7 @@
 
 #include "clients/dashboard/dashboard_server.h"
 #include "parallel/shutdown_signals.h"
+#include "protocol/domain_id.h"
 
 namespace {
 
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
       "the browser, and /metrics for Prometheus (docs/dashboard.md). Reads DDS; writes only the "
       "query panel's requests."};
   app.add_option("--domain", options.domain, "DDS domain id; the network comes from CYCLONEDDS_URI")
-      ->check(CLI::Range(0, 232));
+      ->check(CLI::Range(0, gc::protocol::kMaxDomainId));
   app.add_option("--listen", listen,
                  "ADDR:PORT to serve on; localhost only by default, port 0 picks a free one "
                  "(printed)")

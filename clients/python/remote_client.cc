@@ -250,7 +250,7 @@ void bind_client(py::module_& m) {
                      "$CYCLONEDDS_URI). Same calls and results as in process; thread-safe.")
       .def(py::init([](int domain, double timeout) { return Client{make_client(domain, timeout)}; }),
            py::arg("domain") = 0, py::arg("timeout") = 5.0,
-           "domain: DDS domain id [0, 232]; timeout: longest a call waits for its reply, discovery "
+           "domain: DDS domain id [0, 230]; timeout: longest a call waits for its reply, discovery "
            "included [s].")
       .def("tooth_contact", &tooth_contact, py::arg("coupling"), py::arg("torque_nm"),
            py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu") = 0.0,

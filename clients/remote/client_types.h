@@ -14,7 +14,7 @@
 namespace gc::client {
 
 struct ClientOptions {
-  int domain = 0;  ///< DDS domain id [0, 232]; the network comes from CYCLONEDDS_URI
+  int domain = 0;  ///< DDS domain id [0, 230] (protocol/domain_id.h); the network comes from CYCLONEDDS_URI
   /// Longest a call waits, from the call to its reply, including discovery of a service.
   std::chrono::milliseconds timeout{5000};
   /// With DDS Security: the client_id_prefix of this participant's identity (8 hex digits,

@@ -10,7 +10,7 @@
 namespace gc::status {
 
 struct StatusReportOptions {
-  int domain = 0;  ///< DDS domain id [0, 232]
+  int domain = 0;  ///< DDS domain id [0, protocol::kMaxDomainId]
   bool json = false;
   bool watch = false;
   /// Time to discover the domain before the first report: TRANSIENT_LOCAL brings every live

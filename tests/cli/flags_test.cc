@@ -42,6 +42,18 @@ TEST(CliFlags, CatalogueHasOneSpelling) {
   EXPECT_NE(old.err.find("unknown flag --catalog"), std::string::npos) << old.err;
 }
 
+// One bound for every program (protocol/domain_id.h): 230, where the loopback configuration's
+// ports still fit.
+TEST(CliFlags, DomainIdsStopAt230) {
+  const ProcessResult over =
+      run_gearcoupling({"jam-angle", "--remote", "--domain", "231", "--timeout-s", "0.1"});
+  EXPECT_EQ(over.exit_code, 2);
+  EXPECT_NE(over.err.find("--domain"), std::string::npos) << over.err;
+  EXPECT_NE(over.err.find("230"), std::string::npos) << over.err;
+  const ProcessResult help = run_gearcoupling({"status", "--help"});
+  EXPECT_NE(help.out.find("0..230"), std::string::npos) << help.out;
+}
+
 struct RefusedCase {
   std::vector<std::string> args;
   std::string expected;

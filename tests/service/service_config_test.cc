@@ -99,12 +99,16 @@ TEST(ServiceConfig, BundledDeployFileParses) {
 }
 
 TEST(ServiceConfig, ErrorsNameTheSetting) {
-  try {
-    parse_service_command({"--domain", "500"});
-    FAIL();
-  } catch (const InvalidInput& e) {
-    EXPECT_EQ(e.field(), "domain");
+  for (const char* domain : {"500", "231"}) {
+    try {
+      parse_service_command({"--domain", domain});
+      FAIL() << domain;
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), "domain");
+      EXPECT_NE(std::string(e.what()).find("[0, 230]"), std::string::npos) << e.what();
+    }
   }
+  EXPECT_EQ(parse_service_command({"--domain", "230"}).config.domain, 230);
   try {
     parse_service_command({"--log-level", "loud"});
     FAIL();
