@@ -7,14 +7,8 @@
 #   deb_test.sh BUILD_DIR
 set -euo pipefail
 build=$1
-tmp=$(mktemp -d /tmp/gc_deb.XXXXXX)
-service=""
-cleanup() {
-  if [ -n "$service" ]; then kill -KILL "$service" 2>/dev/null || true; fi
-  rm -rf "$tmp"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*" >&2; [ -f "$tmp/service.log" ] && cat "$tmp/service.log" >&2; exit 1; }
+. "$(dirname "$0")/scratch.sh"
+scratch gc_deb
 
 cpack --config "$build/CPackConfig.cmake" -B "$tmp/cpack" >/dev/null
 deb=$(echo "$tmp"/cpack/gearcoupling_*.deb)

@@ -7,14 +7,8 @@
 #   find_package_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1 source=$2
-tmp=$(mktemp -d /tmp/gc_find_package.XXXXXX)
-service=""
-cleanup() {
-  if [ -n "$service" ]; then kill -KILL "$service" 2>/dev/null || true; fi
-  rm -rf "$tmp"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*" >&2; [ -f "$tmp/service.log" ] && cat "$tmp/service.log" >&2; exit 1; }
+. "$(dirname "$0")/scratch.sh"
+scratch gc_find_package
 
 prefix=$tmp/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null

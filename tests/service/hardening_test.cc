@@ -24,6 +24,7 @@
 #include "protocol/topics.h"
 #include "protocol/wire_inputs.h"
 #include "tests/service/scaled_coupling.h"
+#include "tests/service/read_text.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -80,13 +81,6 @@ TEST(Deadline, TheDefaultDeadlineAnswersTheCostliestAllowedRequest) {
   EXPECT_EQ(remote.max_tooth_load_n, local.max_tooth_load_n);
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(Echo, ATenMegabyteNameIsRejectedWithoutEchoingOrLoggingItWhole) {
   const std::string log = "/tmp/gc_hardening_log_" + std::to_string(getpid()) + ".txt";
   test::ServiceProcess service({}, log);
@@ -115,7 +109,7 @@ TEST(Echo, ATenMegabyteNameIsRejectedWithoutEchoingOrLoggingItWhole) {
   EXPECT_NO_THROW(client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}}));
   service.signal(SIGTERM);
   EXPECT_EQ(service.wait_exit(10.0), 0);
-  const std::string text = read_text(log);
+  const std::string text = test::read_text(log);
   std::remove(log.c_str());
   EXPECT_NE(text.find("coupling.catalogue_name"), std::string::npos) << text;  // logged ...
   EXPECT_LT(text.size(), 16u << 10) << "the log grew by the names";           // ... but short

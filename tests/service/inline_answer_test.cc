@@ -12,6 +12,7 @@
 #include "codec/coupling_catalog.h"
 #include "service/inline_answer.h"
 #include "tests/service/scaled_coupling.h"
+#include "tests/service/read_text.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -61,13 +62,6 @@ TEST(InlineAnswer, MoreSlicesIterationsOrTeethThanTheBoundsGoToTheWorkers) {
   EXPECT_FALSE(service::cheap_to_answer(protocol::ToothContactRequest{with_teeth(10000), kPoint, {}}, catalogue));
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(InlineAnswer, LoneCheapRequestsAreAnsweredInTheListenerAndCostlyOnesOnWorkers) {
   const std::string log = ::testing::TempDir() + "inline_answer_service.log";
   {
@@ -89,7 +83,7 @@ TEST(InlineAnswer, LoneCheapRequestsAreAnsweredInTheListenerAndCostlyOnesOnWorke
   // The last stats line (written at shutdown) counts the 20 jam angles and the moments: 21, never
   // the two costly ones. A request that arrives before the service has seen the client's reply
   // reader waits for it and then goes to a worker: the first may, on a loaded host.
-  const std::string text = read_text(log);
+  const std::string text = test::read_text(log);
   const std::regex count("answered_in_listener=([0-9]+)");
   int last = -1;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), count); it != std::sregex_iterator(); ++it) {

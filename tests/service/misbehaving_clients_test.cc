@@ -18,6 +18,7 @@
 
 #include "clients/remote/client.h"
 #include "protocol/names.h"
+#include "tests/service/read_text.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -26,13 +27,6 @@ namespace {
 using protocol::Calculation;
 using protocol::CatalogueName;
 using Clock = std::chrono::steady_clock;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// The number after the last "<name>=" in `text`, or -1.
 long last_count(const std::string& text, const std::string& name) {
@@ -116,7 +110,7 @@ TEST(MisbehavingClients, MadeUpClientIdsCostAWellBehavedClientNothing) {
   EXPECT_NO_THROW(good.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}}));
   service.signal(SIGTERM);
   EXPECT_EQ(service.wait_exit(10.0), 0);
-  const std::string text = read_text(log);
+  const std::string text = test::read_text(log);
   std::remove(log.c_str());
   EXPECT_NE(text.find("dropped unanswered: no reply reader of their client matched"),
             std::string::npos) << text.substr(0, 4000);
@@ -133,7 +127,7 @@ TEST(MisbehavingClients, RequestsStillParkedAtShutdownAreLoggedAsDropped) {
   EXPECT_EQ(flood.wait_exit(30.0), 0);
   service.signal(SIGTERM);  // long before the 60 s after which they would expire
   EXPECT_EQ(service.wait_exit(10.0), 0);
-  const std::string text = read_text(log);
+  const std::string text = test::read_text(log);
   std::remove(log.c_str());
   EXPECT_NE(text.find("shutting down: "), std::string::npos) << text.substr(0, 4000);
   EXPECT_NE(text.find(" request(s) dropped unanswered: their client's reply reader had not "
@@ -160,7 +154,7 @@ TEST(MisbehavingClients, AClientThatNeverReadsItsRepliesSlowsOnlyItself) {
   EXPECT_EQ(deaf.wait_exit(30.0), 0);
   service.signal(SIGTERM);
   EXPECT_EQ(service.wait_exit(10.0), 0);
-  const std::string text = read_text(log);
+  const std::string text = test::read_text(log);
   std::remove(log.c_str());
   EXPECT_NE(text.find("did not acknowledge its replies"), std::string::npos)
       << text.substr(0, 4000);
