@@ -2,15 +2,18 @@
 // Runs against a service already started on --domain (bench/service_bench.sh starts one, and
 // ddsperf ping/pong on the same configuration for the floor).
 //
-//   service_bench --domain N [--latency-requests 5000] [--seconds 3] [--clients 1,8,32]
-//                 [--window 64] [--client-id-prefix HEX8]
+//   service_bench --domain N [--latency-requests 5000] [--latency-seconds S] [--modes call,call_then]
+//                 [--seconds 3] [--clients 1,8,32] [--window 64] [--client-id-prefix HEX8]
 //
 // Latency: one client, one blocking call at a time, jam-angle then induced-moments requests
 // (catalogue coupling nrel_upwind); p50/p99/mean of the round trip. Throughput: K clients (each
 // its own participant and reply partition, one thread each) keeping --window induced-moments
 // requests in flight for --seconds; completed replies per second. Every loop is bounded in
 // count and time. Listener mode (jam_angle_cb, moments_cb): the same latency with call_then, each
-// reply's callback sending the next request, as ddsperf's ping does.
+// reply's callback sending the next request, as ddsperf's ping does. --latency-seconds S bounds
+// each latency run by time instead (S seconds, as long as a ddsperf window: bench/service_bench.sh
+// alternates short runs of both); --modes picks blocking calls (call), listener mode (call_then)
+// or both.
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
@@ -33,6 +36,9 @@ using Clock = std::chrono::steady_clock;
 struct Options {
   int domain = 0;
   int latency_requests = 5000;
+  double latency_seconds = 0.0;  ///< > 0: each latency run lasts this long (s), at most 1e6 requests
+  bool blocking_calls = true;    ///< --modes has call
+  bool listener_calls = true;    ///< --modes has call_then
   double seconds = 3.0;
   std::vector<int> clients = {1, 8, 32};
   std::size_t window = 64;
@@ -46,6 +52,19 @@ Options parse(int argc, char** argv) {
     const std::string value = argv[i + 1];
     if (flag == "--domain") o.domain = std::atoi(value.c_str());
     else if (flag == "--latency-requests") o.latency_requests = std::atoi(value.c_str());
+    else if (flag == "--latency-seconds") o.latency_seconds = std::atof(value.c_str());
+    else if (flag == "--modes") {
+      o.blocking_calls = o.listener_calls = false;
+      std::stringstream list(value);
+      for (std::string item; std::getline(list, item, ',');) {
+        if (item == "call") o.blocking_calls = true;
+        else if (item == "call_then") o.listener_calls = true;
+        else {
+          std::fprintf(stderr, "--modes: unknown mode \"%s\" (allowed: call, call_then)\n", item.c_str());
+          std::exit(2);
+        }
+      }
+    }
     else if (flag == "--seconds") o.seconds = std::atof(value.c_str());
     else if (flag == "--client-id-prefix") o.client_id_prefix = static_cast<std::uint32_t>(std::strtoul(value.c_str(), nullptr, 16));
     else if (flag == "--window") o.window = static_cast<std::size_t>(std::atoi(value.c_str()));
@@ -67,15 +86,22 @@ double percentile(std::vector<double> v, double p) {
   return v[std::min(rank, v.size() - 1)];
 }
 
+/// How long one latency run lasts: `count` requests or `length`, whichever comes first.
+struct Bound {
+  int count;
+  Clock::duration length;
+};
+
 const gc::OperatingPoint kPoint{1.5e6, 0.007, 0.0, 0.1};
 
 template <Calculation kCalculation, typename Request>
-void latency(gc::client::Client& client, const char* name, const Request& request, int count) {
+void latency(gc::client::Client& client, const char* name, const Request& request,
+             const Bound& bound) {
   for (int i = 0; i < 200; ++i) client.call<kCalculation>(request);  // warm up
   std::vector<double> us;
-  us.reserve(static_cast<std::size_t>(count));
-  const Clock::time_point stop = Clock::now() + std::chrono::seconds(30);
-  for (int i = 0; i < count && Clock::now() < stop; ++i) {
+  us.reserve(static_cast<std::size_t>(std::min(bound.count, 200000)));
+  const Clock::time_point stop = Clock::now() + bound.length;
+  for (int i = 0; i < bound.count && Clock::now() < stop; ++i) {
     const Clock::time_point start = Clock::now();
     client.call<kCalculation>(request);
     us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
@@ -91,11 +117,11 @@ void latency(gc::client::Client& client, const char* name, const Request& reques
 // thread of the client is woken in between.
 template <Calculation kCalculation, typename Request>
 void latency_in_listener(gc::client::Client& client, const char* name, const Request& request,
-                         int count) {
+                         const Bound& bound) {
   std::vector<double> us;
-  us.reserve(static_cast<std::size_t>(count));
+  us.reserve(static_cast<std::size_t>(std::min(bound.count, 200000)));
   std::promise<std::string> done;  // "" or the error that stopped the run
-  const Clock::time_point stop = Clock::now() + std::chrono::seconds(30);
+  const Clock::time_point stop = Clock::now() + bound.length;
   Clock::time_point start;
   gc::client::Client::Callback<kCalculation> on_reply = [&](auto outcome) {
     if (outcome.error) {
@@ -107,7 +133,7 @@ void latency_in_listener(gc::client::Client& client, const char* name, const Req
       return;
     }
     us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
-    if (static_cast<int>(us.size()) == count || Clock::now() >= stop) {
+    if (static_cast<int>(us.size()) == bound.count || Clock::now() >= stop) {
       done.set_value("");
       return;
     }
@@ -185,19 +211,20 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "no service on domain %d\n", o.domain);
       return 1;
     }
-    latency<Calculation::kJamAngle>(client, "jam_angle", gc::protocol::JamAngleRequest{CatalogueName{"nrel_upwind"}},
-                                    o.latency_requests);
-    latency<Calculation::kInducedMoments>(
-        client, "induced_moments",
-        gc::protocol::InducedMomentsRequest{CatalogueName{"nrel_upwind"}, kPoint, {}},
-        o.latency_requests);
-    latency_in_listener<Calculation::kJamAngle>(
-        client, "jam_angle_cb", gc::protocol::JamAngleRequest{CatalogueName{"nrel_upwind"}},
-        o.latency_requests);
-    latency_in_listener<Calculation::kInducedMoments>(
-        client, "moments_cb",
-        gc::protocol::InducedMomentsRequest{CatalogueName{"nrel_upwind"}, kPoint, {}},
-        o.latency_requests);
+    const Bound bound = o.latency_seconds > 0
+                            ? Bound{1000000, std::chrono::duration_cast<Clock::duration>(
+                                                 std::chrono::duration<double>(o.latency_seconds))}
+                            : Bound{o.latency_requests, std::chrono::seconds(30)};
+    const gc::protocol::JamAngleRequest jam{CatalogueName{"nrel_upwind"}};
+    const gc::protocol::InducedMomentsRequest moments{CatalogueName{"nrel_upwind"}, kPoint, {}};
+    if (o.blocking_calls) {
+      latency<Calculation::kJamAngle>(client, "jam_angle", jam, bound);
+      latency<Calculation::kInducedMoments>(client, "induced_moments", moments, bound);
+    }
+    if (o.listener_calls) {
+      latency_in_listener<Calculation::kJamAngle>(client, "jam_angle_cb", jam, bound);
+      latency_in_listener<Calculation::kInducedMoments>(client, "moments_cb", moments, bound);
+    }
   }
   for (int clients : o.clients) throughput(o, clients);
   return 0;
