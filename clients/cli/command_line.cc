@@ -29,7 +29,7 @@ void Flags::add_to(CLI::App& app) {
     if (spec.is_switch) {
       app.add_flag_function(cli11_names(spec), [this, k](std::int64_t count) {
         if (count > 0) values_[k] = "true";
-      }, spec.help)->group(spec.refused.empty() ? "flags" : "");
+      }, spec.help)->group(spec.refused.empty() ? "flags" : "")->disable_flag_override();
     } else if (!spec.refused.empty()) {  // its value is taken so check() can name the flag
       app.add_option_function<std::string>(
              cli11_names(spec), [this, k](const std::string& value) { values_[k] = value; })

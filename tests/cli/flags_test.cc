@@ -35,6 +35,18 @@ TEST(CliFlags, EqualsFormAndAliasesGiveTheSameResult) {
   EXPECT_EQ(friction.exit_code, 0) << friction.err;
 }
 
+// A switch takes no value: "--json=3" or "--json=false" is an error naming the flag, not a
+// silent --json.
+TEST(CliFlags, SwitchesRefuseAValue) {
+  for (const char* given : {"--json=3", "--json=false"}) {
+    const ProcessResult run = run_gearcoupling({"jam-angle", given});
+    EXPECT_EQ(run.exit_code, 2) << given;
+    EXPECT_EQ(run.out, "") << given;
+    EXPECT_NE(run.err.find("json"), std::string::npos) << run.err;
+  }
+  EXPECT_EQ(run_gearcoupling({"jam-angle", "--json"}).exit_code, 0);
+}
+
 TEST(CliFlags, CatalogueHasOneSpelling) {
   EXPECT_EQ(run_gearcoupling({"jam-angle", "--catalogue", GC_BUNDLED_CATALOG_DIR}).exit_code, 0);
   const ProcessResult old = run_gearcoupling({"jam-angle", "--catalog", GC_BUNDLED_CATALOG_DIR});
