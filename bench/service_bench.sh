@@ -139,7 +139,8 @@ for load in $loads; do
   line="$line | $(printf '%.2f' "$(median 3 "$rows" 1)") ($(range 3 "$rows" 1)), $(printf '%.2f' "$(median 5 "$rows" 1)") ($(range 5 "$rows" 1))"
   line="$line | $(median 7 "$rows") / $(median 8 "$rows") us"
   line="$line | $(median 9 "$rows") / $(median 10 "$rows") us | $(median 11 "$rows") / $(median 12 "$rows") us"
-  line="$line | $(printf '%.2f' "$(median 9 "$rows" 7)") ($(range 9 "$rows" 7)), $(printf '%.2f' "$(median 11 "$rows" 7)") ($(range 11 "$rows" 7)) |"
+  line="$line | $(printf '%.2f' "$(median 9 "$rows" 7)") ($(range 9 "$rows" 7)), $(printf '%.2f' "$(median 11 "$rows" 7)") ($(range 11 "$rows" 7))"
+  line="$line | $(printf '%.2f' "$(median 9 "$rows" 1)"), $(printf '%.2f' "$(median 11 "$rows" 1)") |"
   summary="$summary
 $line"
 done
@@ -150,6 +151,6 @@ service=""
 echo
 echo "Medians over the rounds (p50 / p99 are the median round's), and the median ratio with the lowest and highest round's:"
 echo
-echo "| hogs | ddsperf listener p50 / p99 | call_then jam angle p50 / p99 | call_then moments p50 / p99 | p50 ratio call_then / ddsperf listener: jam, moments | ddsperf waitset p50 / p99 | call() jam angle p50 / p99 | call() moments p50 / p99 | p50 ratio call() / ddsperf waitset: jam, moments |"
-echo "|---|---|---|---|---|---|---|---|---|$summary"
+echo "| hogs | ddsperf listener p50 / p99 | call_then jam angle p50 / p99 | call_then moments p50 / p99 | p50 ratio call_then / ddsperf listener: jam, moments | ddsperf waitset p50 / p99 | call() jam angle p50 / p99 | call() moments p50 / p99 | p50 ratio call() / ddsperf waitset: jam, moments | p50 ratio call() / ddsperf listener: jam, moments |"
+echo "|---|---|---|---|---|---|---|---|---|---|$summary"
 echo "(target: p50 ratio <= 1.5; load after: $(cut -d' ' -f1-3 /proc/loadavg))"

@@ -1,5 +1,8 @@
 #include "clients/remote/client_core.h"
 
+#include <algorithm>
+#include <thread>
+
 #include "clients/remote/instance_info.h"
 
 #include <fmt/format.h>
@@ -19,11 +22,40 @@ using protocol::Entity;
 
 namespace {
 
+using Clock = ClientCore::Clock;
+
+/// Writes with `write` to `writer`. A full window (DDS_RETCODE_TIMEOUT: the writers never block)
+/// is waited out as a blocking write would, until the service has acknowledged what was sent,
+/// at most until `until`; then written again. Never from a reply callback: the acknowledgements
+/// come in through the very thread that runs it.
+dds_return_t write_when_acknowledged(const std::function<dds_return_t(dds_entity_t)>& write,
+                                     dds_entity_t writer, Clock::time_point until) {
+  dds_return_t rc = write(writer);
+  while (rc == DDS_RETCODE_TIMEOUT && Clock::now() < until) {
+    const auto left = std::chrono::duration_cast<std::chrono::nanoseconds>(until - Clock::now());
+    dds_wait_for_acks(writer, static_cast<dds_duration_t>(left.count()));
+    rc = write(writer);
+  }
+  return rc;
+}
+
 /// A disposed status means a graceful shutdown: the instance answered what it had before
 /// disposing, so give those replies this long to arrive before sending the rest elsewhere.
 constexpr std::chrono::milliseconds kDisposedResendDelay{500};
 /// How often the receive loop checks deadlines and readiness when nothing arrives.
-constexpr dds_duration_t kTick = DDS_MSECS(10);
+constexpr std::chrono::milliseconds kTick{10};
+/// How soon the receive loop tries again a write deferred by a reply callback (a full window).
+constexpr std::chrono::microseconds kWindowRetry{200};
+/// How long the receive loop waits for acknowledgements before writing a deferred request again:
+/// it also fails requests past their deadline, so it waits a short while only.
+constexpr std::chrono::milliseconds kAckWait{50};
+/// Requests one client has written and not yet had answered, at most: half the replies the
+/// service holds for one client whose window is full (kMaxBackloggedRepliesPerClient, 512, in
+/// service/service.cc), past which it drops them. A burst beyond it waits (docs/protocol.md).
+constexpr std::size_t kMaxInFlight = 256;
+/// Set while this thread runs a reply callback (Cyclone's receive thread): a write made from it
+/// must not wait for acknowledgements, which only this very thread would read.
+thread_local bool in_reply_callback = false;
 /// Longest a caller waiting for a ready instance sleeps between looks. Matching events wake it
 /// at once (matched listeners); this only bounds a wake-up lost to the race between a look and
 /// the wait. Looking costs a copy of every matched writer's QoS: a hundred clients discovering
@@ -129,7 +161,9 @@ void ClientCore::use_locked(Calculation calculation) {
 }
 
 void ClientCore::create_request_writer_locked(Instance& instance, std::size_t i) {
-  const protocol::Qos qos = protocol::request_reply_qos();
+  // Max blocking time 0: a full window (unacknowledged requests over the writer history cache's
+  // high-water mark) returns DDS_RETCODE_TIMEOUT at once instead of blocking (send()).
+  const protocol::Qos qos = protocol::request_reply_qos(0.0);
   dds_listener_t* listener = dds_create_listener(this);
   dds_lset_publication_matched(listener, [](dds_entity_t, dds_publication_matched_status_t,
                                             void* client) {
@@ -187,6 +221,45 @@ ClientCore::Instance* ClientCore::pick_ready_locked(Calculation calculation) {
   return nullptr;
 }
 
+void ClientCore::assign_locked(Pending& pending, std::uint64_t instance) {
+  if (pending.instance == 0) in_flight_ += 1;
+  pending.instance = instance;
+}
+
+void ClientCore::release_locked(Pending& pending) {
+  if (pending.instance == 0) return;
+  pending.instance = 0;
+  in_flight_ -= 1;
+  instances_changed_.notify_all();  // a sender may wait for room (kMaxInFlight)
+}
+
+void ClientCore::defer_locked(std::uint64_t sequence, Pending pending) {
+  counters_.deferred += 1;
+  pending.deferred = true;
+  pending.resend_at = Clock::now();
+  pending_.emplace(sequence, std::move(pending));
+  dds_set_guardcondition(guard_.get(), true);
+}
+
+void ClientCore::write_failed(std::uint64_t sequence, dds_return_t rc) {
+  {
+    std::lock_guard lock(mutex_);
+    const auto found = pending_.find(sequence);
+    if (found == pending_.end()) return;  // answered or failed meanwhile
+    Pending& pending = found->second;
+    counters_.sent -= 1;
+    release_locked(pending);
+    if (rc == DDS_RETCODE_TIMEOUT) {
+      // The window was full: the receive loop writes it once acknowledgements have come in.
+      if (!pending.deferred) counters_.deferred += 1;
+      pending.deferred = true;
+      pending.resend_at = Clock::now() + kWindowRetry;
+    }
+    // Otherwise the instance went while writing (its writer was deleted): send it elsewhere.
+  }
+  dds_set_guardcondition(guard_.get(), true);
+}
+
 void ClientCore::send(std::uint64_t sequence, Pending pending) {
   std::unique_lock lock(mutex_);
   use_locked(pending.calculation);
@@ -196,21 +269,26 @@ void ClientCore::send(std::uint64_t sequence, Pending pending) {
       pending.fail(std::make_exception_ptr(ClientClosed("the client is closing")));
       return;
     }
-    if (Instance* instance = pick_ready_locked(pending.calculation)) {
+    const bool room = in_flight_ < kMaxInFlight;
+    if (!room && in_reply_callback) {  // a callback must not wait: the receive loop sends it
+      defer_locked(sequence, std::move(pending));
+      return;
+    }
+    Instance* instance = room ? pick_ready_locked(pending.calculation) : nullptr;
+    if (instance != nullptr) {
       const dds_entity_t writer =
           instance->writers[protocol::index_of(pending.calculation)].get();
-      pending.instance = instance->info.id;
+      assign_locked(pending, instance->info.id);
       auto write = pending.write;
+      const Clock::time_point deadline = pending.deadline;
       pending_.emplace(sequence, std::move(pending));
       counters_.sent += 1;
       lock.unlock();
-      const dds_return_t rc = write(writer);
-      if (rc < 0) {
-        std::lock_guard relock(mutex_);
-        const auto found = pending_.find(sequence);
-        // The instance went while writing (its writer was deleted): send it elsewhere.
-        if (found != pending_.end()) found->second.instance = 0;
-      }
+      // A full window: a caller outside the receive thread waits for acknowledgements here
+      // (back-pressure, as a blocking write); a reply callback defers the write (write_failed).
+      const dds_return_t rc = in_reply_callback ? write(writer)
+                                                : write_when_acknowledged(write, writer, deadline);
+      if (rc < 0) write_failed(sequence, rc);
       return;
     }
     const Clock::time_point now = Clock::now();
@@ -218,14 +296,18 @@ void ClientCore::send(std::uint64_t sequence, Pending pending) {
       counters_.timeouts += 1;
       const std::size_t known = instances_.size();
       lock.unlock();
-      pending.fail(std::make_exception_ptr(Timeout(fmt::format(
-          "{} request {}: no gearcoupling-service instance ready on domain {} within {} ms "
-          "({} instance(s) discovered)",
-          protocol::to_string(pending.calculation), sequence, options_.domain,
-          options_.timeout.count(), known))));
+      pending.fail(std::make_exception_ptr(Timeout(
+          room ? fmt::format("{} request {}: no gearcoupling-service instance ready on domain {} "
+                             "within {} ms ({} instance(s) discovered)",
+                             protocol::to_string(pending.calculation), sequence, options_.domain,
+                             options_.timeout.count(), known)
+               : fmt::format("{} request {}: not sent within {} ms: {} requests of this client "
+                             "were in flight all that time, none answered",
+                             protocol::to_string(pending.calculation), sequence,
+                             options_.timeout.count(), kMaxInFlight))));
       return;
     }
-    // Woken by status samples and matching events (matching_changed()).
+    // Woken by status samples, matching events (matching_changed()) and answers (room).
     instances_changed_.wait_until(lock, std::min(pending.deadline, now + kReadyPoll));
   }
 }
@@ -284,11 +366,14 @@ void ClientCore::take_replies(dds_entity_t reader) {
           counters_.duplicates += 1;
           continue;
         }
+        release_locked(found->second);
         pending = std::move(found->second);
         pending_.erase(found);
         counters_.replies += 1;
       }
+      in_reply_callback = true;
       pending.deliver(&reply);
+      in_reply_callback = false;
     }
   }
 }
@@ -312,7 +397,7 @@ void ClientCore::take_status() {
                                 : std::chrono::milliseconds(0));
         for (auto& [sequence, pending] : pending_) {
           if (pending.instance == id) {
-            pending.instance = 0;
+            release_locked(pending);
             pending.resend_at = resend_at;
           }
         }
@@ -340,13 +425,15 @@ void ClientCore::take_status() {
   }
 }
 
-void ClientCore::maintain() {
+ClientCore::Clock::time_point ClientCore::maintain() {
   struct Resend {
+    std::uint64_t sequence;
     std::function<dds_return_t(dds_entity_t)> write;
     dds_entity_t writer;
   };
   std::vector<Resend> resends;
   std::vector<std::pair<Pending, std::string>> expired;
+  Clock::time_point next = Clock::time_point::max();
   {
     std::lock_guard lock(mutex_);
     const Clock::time_point now = Clock::now();
@@ -359,37 +446,69 @@ void ClientCore::maintain() {
             protocol::to_string(pending.calculation), it->first, protocol::hex_id(client_id_),
             pending.instance != 0 ? protocol::hex_id(pending.instance) : "(none left)",
             options_.timeout.count());
+        release_locked(pending);
         expired.emplace_back(std::move(pending), std::move(message));
         it = pending_.erase(it);
         continue;
       }
-      if (pending.instance == 0 && now >= pending.resend_at) {
+      if (pending.instance == 0 && now < pending.resend_at) {
+        next = std::min(next, pending.resend_at);
+      } else if (pending.instance == 0 && in_flight_ >= kMaxInFlight) {
+        next = std::min(next, now + kWindowRetry);  // answers make room soon
+      } else if (pending.instance == 0) {  // none ready: the next tick or status sample looks again
         if (Instance* instance = pick_ready_locked(pending.calculation)) {
-          pending.instance = instance->info.id;
-          resends.push_back(
-              {pending.write, instance->writers[protocol::index_of(pending.calculation)].get()});
-          counters_.resent += 1;
+          assign_locked(pending, instance->info.id);
+          resends.push_back({it->first, pending.write,
+                             instance->writers[protocol::index_of(pending.calculation)].get()});
+          // A deferred write was never sent: writing it now is its first sending, not a resend.
+          if (!pending.deferred) counters_.resent += 1;
           counters_.sent += 1;
         }
       }
       ++it;
     }
   }
-  for (const Resend& resend : resends) resend.write(resend.writer);
+  std::vector<std::uint64_t> written;
+  for (const Resend& resend : resends) {
+    const dds_return_t rc =
+        write_when_acknowledged(resend.write, resend.writer, Clock::now() + kAckWait);
+    if (rc < 0) {
+      write_failed(resend.sequence, rc);
+      next = std::min(next, Clock::now() + kWindowRetry);
+    } else {
+      written.push_back(resend.sequence);
+    }
+  }
+  if (!written.empty()) {  // sent at last: if its instance goes now, sending it again is a resend
+    std::lock_guard lock(mutex_);
+    for (std::uint64_t sequence : written) {
+      if (const auto found = pending_.find(sequence); found != pending_.end()) {
+        found->second.deferred = false;
+      }
+    }
+  }
   for (auto& [pending, message] : expired) {
     pending.fail(std::make_exception_ptr(Timeout(message)));
   }
+  return next;
 }
 
 void ClientCore::receive_loop() {
+  Clock::time_point next_resend = Clock::time_point::max();
   for (;;) {
-    dds_waitset_wait(waitset_.get(), nullptr, 0, kTick);
+    // Every kTick, sooner when a request waits to be written again (a full window).
+    const auto wait = std::clamp(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                     next_resend - Clock::now()),
+                                 std::chrono::nanoseconds(0), std::chrono::nanoseconds(kTick));
+    dds_waitset_wait(waitset_.get(), nullptr, 0, static_cast<dds_duration_t>(wait.count()));
+    bool woken = false;  // write_failed() or the destructor set it; reset it to wait again
+    dds_take_guardcondition(guard_.get(), &woken);
     {
       std::lock_guard lock(mutex_);
       if (closing_) return;
     }
     take_status();
-    maintain();
+    next_resend = maintain();
   }
 }
 

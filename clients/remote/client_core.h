@@ -100,8 +100,19 @@ class ClientCore {
   void use_locked(protocol::Calculation calculation);
   void create_request_writer_locked(Instance& instance, std::size_t calculation_index);
   void take_status();
-  /// Fails requests past their deadline and sends orphaned ones (instance gone) to another.
-  void maintain();
+  /// Fails requests past their deadline, sends orphaned ones (instance gone) to another and
+  /// writes deferred ones (a full window); returns when a request next waits to be written.
+  Clock::time_point maintain();
+  /// Writing request `sequence` failed with `rc`: it is written again from the receive loop,
+  /// to another instance if its own went (a deleted writer), after kWindowRetry if the window
+  /// was full (DDS_RETCODE_TIMEOUT; counted as deferred).
+  void write_failed(std::uint64_t sequence, dds_return_t rc);
+  /// `pending` is sent to `instance`: one more request in flight (kMaxInFlight).
+  void assign_locked(Pending& pending, std::uint64_t instance);
+  /// `pending` is no longer in flight (answered, failed, or its instance went): room for another.
+  void release_locked(Pending& pending);
+  /// Registers `pending` for the receive loop to send (a reply callback found no room).
+  void defer_locked(std::uint64_t sequence, Pending pending);
   Instance* pick_ready_locked(protocol::Calculation calculation);
   bool ready_locked(Instance& instance, protocol::Calculation calculation);
 
@@ -124,6 +135,7 @@ class ClientCore {
   std::map<dds_instance_handle_t, std::uint64_t> status_handles_;
   std::map<std::uint64_t, Pending> pending_;
   std::uint64_t sequence_ = 0;
+  std::size_t in_flight_ = 0;  ///< pending_ entries sent and not answered (instance != 0)
   std::size_t round_robin_ = 0;
   ClientCounters counters_;
   bool closing_ = false;
@@ -137,6 +149,7 @@ struct ClientCore::Pending {
   std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
   Clock::time_point deadline;
   Clock::time_point resend_at;  ///< when instance == 0: not before this
+  bool deferred = false;        ///< never written yet: its first write found the window full
   std::function<dds_return_t(dds_entity_t writer)> write;
   std::function<void(const void* wire_reply)> deliver;
   std::function<void(std::exception_ptr)> fail;

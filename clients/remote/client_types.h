@@ -77,6 +77,7 @@ struct ClientCounters {
   std::uint64_t duplicates = 0;    ///< replies for a request no longer pending (dropped)
   std::uint64_t foreign = 0;       ///< replies carrying another client's id (never expected)
   std::uint64_t timeouts = 0;      ///< requests failed with Timeout
+  std::uint64_t deferred = 0;      ///< writes retried from the client's thread: window was full
 };
 
 }  // namespace gc::client
