@@ -1,6 +1,8 @@
 // Load: many clients at once and one client bursting. Every reply must come back to the client
 // that asked, once, carrying the result of the request it answers (expected values: the core
 // in process, compared bit for bit).
+#include <signal.h>
+
 #include <deque>
 #include <future>
 #include <thread>
@@ -102,6 +104,36 @@ TEST(Service, OneClientBurstingTenThousandRequestsAllAnswered) {
   EXPECT_EQ(counters.replies, static_cast<std::uint64_t>(kRequests));
   EXPECT_EQ(counters.duplicates, 0u);
   EXPECT_EQ(counters.resent, 0u);
+}
+
+// Protocol rule 9: a client keeps at most 256 requests in flight. With the instance stopped
+// (SIGSTOP: nothing is answered), a thread calling 600 times gets 256 written, then waits for
+// room; once the instance runs again every request is answered, in order of writing.
+TEST(Service, AClientKeepsAtMost256RequestsInFlight) {
+  constexpr int kRequests = 600;
+  test::ServiceProcess service;
+  client::Client client({test::test_domain(), std::chrono::seconds(30)});
+  ASSERT_TRUE(client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(20)));
+  service.signal(SIGSTOP);
+  std::vector<std::future<protocol::JamAngleResult>> futures(kRequests);
+  std::thread caller([&] {
+    for (auto& future : futures) {
+      future = client.call_async<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
+    }
+  });
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (client.counters().sent < 256 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // would it write more?
+  EXPECT_EQ(client.counters().sent, 256u);
+  service.signal(SIGCONT);
+  caller.join();
+  for (auto& future : futures) EXPECT_NO_THROW(future.get());
+  const client::ClientCounters counters = client.counters();
+  EXPECT_EQ(counters.sent, static_cast<std::uint64_t>(kRequests));
+  EXPECT_EQ(counters.replies, static_cast<std::uint64_t>(kRequests));
+  EXPECT_EQ(counters.timeouts, 0u);
 }
 
 }  // namespace
