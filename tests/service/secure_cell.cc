@@ -38,12 +38,16 @@ ShellResult run_shell(const std::string& command) {
   return result;
 }
 
-SecureCell::SecureCell() {
+SecureCell::SecureCell(const std::string& more_args) : args_("--client a --client b " + more_args) {
   char pattern[] = "/tmp/gc-security-XXXXXX";
   if (mkdtemp(pattern) == nullptr) throw std::runtime_error("mkdtemp failed");
   dir_ = pattern;
+  rerun({});
+}
+
+void SecureCell::rerun(const std::string& more_args) const {
   const ShellResult made = run_shell(GC_SOURCE_DIR "/deploy/security/make-security.sh " + dir_ +
-                                     " --client a --client b");
+                                     " " + args_ + " " + more_args);
   if (made.exit_code != 0) {
     throw std::runtime_error("make-security.sh failed (" + std::to_string(made.exit_code) +
                              "): " + made.output);

@@ -1,5 +1,6 @@
 // A DDS Security test cell made at test time: deploy/security/make-security.sh writes a CA,
-// identities (service-main, client-a, client-b, dashboard-main) and signed documents into a
+// identities (service-main, client-a, client-b, dashboard-main, and any the test adds) and
+// signed documents into a
 // fresh temporary directory, and these helpers give processes and in-process domains those
 // identities on the test's own domain, over loopback.
 #pragma once
@@ -18,15 +19,18 @@ bool security_plugins_installed();
 
 class SecureCell {
  public:
-  /// Runs the script into a fresh temporary directory; throws std::runtime_error with its
-  /// output when it fails.
-  SecureCell();
+  /// Runs the script into a fresh temporary directory with "--client a --client b" and
+  /// `more_args` (e.g. "--monitor m"); throws std::runtime_error with its output when it fails.
+  explicit SecureCell(const std::string& more_args = {});
   /// Removes the directory.
   ~SecureCell();
   SecureCell(const SecureCell&) = delete;
   SecureCell& operator=(const SecureCell&) = delete;
 
   const std::string& dir() const { return dir_; }
+  /// Runs the script again on this directory with the constructor's arguments and `more_args`
+  /// (e.g. "--revoke client-b"); throws std::runtime_error with its output when it fails.
+  void rerun(const std::string& more_args) const;
   /// CYCLONEDDS_URI for a process of `identity`: the network configuration `network` (a
   /// file:// URI; the loopback one unless given) plus its security.xml.
   std::string uri(const std::string& identity, const std::string& network = {}) const;
@@ -35,6 +39,7 @@ class SecureCell {
 
  private:
   std::string dir_;
+  std::string args_;
 };
 
 /// Runs `command` with /bin/sh; its exit status and what it printed (standard output and error).

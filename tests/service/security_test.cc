@@ -211,8 +211,9 @@ class SecurityScript : public testing::Test {
 
 TEST_F(SecurityScript, ASecondRunChangesNoFile) {
   const auto before = files();
-  // 2 CAs (4 files + serial), governance (2), 4 identities with 5 files, 2 client prefixes.
-  EXPECT_EQ(before.size(), 5u + 2u + 4u * 5u + 2u);
+  // 2 CAs (4 files + serial), the CRL and its database (2), governance (2), 4 identities with
+  // 5 files, 2 client prefixes.
+  EXPECT_EQ(before.size(), 5u + 2u + 2u + 4u * 5u + 2u);
   const test::ShellResult again = test::run_shell(
       GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir() + " --client a --client b");
   ASSERT_EQ(again.exit_code, 0) << again.output;
