@@ -2,7 +2,8 @@
 # Makes everything DDS Security needs for a gearcoupling test cell (docs/security.md):
 #
 #   bash deploy/security/make-security.sh OUT_DIR [--service NAME]... [--client NAME]...
-#        [--dashboard NAME]... [--monitor NAME]... [--cell NAME]... [--operator NAME]...
+#        [--dashboard NAME]... [--console NAME]... [--monitor NAME]... [--cell NAME]...
+#        [--operator NAME]...
 #        [--revoke IDENTITY]... [--days N]
 #
 #   OUT_DIR/ca/identity_ca.pem, permissions_ca.pem    the two CA certificates (every host)
@@ -13,10 +14,11 @@
 #   OUT_DIR/<identity>/cert.pem, key.pem              the identity (only that host)
 #   OUT_DIR/<identity>/permissions.xml, .p7s          what it may publish and read, signed
 #   OUT_DIR/<identity>/security.xml                   Cyclone <Security> fragment naming the above
-#   OUT_DIR/client-<NAME>/client_id_prefix            8 hex digits: the client's ids start with them
+#   OUT_DIR/{client,console}-<NAME>/client_id_prefix  8 hex digits: the client's ids start with them
 #
 # Identities: "service-<NAME>" (default one: service-main), "client-<NAME>" (default: client-cell),
-# "dashboard-<NAME>" (default: dashboard-main); the live test cell's "monitor-<NAME>",
+# "dashboard-<NAME>" (default: dashboard-main); "console-<NAME>", a dashboard whose query panel
+# may ask the service (a dashboard's and a client's rights); the live test cell's "monitor-<NAME>",
 # "cell-<NAME>" and "operator-<NAME>" (none by default). --revoke IDENTITY puts that identity's
 # certificate on the CRL for good (every security.xml names the CRL). Idempotent: what exists and
 # is still valid is kept (keys, certificates, signatures, the CRL), so a second run changes no
@@ -24,7 +26,7 @@
 # only when it no longer verifies, the CRL only when the revoked set changes or it nears expiry.
 set -euo pipefail
 
-usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 fail() { echo "make-security.sh: $*" >&2; exit 1; }
 
 LIB_DIR="${GC_DDS_SECURITY_LIB_DIR:-/usr/lib/x86_64-linux-gnu/libddsc0debian}"
@@ -33,14 +35,20 @@ REQUEST_TOPICS="gearcoupling/*/request"
 REPLY_TOPICS="gearcoupling/*/reply"
 STATUS_TOPIC="gearcoupling/status"
 STATUS_PARTITION="gearcoupling"
+# The live test cell's names (live/live_names.h): every topic in partition "gearcoupling.live".
+LIVE_PARTITION="gearcoupling.live"
+MEASUREMENT_TOPIC="gearcoupling/live/measurement"
+RESIDUAL_TOPIC="gearcoupling/live/residual"
+HEALTH_TOPIC="gearcoupling/live/health"
+MODEL_TOPIC="gearcoupling/live/model"
 SUBJECT_BASE="C=NL,O=gearcoupling"
 
 # ---- arguments --------------------------------------------------------------------------------
 [ $# -ge 1 ] || usage
 case "$1" in -h|--help) usage ;; esac
 OUT="$1"; shift
-SERVICES=(); CLIENTS=(); DASHBOARDS=(); MONITORS=(); CELLS=(); OPERATORS=(); REVOKED=(); DAYS=3650
-ROLES="service|client|dashboard|monitor|cell|operator"
+SERVICES=(); CLIENTS=(); DASHBOARDS=(); CONSOLES=(); MONITORS=(); CELLS=(); OPERATORS=(); REVOKED=(); DAYS=3650
+ROLES="service|client|dashboard|console|monitor|cell|operator"
 valid_name() { [[ "$1" =~ ^[a-z0-9][a-z0-9_-]{0,31}$ ]] || fail "$2 \"$1\": allowed 1-32 of a-z 0-9 _ -, starting with a letter or digit"; }
 valid_identity() {
   [[ "$1" =~ ^($ROLES)-[a-z0-9][a-z0-9_-]{0,31}$ ]] \
@@ -52,6 +60,7 @@ while [ $# -gt 0 ]; do
     --service) valid_name "$2" --service; SERVICES+=("$2") ;;
     --client) valid_name "$2" --client; CLIENTS+=("$2") ;;
     --dashboard) valid_name "$2" --dashboard; DASHBOARDS+=("$2") ;;
+    --console) valid_name "$2" --console; CONSOLES+=("$2") ;;
     --monitor) valid_name "$2" --monitor; MONITORS+=("$2") ;;
     --cell) valid_name "$2" --cell; CELLS+=("$2") ;;
     --operator) valid_name "$2" --operator; OPERATORS+=("$2") ;;
@@ -186,19 +195,23 @@ client_rules() {
   criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
 }
 
-# The dashboard reads: the status, and the live monitor's health and residuals (issue 12).
-dashboard_rules() {
-  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
+# What a dashboard shows of the live test cells: the monitor's health and residuals (issue 12).
+live_view_rules() {
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
   criteria subscribe "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
 }
 
-# The live test cell (live/live_names.h): every topic in partition "gearcoupling.live".
-LIVE_PARTITION="gearcoupling.live"
-MEASUREMENT_TOPIC="gearcoupling/live/measurement"
-RESIDUAL_TOPIC="gearcoupling/live/residual"
-HEALTH_TOPIC="gearcoupling/live/health"
-MODEL_TOPIC="gearcoupling/live/model"
+# The dashboard reads: the status and the live view.
+dashboard_rules() {
+  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
+  live_view_rules
+}
+
+# A console: a dashboard whose query panel asks the service, so a client (prefix $1) as well.
+console_rules() {
+  client_rules "$1"
+  live_view_rules
+}
 
 # The monitor (gearcoupling-monitor): reads measurements and model swaps, publishes the health
 # and residuals. It sends no requests.
@@ -221,8 +234,16 @@ operator_rules() {
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
 }
 
-# The top 32 bits of every client_id of client NAME: from a hash of the name, so reruns agree.
-client_prefix() { printf '%s' "client-$1" | sha256sum | cut -c1-8; }
+# The top 32 bits of every client_id of identity ID: from a hash of its name, so reruns agree.
+client_prefix() { printf '%s' "$1" | sha256sum | cut -c1-8; }
+
+# make_requester ID RULES_FUNCTION: a member that asks the service, with its client_id_prefix.
+make_requester() {
+  local prefix; prefix="$(client_prefix "$1")"
+  [ "$prefix" != 00000000 ] || fail "$1: its id prefix would be 0; choose another name"
+  make_member "$1" "$2" "$prefix"
+  echo "$prefix" | write_if_changed "$OUT/$1/client_id_prefix"
+}
 
 security_fragment() {
   cat <<XML
@@ -319,21 +340,17 @@ make_ca permissions_ca "gearcoupling permissions CA" keyCertSign,cRLSign,digital
 write_if_changed "$OUT/governance.xml" <"$(dirname "$0")/governance.xml"
 sign "$OUT/governance"
 for name in "${SERVICES[@]}"; do make_member "service-$name" service_rules; done
-for name in "${CLIENTS[@]}"; do
-  prefix="$(client_prefix "$name")"
-  [ "$prefix" != 00000000 ] || fail "--client $name: its id prefix would be 0; choose another name"
-  make_member "client-$name" client_rules "$prefix"
-  echo "$prefix" | write_if_changed "$OUT/client-$name/client_id_prefix"
-done
+for name in "${CLIENTS[@]}"; do make_requester "client-$name" client_rules; done
 for name in "${DASHBOARDS[@]}"; do make_member "dashboard-$name" dashboard_rules; done
-for name in "${MONITORS[@]}"; do make_member "monitor-$name" monitor_rules; done
-for name in "${CELLS[@]}"; do make_member "cell-$name" cell_rules; done
-for name in "${OPERATORS[@]}"; do make_member "operator-$name" operator_rules; done
+for name in ${CONSOLES[@]+"${CONSOLES[@]}"}; do make_requester "console-$name" console_rules; done
+for name in ${MONITORS[@]+"${MONITORS[@]}"}; do make_member "monitor-$name" monitor_rules; done
+for name in ${CELLS[@]+"${CELLS[@]}"}; do make_member "cell-$name" cell_rules; done
+for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do make_member "operator-$name" operator_rules; done
 mkdir -p "$CA_DB"
 [ -f "$CA_DB/index.txt" ] || : >"$CA_DB/index.txt"
 for id in ${REVOKED[@]+"${REVOKED[@]}"}; do revoke "$id"; done
 make_crl
 rm -f "$OUT/ca/"*.srl.old "$CA_DB/"*.old
-echo "DDS Security files for ${#SERVICES[@]} service, ${#CLIENTS[@]} client, ${#DASHBOARDS[@]} dashboard," \
+echo "DDS Security files for ${#SERVICES[@]} service, ${#CLIENTS[@]} client, ${#DASHBOARDS[@]} dashboard, ${#CONSOLES[@]} console," \
   "${#MONITORS[@]} monitor, ${#CELLS[@]} cell and ${#OPERATORS[@]} operator identities in $OUT;" \
   "$(revoked_in_db | wc -l) revoked"

@@ -63,8 +63,8 @@ std::string SecureCell::uri(const std::string& identity, const std::string& netw
   return (network.empty() ? std::string(kLoopback) : network) + ",file://" + dir_ + "/" + identity + "/security.xml";
 }
 
-std::uint32_t SecureCell::client_prefix(const std::string& name) const {
-  std::ifstream in(dir_ + "/client-" + name + "/client_id_prefix");
+std::uint32_t SecureCell::prefix_of(const std::string& identity) const {
+  std::ifstream in(dir_ + "/" + identity + "/client_id_prefix");
   std::string hex;
   in >> hex;
   return static_cast<std::uint32_t>(std::stoul(hex, nullptr, 16));

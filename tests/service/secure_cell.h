@@ -35,7 +35,9 @@ class SecureCell {
   /// file:// URI; the loopback one unless given) plus its security.xml.
   std::string uri(const std::string& identity, const std::string& network = {}) const;
   /// The client_id_prefix of client `name` ("a" or "b"), as the script wrote it.
-  std::uint32_t client_prefix(const std::string& name) const;
+  std::uint32_t client_prefix(const std::string& name) const { return prefix_of("client-" + name); }
+  /// The client_id_prefix of any identity that asks the service (client-*, console-*).
+  std::uint32_t prefix_of(const std::string& identity) const;
 
  private:
   std::string dir_;
