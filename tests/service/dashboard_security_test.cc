@@ -14,6 +14,7 @@
 
 #include "clients/dashboard/query_panel.h"
 #include "tests/service/secure_cell.h"
+#include "tests/service/secure_cell_test.h"
 #include "tests/service/service_process.h"
 
 // After the headers that include Eigen: httplib.h brings <resolv.h>, whose macro _res clashes
@@ -29,13 +30,23 @@ constexpr const char* kQuery =
 constexpr const char* kWhy = "may not ask the service";
 constexpr const char* kWhatToDo = "--client-id-prefix";
 
-class SecureDashboard : public testing::Test {
+/// An HTTP GET's status (-1 when nothing answered) and body.
+struct HttpAnswer {
+  int status = -1;
+  std::string body;
+};
+
+HttpAnswer http_get(int port, const std::string& path) {
+  httplib::Client http("127.0.0.1", port);
+  http.set_read_timeout(60, 0);
+  const auto answer = http.Get(path);
+  return answer ? HttpAnswer{answer->status, answer->body} : HttpAnswer{};
+}
+
+class SecureDashboard : public test::SecureCellTest {
  protected:
   void SetUp() override {
-    if (!test::security_plugins_installed()) {
-      GTEST_SKIP() << "Cyclone DDS Security plugins are not installed";
-    }
-    cell_ = std::make_unique<test::SecureCell>("--console main");
+    make_cell("--console main");
   }
   /// gearcoupling-dashboard under `identity` on a free port, with `args` and `environment`
   /// added; its port once it printed it (0 when it did not within 30 s).
@@ -62,7 +73,6 @@ class SecureDashboard : public testing::Test {
         std::vector<std::string>{}, cell_->dir() + "/service.log",
         std::vector<std::pair<std::string, std::string>>{{"CYCLONEDDS_URI", cell_->uri("service-main")}});
   }
-  std::unique_ptr<test::SecureCell> cell_;
   std::vector<std::unique_ptr<test::ChildProcess>> dashboards_;
 };
 
@@ -72,40 +82,29 @@ TEST_F(SecureDashboard, UnderAConsoleIdentityItsPrefixFromTheEnvironmentLetsTheP
       "console-main", {},
       {{"GC_CLIENT_ID_PREFIX", fmt::format("{:08x}", cell_->prefix_of("console-main"))}});
   ASSERT_GT(port, 0);
-  httplib::Client http("127.0.0.1", port);
-  http.set_read_timeout(60, 0);
-  const auto answer = http.Get(kQuery);
-  ASSERT_TRUE(answer);
-  EXPECT_EQ(answer->status, 200) << answer->body;
-  EXPECT_NE(answer->body.find("\"jam_angle\""), std::string::npos) << answer->body;
+  const HttpAnswer answer = http_get(port, kQuery);
+  EXPECT_EQ(answer.status, 200) << answer.body;
+  EXPECT_NE(answer.body.find("\"jam_angle\""), std::string::npos) << answer.body;
 }
 
 TEST_F(SecureDashboard, UnderAConsoleIdentityWithoutItsPrefixThePanelSaysWhatToDo) {
   const auto service = start_service();
   const int port = start_dashboard("console-main", {"--client-id-prefix", ""});
   ASSERT_GT(port, 0);
-  httplib::Client http("127.0.0.1", port);
-  http.set_read_timeout(60, 0);
-  const auto answer = http.Get(kQuery);
-  ASSERT_TRUE(answer);
-  EXPECT_EQ(answer->status, 403) << answer->body;
-  EXPECT_NE(answer->body.find(kWhatToDo), std::string::npos) << answer->body;
+  const HttpAnswer answer = http_get(port, kQuery);
+  EXPECT_EQ(answer.status, 403) << answer.body;
+  EXPECT_NE(answer.body.find(kWhatToDo), std::string::npos) << answer.body;
 }
 
 TEST_F(SecureDashboard, UnderADashboardIdentityThePanelSaysWhyAndWhatToDoAndTheRestWorks) {
   const auto service = start_service();
   const int port = start_dashboard("dashboard-main", {});
   ASSERT_GT(port, 0);
-  httplib::Client http("127.0.0.1", port);
-  http.set_read_timeout(60, 0);
-  const auto answer = http.Get(kQuery);
-  ASSERT_TRUE(answer);
-  EXPECT_EQ(answer->status, 403) << answer->body;
-  EXPECT_NE(answer->body.find(kWhy), std::string::npos) << answer->body;
-  EXPECT_NE(answer->body.find(kWhatToDo), std::string::npos) << answer->body;
-  const auto state = http.Get("/api/state");
-  ASSERT_TRUE(state);
-  EXPECT_EQ(state->status, 200);
+  const HttpAnswer answer = http_get(port, kQuery);
+  EXPECT_EQ(answer.status, 403) << answer.body;
+  EXPECT_NE(answer.body.find(kWhy), std::string::npos) << answer.body;
+  EXPECT_NE(answer.body.find(kWhatToDo), std::string::npos) << answer.body;
+  EXPECT_EQ(http_get(port, "/api/state").status, 200);
 }
 
 TEST_F(SecureDashboard, UnderADashboardIdentityWithAClientsPrefixThePanelStillSaysWhy) {

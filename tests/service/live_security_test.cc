@@ -16,6 +16,7 @@
 #include "live/replay.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/secure_cell.h"
+#include "tests/service/secure_cell_test.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -51,13 +52,10 @@ dds_return_t try_live_endpoint(dds_entity_t participant, TopicMaker make_topic, 
   }
 }
 
-class LiveRoles : public testing::Test {
+class LiveRoles : public test::SecureCellTest {
  protected:
   void SetUp() override {
-    if (!test::security_plugins_installed()) {
-      GTEST_SKIP() << "Cyclone DDS Security plugins are not installed";
-    }
-    cell_ = std::make_unique<test::SecureCell>("--monitor m --cell c --operator o");
+    make_cell("--monitor m --cell c --operator o");
   }
   std::unique_ptr<test::ChildProcess> start_monitor() const {
     return std::make_unique<test::ChildProcess>(
@@ -66,7 +64,6 @@ class LiveRoles : public testing::Test {
         cell_->dir() + "/monitor.log",
         std::vector<std::pair<std::string, std::string>>{{"CYCLONEDDS_URI", cell_->uri("monitor-m")}});
   }
-  std::unique_ptr<test::SecureCell> cell_;
 };
 
 TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOperatorSwapsTheModel) {

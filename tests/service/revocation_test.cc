@@ -13,6 +13,7 @@
 #include "protocol/dds_entity.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/secure_cell.h"
+#include "tests/service/secure_cell_test.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -28,14 +29,11 @@ constexpr int kRevokedWithCrlDomain = 222;
 
 constexpr const char* kLoopback = "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml";
 
-class Revocation : public testing::Test {
+class Revocation : public test::SecureCellTest {
  protected:
   void SetUp() override {
-    if (!test::security_plugins_installed()) {
-      GTEST_SKIP() << "Cyclone DDS Security plugins are not installed";
-    }
-    cell_ = std::make_unique<test::SecureCell>();
-    cell_->rerun("--revoke client-b");
+    make_cell();
+    if (!IsSkipped()) cell_->rerun("--revoke client-b");
   }
   client::ClientOptions options(int local_id, const std::string& name) const {
     return {local_id, std::chrono::seconds(10), cell_->client_prefix(name)};
@@ -49,7 +47,6 @@ class Revocation : public testing::Test {
     cli::testing::write_file(path, config);
     return std::string(kLoopback) + ",file://" + path;
   }
-  std::unique_ptr<test::SecureCell> cell_;
 };
 
 TEST_F(Revocation, TheCrlListsTheRevokedCertificateOnlyAndEveryConfigurationNamesIt) {

@@ -27,6 +27,7 @@
 #include "protocol/topics.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/secure_cell.h"
+#include "tests/service/secure_cell_test.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -190,15 +191,9 @@ void expect_forgeries_refused(client::Client& victim, dds_entity_t forger_partic
 
 // ---- the script ---------------------------------------------------------------------------
 
-class SecurityScript : public testing::Test {
+class SecurityScript : public test::SecureCellTest {
  protected:
-  void SetUp() override {
-    if (!test::security_plugins_installed()) {
-      GTEST_SKIP() << "Cyclone DDS Security plugins (libdds_security_{auth,ac,crypto}.so in "
-                      "/usr/lib/x86_64-linux-gnu/libddsc0debian) are not installed";
-    }
-    cell_ = std::make_unique<test::SecureCell>();
-  }
+  void SetUp() override { make_cell(); }
   std::map<std::string, std::string> files() const {
     std::map<std::string, std::string> out;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(cell_->dir())) {
@@ -206,7 +201,6 @@ class SecurityScript : public testing::Test {
     }
     return out;
   }
-  std::unique_ptr<test::SecureCell> cell_;
 };
 
 TEST_F(SecurityScript, ASecondRunChangesNoFile) {
