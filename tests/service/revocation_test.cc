@@ -64,6 +64,27 @@ TEST_F(Revocation, TheCrlListsTheRevokedCertificateOnlyAndEveryConfigurationName
   }
 }
 
+TEST_F(Revocation, ARerunWithOrWithoutTheRevocationChangesNoFile) {
+  const auto before = cell_->files();
+  cell_->rerun("--revoke client-b");
+  EXPECT_EQ(cell_->files(), before);
+  cell_->rerun({});  // revoked for good: the database keeps it
+  EXPECT_EQ(cell_->files(), before);
+}
+
+TEST_F(Revocation, ABadOrUnknownIdentityIsRefusedNamingIt) {
+  const std::string script = GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir();
+  const test::ShellResult bad = test::run_shell(script + " --revoke b");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("--revoke \"b\": allowed an identity ROLE-NAME, ROLE one of service "
+                            "client dashboard console monitor cell operator"),
+            std::string::npos) << bad.output;
+  const test::ShellResult unknown = test::run_shell(script + " --client a --revoke client-zz");
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.output.find("--revoke client-zz: no certificate"), std::string::npos)
+      << unknown.output;
+}
+
 TEST_F(Revocation, ARevokedClientFindsNoServiceAndANonRevokedOneWithTheSameCrlIsAnswered) {
   test::ServiceProcess service({}, cell_->dir() + "/service.log",
                                {{"CYCLONEDDS_URI", cell_->uri("service-main")}});

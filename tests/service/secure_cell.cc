@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "tests/service/service_process.h"
@@ -61,6 +62,16 @@ SecureCell::~SecureCell() {
 
 std::string SecureCell::uri(const std::string& identity, const std::string& network) const {
   return (network.empty() ? std::string(kLoopback) : network) + ",file://" + dir_ + "/" + identity + "/security.xml";
+}
+
+std::map<std::string, std::string> SecureCell::files() const {
+  std::map<std::string, std::string> out;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir_)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    out[entry.path()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return out;
 }
 
 std::uint32_t SecureCell::prefix_of(const std::string& identity) const {

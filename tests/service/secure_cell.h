@@ -8,6 +8,7 @@
 #include <dds/dds.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "protocol/dds_entity.h"
@@ -34,6 +35,8 @@ class SecureCell {
   /// CYCLONEDDS_URI for a process of `identity`: the network configuration `network` (a
   /// file:// URI; the loopback one unless given) plus its security.xml.
   std::string uri(const std::string& identity, const std::string& network = {}) const;
+  /// Every file under dir() (path: content), to compare a rerun's output byte for byte.
+  std::map<std::string, std::string> files() const;
   /// The client_id_prefix of client `name` ("a" or "b"), as the script wrote it.
   std::uint32_t client_prefix(const std::string& name) const { return prefix_of("client-" + name); }
   /// The client_id_prefix of any identity that asks the service (client-*, console-*).

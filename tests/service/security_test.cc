@@ -194,24 +194,17 @@ void expect_forgeries_refused(client::Client& victim, dds_entity_t forger_partic
 class SecurityScript : public test::SecureCellTest {
  protected:
   void SetUp() override { make_cell(); }
-  std::map<std::string, std::string> files() const {
-    std::map<std::string, std::string> out;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(cell_->dir())) {
-      if (entry.is_regular_file()) out[entry.path()] = cli::testing::read_file(entry.path());
-    }
-    return out;
-  }
 };
 
 TEST_F(SecurityScript, ASecondRunChangesNoFile) {
-  const auto before = files();
+  const auto before = cell_->files();
   // 2 CAs (4 files + serial), the CRL and its database (2), governance (2), 4 identities with
   // 5 files, 2 client prefixes.
   EXPECT_EQ(before.size(), 5u + 2u + 2u + 4u * 5u + 2u);
   const test::ShellResult again = test::run_shell(
       GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir() + " --client a --client b");
   ASSERT_EQ(again.exit_code, 0) << again.output;
-  EXPECT_EQ(files(), before);
+  EXPECT_EQ(cell_->files(), before);
 }
 
 TEST_F(SecurityScript, DocumentsVerifyAgainstThePermissionsCaAndCertificatesAgainstTheIdentityCa) {
