@@ -13,8 +13,8 @@ inline constexpr const char* kClientIdPrefixEnv = "GC_CLIENT_ID_PREFIX";
 
 /// What the flag says in --help.
 inline constexpr const char* kClientIdPrefixHelp =
-    "with DDS Security: the client_id_prefix of this identity, the 8 hex digits written next to "
-    "its certificate (docs/security.md; $GC_CLIENT_ID_PREFIX)";
+    "the client_id_prefix of this identity under DDS Security: the 8 hex digits written next "
+    "to its certificate (docs/security.md; $GC_CLIENT_ID_PREFIX)";
 
 /// $GC_CLIENT_ID_PREFIX, or "" when it is not set.
 std::string client_id_prefix_from_environment();

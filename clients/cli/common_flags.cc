@@ -37,7 +37,7 @@ std::vector<FlagSpec> calculator_flags(bool json) {
       domain_flag("DDS domain of the service, with --remote"),
       {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
        '\0', {"timeout"}},
-      {"client-id-prefix", "HEX8", std::string("with --remote: ") + kClientIdPrefixHelp,
+      {"client-id-prefix", "HEX8", std::string("with --remote, ") + kClientIdPrefixHelp,
        client_id_prefix_from_environment()},
   };
   if (json) flags.push_back(json_flag());

@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 60.0))
       ->capture_default_str();
   app.add_option("--client-id-prefix", client_id_prefix,
-                 std::string("the query panel's client identity: ") + gc::cli::kClientIdPrefixHelp);
+                 std::string("for the query panel, ") + gc::cli::kClientIdPrefixHelp);
   try {
     app.parse(argc, argv);
     parse_listen(listen, options);
