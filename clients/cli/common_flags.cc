@@ -1,7 +1,6 @@
-#include <cstdlib>
-
 #include <fmt/format.h>
 
+#include "clients/cli/client_id_prefix_flag.h"
 #include "clients/cli/subcommand.h"
 #include "codec/coupling_catalog.h"
 #include "codec/result_json.h"
@@ -38,10 +37,8 @@ std::vector<FlagSpec> calculator_flags(bool json) {
       domain_flag("DDS domain of the service, with --remote"),
       {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
        '\0', {"timeout"}},
-      {"client-id-prefix", "HEX8",
-       "with --remote and DDS Security: the client_id_prefix of this identity "
-       "(docs/security.md; $GC_CLIENT_ID_PREFIX)",
-       std::getenv("GC_CLIENT_ID_PREFIX") != nullptr ? std::getenv("GC_CLIENT_ID_PREFIX") : ""},
+      {"client-id-prefix", "HEX8", std::string("with --remote, ") + kClientIdPrefixHelp,
+       client_id_prefix_from_environment()},
   };
   if (json) flags.push_back(json_flag());
   return flags;

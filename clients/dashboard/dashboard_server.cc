@@ -27,6 +27,7 @@ client::ClientOptions query_client_options(const DashboardOptions& options) {
   client::ClientOptions client;
   client.domain = options.domain;
   client.timeout = options.query_timeout;
+  client.client_id_prefix = options.client_id_prefix;
   return client;
 }
 

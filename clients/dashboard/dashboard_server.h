@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <thread>
@@ -33,6 +34,8 @@ struct DashboardOptions {
   std::size_t queue_capacity = 16;
   /// The query panel's wait for the service, discovery included.
   std::chrono::milliseconds query_timeout{5000};
+  /// The query panel's client_id_prefix under DDS Security (client::ClientOptions); 0: none.
+  std::uint32_t client_id_prefix = 0;
 };
 
 class DashboardServer {

@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "clients/cli/client_id_prefix_flag.h"
+#include "clients/cli/command_line.h"
 #include "clients/dashboard/dashboard_server.h"
 #include "parallel/shutdown_signals.h"
 #include "protocol/domain_id.h"
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
   std::string listen = "127.0.0.1:8080";
   int update_hz = 10;
   double query_timeout_s = 5.0;
+  std::string client_id_prefix = gc::cli::client_id_prefix_from_environment();
   CLI::App app{
       "gearcoupling-dashboard: the service instances, the live test cells and a query panel in "
       "the browser, and /metrics for Prometheus (docs/dashboard.md). Reads DDS; writes only the "
@@ -60,12 +63,18 @@ int main(int argc, char** argv) {
   app.add_option("--query-timeout", query_timeout_s, "the query panel's wait for the service [s]")
       ->check(CLI::Range(0.1, 60.0))
       ->capture_default_str();
+  app.add_option("--client-id-prefix", client_id_prefix,
+                 std::string("for the query panel, ") + gc::cli::kClientIdPrefixHelp);
   try {
     app.parse(argc, argv);
     parse_listen(listen, options);
+    options.client_id_prefix = gc::cli::parse_client_id_prefix(client_id_prefix);
   } catch (const CLI::ParseError& error) {
     // --help exits 0; bad flags exit 2, as the other programs' bad input does.
     return app.exit(error) == 0 ? 0 : kBadInput;
+  } catch (const gc::cli::UsageError& error) {
+    std::fprintf(stderr, "gearcoupling-dashboard: %s\n", error.what());
+    return kBadInput;
   }
   options.update_interval = std::chrono::milliseconds(1000 / update_hz);
   options.query_timeout = std::chrono::milliseconds(static_cast<long>(query_timeout_s * 1000));

@@ -3,14 +3,16 @@
 #include <optional>
 #include <stdexcept>
 
+#include <dds/dds.h>
 #include <fmt/format.h>
+#include <google/protobuf/struct.pb.h>
 
 #include "analysis/number_text.h"
 #include "codec/angle_units.h"
 #include "codec/result_json.h"
 #include "codec/result_messages.h"
 #include "core/model_error.h"
-#include <google/protobuf/struct.pb.h>
+#include "protocol/dds_error.h"
 
 namespace gc::dashboard {
 namespace {
@@ -41,9 +43,42 @@ std::string error_json(const std::string& message) {
   return fmt::format("{{\"error\":{}}}", codec::to_compact_json(text));
 }
 
+bool refused_by_security(const protocol::DdsError& error) {
+  return error.code() == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY;
+}
+
 }  // namespace
 
+QueryPanel::QueryPanel(client::ClientOptions options) {
+  try {
+    calculator_ = std::make_unique<cli::RemoteCalculator>(options);
+  } catch (const protocol::DdsError& error) {
+    if (!refused_by_security(error)) throw;
+    refusal_ = refusal_message(error.what());
+  }
+}
+
+std::string QueryPanel::refusal_message(const std::string& dds_error) {
+  return "the query panel may not ask the service: DDS Security does not let this dashboard's "
+         "identity send requests or read replies (a dashboard-* identity of "
+         "deploy/security/make-security.sh may only read the status and the live test cells). "
+         "To use the panel, run gearcoupling-dashboard under a console identity "
+         "(make-security.sh --console NAME; CYCLONEDDS_URI naming console-NAME/security.xml) "
+         "with --client-id-prefix (or GC_CLIENT_ID_PREFIX) set to its client_id_prefix file "
+         "(docs/security.md). DDS said: " + dds_error;
+}
+
 JsonAnswer QueryPanel::answer(const std::map<std::string, std::string>& parameters) const {
+  if (calculator_ == nullptr) return {403, error_json(refusal_)};
+  try {
+    return compute(parameters);
+  } catch (const protocol::DdsError& error) {
+    if (refused_by_security(error)) return {403, error_json(refusal_message(error.what()))};
+    return {503, error_json(error.what())};
+  }
+}
+
+JsonAnswer QueryPanel::compute(const std::map<std::string, std::string>& parameters) const {
   try {
     const auto coupling = parameters.find("coupling");
     if (coupling == parameters.end() || coupling->second.empty()) {
@@ -56,9 +91,9 @@ JsonAnswer QueryPanel::answer(const std::map<std::string, std::string>& paramete
         .direction_rad = codec::radians_from_degrees(number(parameters, "direction_deg", 0.0)),
         .friction_coefficient = number(parameters, "friction_coefficient", 0.0)};
     const std::string& name = coupling->second;
-    const cli::JamAngleReport jam = calculator_.jam_angle(name);
-    const cli::LoadCase load_case = calculator_.load_case(name, point, ContactOptions{});
-    const std::string coupling_name = calculator_.coupling_name(name);
+    const cli::JamAngleReport jam = calculator_->jam_angle(name);
+    const cli::LoadCase load_case = calculator_->load_case(name, point, ContactOptions{});
+    const std::string coupling_name = calculator_->coupling_name(name);
     return {200, fmt::format(
                      "{{\"jam_angle\":{},\"moments\":{},\"contact\":{}}}",
                      codec::to_compact_json(codec::to_message(coupling_name, jam.jam,
@@ -73,6 +108,8 @@ JsonAnswer QueryPanel::answer(const std::map<std::string, std::string>& paramete
     return {400, error_json(error.what())};
   } catch (const ModelError& error) {
     return {422, error_json(error.what())};
+  } catch (const protocol::DdsError&) {
+    throw;  // answer() tells a security refusal from the rest
   } catch (const std::exception& error) {
     return {503, error_json(error.what())};
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 
 #include "clients/cli/remote_calculator.h"
@@ -19,18 +20,30 @@ struct JsonAnswer {
 
 class QueryPanel {
  public:
-  explicit QueryPanel(client::ClientOptions options) : calculator_(options) {}
+  /// Joins the domain as a client. Under DDS Security, an identity that may not ask the service
+  /// (a dashboard-* identity, or a console's without its prefix) does not stop the dashboard:
+  /// the panel answers every query with 403 and why (refusal_message). Throws
+  /// protocol::DdsError for any other failure.
+  explicit QueryPanel(client::ClientOptions options);
 
   /// Parameters: coupling (a catalogue name), torque_nm [N m], misalignment_deg [deg],
   /// direction_deg [deg, default 0], friction_coefficient [-, default 0]. 200 with
   /// {"jam_angle": JamAngleResult, "moments": InducedMomentsResult, "contact":
   /// ToothContactResult} (idl/results.proto, as the CLI's --json); 400 naming the parameter when
   /// one is missing or not a number; 422 with the model's message (naming the field, its value
-  /// and the allowed range) when the service refuses the input; 503 when no instance answers.
+  /// and the allowed range) when the service refuses the input; 403 when DDS Security does not
+  /// let this identity ask (refusal_message); 503 when no instance answers.
   JsonAnswer answer(const std::map<std::string, std::string>& parameters) const;
 
+  /// The 403 text: this identity may not send requests or read replies, why (its grants), what
+  /// to do (run under a console identity with its --client-id-prefix), and DDS's own words.
+  static std::string refusal_message(const std::string& dds_error);
+
  private:
-  cli::RemoteCalculator calculator_;
+  JsonAnswer compute(const std::map<std::string, std::string>& parameters) const;
+
+  std::unique_ptr<cli::RemoteCalculator> calculator_;  ///< null when security refused it
+  std::string refusal_;                                ///< why, when it did
 };
 
 }  // namespace gc::dashboard

@@ -2,23 +2,31 @@
 # Makes everything DDS Security needs for a gearcoupling test cell (docs/security.md):
 #
 #   bash deploy/security/make-security.sh OUT_DIR [--service NAME]... [--client NAME]...
-#                                                 [--dashboard NAME]... [--days N]
+#        [--dashboard NAME]... [--console NAME]... [--monitor NAME]... [--cell NAME]...
+#        [--operator NAME]...
+#        [--revoke IDENTITY]... [--days N]
 #
 #   OUT_DIR/ca/identity_ca.pem, permissions_ca.pem    the two CA certificates (every host)
 #   OUT_DIR/ca/*_key.pem                              the CA keys (stay on the CA machine)
+#   OUT_DIR/ca/identity_crl.pem                       revoked identities, signed (every host)
+#   OUT_DIR/ca/identity_db/                           the identity CA's openssl database
 #   OUT_DIR/governance.xml, governance.p7s            domain rules, S/MIME-signed (every host)
 #   OUT_DIR/<identity>/cert.pem, key.pem              the identity (only that host)
 #   OUT_DIR/<identity>/permissions.xml, .p7s          what it may publish and read, signed
 #   OUT_DIR/<identity>/security.xml                   Cyclone <Security> fragment naming the above
-#   OUT_DIR/client-<NAME>/client_id_prefix            8 hex digits: the client's ids start with them
+#   OUT_DIR/{client,console}-<NAME>/client_id_prefix  8 hex digits: the client's ids start with them
 #
 # Identities: "service-<NAME>" (default one: service-main), "client-<NAME>" (default: client-cell),
-# "dashboard-<NAME>" (default: dashboard-main). Idempotent: what exists and is still valid is kept
-# (keys, certificates, signatures), so a second run changes no byte; a document is signed again
-# only when its content changes, a certificate is made again only when it no longer verifies.
+# "dashboard-<NAME>" (default: dashboard-main); "console-<NAME>", a dashboard whose query panel
+# may ask the service (a dashboard's and a client's rights); the live test cell's "monitor-<NAME>",
+# "cell-<NAME>" and "operator-<NAME>" (none by default). --revoke IDENTITY puts that identity's
+# certificate on the CRL for good (every security.xml names the CRL). Idempotent: what exists and
+# is still valid is kept (keys, certificates, signatures, the CRL), so a second run changes no
+# byte; a document is signed again only when its content changes, a certificate is made again
+# only when it no longer verifies, the CRL only when the revoked set changes or it nears expiry.
 set -euo pipefail
 
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 fail() { echo "make-security.sh: $*" >&2; exit 1; }
 
 LIB_DIR="${GC_DDS_SECURITY_LIB_DIR:-/usr/lib/x86_64-linux-gnu/libddsc0debian}"
@@ -27,20 +35,36 @@ REQUEST_TOPICS="gearcoupling/*/request"
 REPLY_TOPICS="gearcoupling/*/reply"
 STATUS_TOPIC="gearcoupling/status"
 STATUS_PARTITION="gearcoupling"
+# The live test cell's names (live/live_names.h): every topic in partition "gearcoupling.live".
+LIVE_PARTITION="gearcoupling.live"
+MEASUREMENT_TOPIC="gearcoupling/live/measurement"
+RESIDUAL_TOPIC="gearcoupling/live/residual"
+HEALTH_TOPIC="gearcoupling/live/health"
+MODEL_TOPIC="gearcoupling/live/model"
 SUBJECT_BASE="C=NL,O=gearcoupling"
 
 # ---- arguments --------------------------------------------------------------------------------
 [ $# -ge 1 ] || usage
 case "$1" in -h|--help) usage ;; esac
 OUT="$1"; shift
-SERVICES=(); CLIENTS=(); DASHBOARDS=(); DAYS=3650
+SERVICES=(); CLIENTS=(); DASHBOARDS=(); CONSOLES=(); MONITORS=(); CELLS=(); OPERATORS=(); REVOKED=(); DAYS=3650
+ROLES="service|client|dashboard|console|monitor|cell|operator"
 valid_name() { [[ "$1" =~ ^[a-z0-9][a-z0-9_-]{0,31}$ ]] || fail "$2 \"$1\": allowed 1-32 of a-z 0-9 _ -, starting with a letter or digit"; }
+valid_identity() {
+  [[ "$1" =~ ^($ROLES)-[a-z0-9][a-z0-9_-]{0,31}$ ]] \
+    || fail "--revoke \"$1\": allowed an identity ROLE-NAME, ROLE one of ${ROLES//|/ }"
+}
 while [ $# -gt 0 ]; do
   [ $# -ge 2 ] || fail "$1 needs a value"
   case "$1" in
     --service) valid_name "$2" --service; SERVICES+=("$2") ;;
     --client) valid_name "$2" --client; CLIENTS+=("$2") ;;
     --dashboard) valid_name "$2" --dashboard; DASHBOARDS+=("$2") ;;
+    --console) valid_name "$2" --console; CONSOLES+=("$2") ;;
+    --monitor) valid_name "$2" --monitor; MONITORS+=("$2") ;;
+    --cell) valid_name "$2" --cell; CELLS+=("$2") ;;
+    --operator) valid_name "$2" --operator; OPERATORS+=("$2") ;;
+    --revoke) valid_identity "$2"; REVOKED+=("$2") ;;
     --days) [[ "$2" =~ ^[0-9]+$ ]] && [ "$2" -ge 1 ] && [ "$2" -le 36500 ] \
               || fail "--days \"$2\": allowed an integer in [1, 36500]"; DAYS="$2" ;;
     *) fail "unknown argument \"$1\" (see --help)" ;;
@@ -171,15 +195,55 @@ client_rules() {
   criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
 }
 
-# The dashboard reads: the status, and the live monitor's health and residuals (issue 12).
-dashboard_rules() {
-  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
-  criteria subscribe "gearcoupling/live/health" "gearcoupling.live"
-  criteria subscribe "gearcoupling/live/residual" "gearcoupling.live"
+# What a dashboard shows of the live test cells: the monitor's health and residuals (issue 12).
+live_view_rules() {
+  criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
 }
 
-# The top 32 bits of every client_id of client NAME: from a hash of the name, so reruns agree.
-client_prefix() { printf '%s' "client-$1" | sha256sum | cut -c1-8; }
+# The dashboard reads: the status and the live view.
+dashboard_rules() {
+  criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
+  live_view_rules
+}
+
+# A console: a dashboard whose query panel asks the service, so a client (prefix $1) as well.
+console_rules() {
+  client_rules "$1"
+  live_view_rules
+}
+
+# The monitor (gearcoupling-monitor): reads measurements and model swaps, publishes the health
+# and residuals. It sends no requests.
+monitor_rules() {
+  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$MODEL_TOPIC" "$LIVE_PARTITION"
+  criteria publish "$HEALTH_TOPIC" "$LIVE_PARTITION"
+  criteria publish "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
+}
+
+# The test cell's measurement side: gearcoupling replay publishes, gearcoupling record reads.
+cell_rules() {
+  criteria publish "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
+}
+
+# The operator: gearcoupling swap-model publishes a model and reads the health to see it taken.
+operator_rules() {
+  criteria publish "$MODEL_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
+}
+
+# The top 32 bits of every client_id of identity ID: from a hash of its name, so reruns agree.
+client_prefix() { printf '%s' "$1" | sha256sum | cut -c1-8; }
+
+# make_requester ID RULES_FUNCTION: a member that asks the service, with its client_id_prefix.
+make_requester() {
+  local prefix; prefix="$(client_prefix "$1")"
+  [ "$prefix" != 00000000 ] || fail "$1: its id prefix would be 0; choose another name"
+  make_member "$1" "$2" "$prefix"
+  echo "$prefix" | write_if_changed "$OUT/$1/client_id_prefix"
+}
 
 security_fragment() {
   cat <<XML
@@ -194,6 +258,7 @@ security_fragment() {
         <IdentityCA>file:$OUT/ca/identity_ca.pem</IdentityCA>
         <IdentityCertificate>file:$OUT/$1/cert.pem</IdentityCertificate>
         <PrivateKey>file:$OUT/$1/key.pem</PrivateKey>
+        <CRL>file:$OUT/ca/identity_crl.pem</CRL>
       </Authentication>
       <AccessControl>
         <Library path="$LIB_DIR/libdds_security_ac.so" initFunction="init_access_control" finalizeFunction="finalize_access_control"/>
@@ -218,6 +283,56 @@ make_member() {
   security_fragment "$1" | write_if_changed "$OUT/$1/security.xml"
 }
 
+# ---- revocation -------------------------------------------------------------------------------
+CA_DB="$OUT/ca/identity_db"
+CRL="$OUT/ca/identity_crl.pem"
+
+# The identity CA's openssl "ca" configuration: a database of revoked certificates (index.txt).
+ca_config() {
+  cat <<CNF
+[ca]
+default_ca = identity_ca
+[identity_ca]
+database = $CA_DB/index.txt
+new_certs_dir = $CA_DB
+certificate = $OUT/ca/identity_ca.pem
+private_key = $OUT/ca/identity_ca_key.pem
+default_md = sha256
+default_crl_days = $DAYS
+unique_subject = no
+CNF
+}
+
+# Serial numbers (upper-case hex) the database holds as revoked, sorted.
+revoked_in_db() { awk -F '\t' '$1 == "R" { print toupper($4) }' "$CA_DB/index.txt" | sort; }
+# Serial numbers the CRL lists, sorted.
+revoked_in_crl() {
+  openssl crl -in "$CRL" -noout -text | sed -n 's/^ *Serial Number: *//p' | tr 'a-f' 'A-F' | sort
+}
+
+# revoke ID: puts ID's certificate in the database as revoked, unless it is already.
+revoke() {
+  local cert="$OUT/$1/cert.pem" serial
+  [ -f "$cert" ] || fail "--revoke $1: no certificate $cert to revoke (made by an earlier run)"
+  serial="$(openssl x509 -in "$cert" -noout -serial | cut -d= -f2 | tr 'a-f' 'A-F')"
+  if revoked_in_db | grep -qx "$serial"; then return; fi
+  openssl ca -config <(ca_config) -revoke "$cert" -crl_reason keyCompromise 2>/dev/null \
+    || fail "--revoke $1: openssl ca -revoke failed"
+}
+
+# The CRL: kept while it verifies against the identity CA, lists exactly the revoked serials and
+# is valid for another day; else signed again, valid --days.
+make_crl() {
+  if [ -f "$CRL" ] && openssl crl -in "$CRL" -CAfile "$OUT/ca/identity_ca.pem" -noout 2>/dev/null \
+     && [ "$(date -u -d "$(openssl crl -in "$CRL" -noout -nextupdate | cut -d= -f2)" +%s)" -gt "$(( $(date -u +%s) + 86400 ))" ] \
+     && [ "$(revoked_in_crl)" = "$(revoked_in_db)" ]; then
+    return
+  fi
+  openssl ca -config <(ca_config) -gencrl -crldays "$DAYS" -out "$CRL.tmp" 2>/dev/null \
+    || fail "openssl ca -gencrl failed"
+  chmod 644 "$CRL.tmp"; mv "$CRL.tmp" "$CRL"
+}
+
 # ---- the cell ---------------------------------------------------------------------------------
 make_ca identity_ca "gearcoupling identity CA" keyCertSign,cRLSign
 # The permissions CA signs the documents itself (S/MIME): it needs digitalSignature too.
@@ -225,12 +340,17 @@ make_ca permissions_ca "gearcoupling permissions CA" keyCertSign,cRLSign,digital
 write_if_changed "$OUT/governance.xml" <"$(dirname "$0")/governance.xml"
 sign "$OUT/governance"
 for name in "${SERVICES[@]}"; do make_member "service-$name" service_rules; done
-for name in "${CLIENTS[@]}"; do
-  prefix="$(client_prefix "$name")"
-  [ "$prefix" != 00000000 ] || fail "--client $name: its id prefix would be 0; choose another name"
-  make_member "client-$name" client_rules "$prefix"
-  echo "$prefix" | write_if_changed "$OUT/client-$name/client_id_prefix"
-done
+for name in "${CLIENTS[@]}"; do make_requester "client-$name" client_rules; done
 for name in "${DASHBOARDS[@]}"; do make_member "dashboard-$name" dashboard_rules; done
-rm -f "$OUT/ca/"*.srl.old
-echo "DDS Security files for ${#SERVICES[@]} service, ${#CLIENTS[@]} client and ${#DASHBOARDS[@]} dashboard identities in $OUT"
+for name in ${CONSOLES[@]+"${CONSOLES[@]}"}; do make_requester "console-$name" console_rules; done
+for name in ${MONITORS[@]+"${MONITORS[@]}"}; do make_member "monitor-$name" monitor_rules; done
+for name in ${CELLS[@]+"${CELLS[@]}"}; do make_member "cell-$name" cell_rules; done
+for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do make_member "operator-$name" operator_rules; done
+mkdir -p "$CA_DB"
+[ -f "$CA_DB/index.txt" ] || : >"$CA_DB/index.txt"
+for id in ${REVOKED[@]+"${REVOKED[@]}"}; do revoke "$id"; done
+make_crl
+rm -f "$OUT/ca/"*.srl.old "$CA_DB/"*.old
+echo "DDS Security files for ${#SERVICES[@]} service, ${#CLIENTS[@]} client, ${#DASHBOARDS[@]} dashboard, ${#CONSOLES[@]} console," \
+  "${#MONITORS[@]} monitor, ${#CELLS[@]} cell and ${#OPERATORS[@]} operator identities in $OUT;" \
+  "$(revoked_in_db | wc -l) revoked"

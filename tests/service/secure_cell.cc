@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "tests/service/service_process.h"
@@ -38,12 +39,16 @@ ShellResult run_shell(const std::string& command) {
   return result;
 }
 
-SecureCell::SecureCell() {
+SecureCell::SecureCell(const std::string& more_args) : args_("--client a --client b " + more_args) {
   char pattern[] = "/tmp/gc-security-XXXXXX";
   if (mkdtemp(pattern) == nullptr) throw std::runtime_error("mkdtemp failed");
   dir_ = pattern;
+  rerun({});
+}
+
+void SecureCell::rerun(const std::string& more_args) const {
   const ShellResult made = run_shell(GC_SOURCE_DIR "/deploy/security/make-security.sh " + dir_ +
-                                     " --client a --client b");
+                                     " " + args_ + " " + more_args);
   if (made.exit_code != 0) {
     throw std::runtime_error("make-security.sh failed (" + std::to_string(made.exit_code) +
                              "): " + made.output);
@@ -59,8 +64,18 @@ std::string SecureCell::uri(const std::string& identity, const std::string& netw
   return (network.empty() ? std::string(kLoopback) : network) + ",file://" + dir_ + "/" + identity + "/security.xml";
 }
 
-std::uint32_t SecureCell::client_prefix(const std::string& name) const {
-  std::ifstream in(dir_ + "/client-" + name + "/client_id_prefix");
+std::map<std::string, std::string> SecureCell::files() const {
+  std::map<std::string, std::string> out;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir_)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    out[entry.path()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return out;
+}
+
+std::uint32_t SecureCell::prefix_of(const std::string& identity) const {
+  std::ifstream in(dir_ + "/" + identity + "/client_id_prefix");
   std::string hex;
   in >> hex;
   return static_cast<std::uint32_t>(std::stoul(hex, nullptr, 16));

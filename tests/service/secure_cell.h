@@ -1,5 +1,6 @@
 // A DDS Security test cell made at test time: deploy/security/make-security.sh writes a CA,
-// identities (service-main, client-a, client-b, dashboard-main) and signed documents into a
+// identities (service-main, client-a, client-b, dashboard-main, and any the test adds) and
+// signed documents into a
 // fresh temporary directory, and these helpers give processes and in-process domains those
 // identities on the test's own domain, over loopback.
 #pragma once
@@ -7,6 +8,7 @@
 #include <dds/dds.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "protocol/dds_entity.h"
@@ -18,23 +20,31 @@ bool security_plugins_installed();
 
 class SecureCell {
  public:
-  /// Runs the script into a fresh temporary directory; throws std::runtime_error with its
-  /// output when it fails.
-  SecureCell();
+  /// Runs the script into a fresh temporary directory with "--client a --client b" and
+  /// `more_args` (e.g. "--monitor m"); throws std::runtime_error with its output when it fails.
+  explicit SecureCell(const std::string& more_args = {});
   /// Removes the directory.
   ~SecureCell();
   SecureCell(const SecureCell&) = delete;
   SecureCell& operator=(const SecureCell&) = delete;
 
   const std::string& dir() const { return dir_; }
+  /// Runs the script again on this directory with the constructor's arguments and `more_args`
+  /// (e.g. "--revoke client-b"); throws std::runtime_error with its output when it fails.
+  void rerun(const std::string& more_args) const;
   /// CYCLONEDDS_URI for a process of `identity`: the network configuration `network` (a
   /// file:// URI; the loopback one unless given) plus its security.xml.
   std::string uri(const std::string& identity, const std::string& network = {}) const;
+  /// Every file under dir() (path: content), to compare a rerun's output byte for byte.
+  std::map<std::string, std::string> files() const;
   /// The client_id_prefix of client `name` ("a" or "b"), as the script wrote it.
-  std::uint32_t client_prefix(const std::string& name) const;
+  std::uint32_t client_prefix(const std::string& name) const { return prefix_of("client-" + name); }
+  /// The client_id_prefix of any identity that asks the service (client-*, console-*).
+  std::uint32_t prefix_of(const std::string& identity) const;
 
  private:
   std::string dir_;
+  std::string args_;
 };
 
 /// Runs `command` with /bin/sh; its exit status and what it printed (standard output and error).

@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -27,6 +26,7 @@
 #include "protocol/topics.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/secure_cell.h"
+#include "tests/service/secure_cell_test.h"
 #include "tests/service/service_process.h"
 
 namespace gc {
@@ -190,33 +190,20 @@ void expect_forgeries_refused(client::Client& victim, dds_entity_t forger_partic
 
 // ---- the script ---------------------------------------------------------------------------
 
-class SecurityScript : public testing::Test {
+class SecurityScript : public test::SecureCellTest {
  protected:
-  void SetUp() override {
-    if (!test::security_plugins_installed()) {
-      GTEST_SKIP() << "Cyclone DDS Security plugins (libdds_security_{auth,ac,crypto}.so in "
-                      "/usr/lib/x86_64-linux-gnu/libddsc0debian) are not installed";
-    }
-    cell_ = std::make_unique<test::SecureCell>();
-  }
-  std::map<std::string, std::string> files() const {
-    std::map<std::string, std::string> out;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(cell_->dir())) {
-      if (entry.is_regular_file()) out[entry.path()] = cli::testing::read_file(entry.path());
-    }
-    return out;
-  }
-  std::unique_ptr<test::SecureCell> cell_;
+  void SetUp() override { make_cell(); }
 };
 
 TEST_F(SecurityScript, ASecondRunChangesNoFile) {
-  const auto before = files();
-  // 2 CAs (4 files + serial), governance (2), 4 identities with 5 files, 2 client prefixes.
-  EXPECT_EQ(before.size(), 5u + 2u + 4u * 5u + 2u);
+  const auto before = cell_->files();
+  // 2 CAs (4 files + serial), the CRL and its database (2), governance (2), 4 identities with
+  // 5 files, 2 client prefixes.
+  EXPECT_EQ(before.size(), 5u + 2u + 2u + 4u * 5u + 2u);
   const test::ShellResult again = test::run_shell(
       GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir() + " --client a --client b");
   ASSERT_EQ(again.exit_code, 0) << again.output;
-  EXPECT_EQ(files(), before);
+  EXPECT_EQ(cell_->files(), before);
 }
 
 TEST_F(SecurityScript, DocumentsVerifyAgainstThePermissionsCaAndCertificatesAgainstTheIdentityCa) {
