@@ -251,7 +251,7 @@ void ClientCore::write_failed(std::uint64_t sequence, dds_return_t rc) {
     release_locked(pending);
     if (rc == DDS_RETCODE_TIMEOUT) {
       // The window was full: the receive loop writes it once acknowledgements have come in.
-      if (!pending.deferred) counters_.deferred += 1;
+      counters_.deferred += 1;
       pending.deferred = true;
       pending.resend_at = Clock::now() + kWindowRetry;
     }
@@ -462,29 +462,25 @@ ClientCore::Clock::time_point ClientCore::maintain() {
                              instance->writers[protocol::index_of(pending.calculation)].get()});
           // A deferred write was never sent: writing it now is its first sending, not a resend.
           if (!pending.deferred) counters_.resent += 1;
+          pending.deferred = false;  // set again by write_failed() if the window is still full
           counters_.sent += 1;
         }
       }
       ++it;
     }
   }
-  std::vector<std::uint64_t> written;
+  // A writer whose window stayed full through one kAckWait is not tried again in this round:
+  // the loop also fails requests past their deadline and must not wait kAckWait per request.
+  std::vector<dds_entity_t> full;
   for (const Resend& resend : resends) {
+    const bool skip = std::find(full.begin(), full.end(), resend.writer) != full.end();
     const dds_return_t rc =
-        write_when_acknowledged(resend.write, resend.writer, Clock::now() + kAckWait);
+        skip ? DDS_RETCODE_TIMEOUT
+             : write_when_acknowledged(resend.write, resend.writer, Clock::now() + kAckWait);
+    if (rc == DDS_RETCODE_TIMEOUT && !skip) full.push_back(resend.writer);
     if (rc < 0) {
       write_failed(resend.sequence, rc);
       next = std::min(next, Clock::now() + kWindowRetry);
-    } else {
-      written.push_back(resend.sequence);
-    }
-  }
-  if (!written.empty()) {  // sent at last: if its instance goes now, sending it again is a resend
-    std::lock_guard lock(mutex_);
-    for (std::uint64_t sequence : written) {
-      if (const auto found = pending_.find(sequence); found != pending_.end()) {
-        found->second.deferred = false;
-      }
     }
   }
   for (auto& [pending, message] : expired) {

@@ -149,7 +149,7 @@ struct ClientCore::Pending {
   std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
   Clock::time_point deadline;
   Clock::time_point resend_at;  ///< when instance == 0: not before this
-  bool deferred = false;        ///< never written yet: its first write found the window full
+  bool deferred = false;        ///< not written yet: its last write found the window full
   std::function<dds_return_t(dds_entity_t writer)> write;
   std::function<void(const void* wire_reply)> deliver;
   std::function<void(std::exception_ptr)> fail;

@@ -77,7 +77,8 @@ struct ClientCounters {
   std::uint64_t duplicates = 0;    ///< replies for a request no longer pending (dropped)
   std::uint64_t foreign = 0;       ///< replies carrying another client's id (never expected)
   std::uint64_t timeouts = 0;      ///< requests failed with Timeout
-  std::uint64_t deferred = 0;      ///< writes retried from the client's thread: window was full
+  std::uint64_t deferred = 0;      ///< writes handed to the client's thread (full window or
+                                   ///< 256 in flight), each time
 };
 
 }  // namespace gc::client
