@@ -18,6 +18,7 @@ packages=(
   dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
   python3-dev pybind11-dev python3-numpy  # the Python module (clients/python, docs/python.md)
   python3-pytest python3-pandas python3-matplotlib  # its tests and examples
+  openssl         # deploy/security/make-security.sh (CA, certificates, signed documents, CRL)
 )
 missing=()
 for p in "${packages[@]}"; do
