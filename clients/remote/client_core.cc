@@ -42,8 +42,12 @@ dds_return_t write_when_acknowledged(const std::function<dds_return_t(dds_entity
 /// A disposed status means a graceful shutdown: the instance answered what it had before
 /// disposing, so give those replies this long to arrive before sending the rest elsewhere.
 constexpr std::chrono::milliseconds kDisposedResendDelay{500};
-/// How often the receive loop checks deadlines and readiness when nothing arrives.
+/// How often the receive loop looks for a ready instance while a request waits for one.
 constexpr std::chrono::milliseconds kTick{10};
+/// Longest the receive loop sleeps when nothing is due: otherwise it wakes only for a request's
+/// deadline, a status sample or the guard condition. A thread woken a hundred times a second
+/// for nothing costs round trips on a busy host (docs/benchmarks.md, "fourth round").
+constexpr std::chrono::seconds kIdleWake{1};
 /// How soon the receive loop tries again a write deferred by a reply callback (a full window).
 constexpr std::chrono::microseconds kWindowRetry{200};
 /// How long the receive loop waits for acknowledgements before writing a deferred request again:
@@ -281,9 +285,12 @@ void ClientCore::send(std::uint64_t sequence, Pending pending) {
       assign_locked(pending, instance->info.id);
       auto write = pending.write;
       const Clock::time_point deadline = pending.deadline;
+      // The receive loop sleeps until loop_wakes_at_: wake it if this deadline comes first.
+      const bool wake_loop = deadline < loop_wakes_at_;
       pending_.emplace(sequence, std::move(pending));
       counters_.sent += 1;
       lock.unlock();
+      if (wake_loop) dds_set_guardcondition(guard_.get(), true);
       // A full window: a caller outside the receive thread waits for acknowledgements here
       // (back-pressure, as a blocking write); a reply callback defers the write (write_failed).
       const dds_return_t rc = in_reply_callback ? write(writer)
@@ -451,11 +458,13 @@ ClientCore::Clock::time_point ClientCore::maintain() {
         it = pending_.erase(it);
         continue;
       }
+      next = std::min(next, pending.deadline);
       if (pending.instance == 0 && now < pending.resend_at) {
         next = std::min(next, pending.resend_at);
       } else if (pending.instance == 0 && in_flight_ >= kMaxInFlight) {
         next = std::min(next, now + kWindowRetry);  // answers make room soon
       } else if (pending.instance == 0) {  // none ready: the next tick or status sample looks again
+        next = std::min(next, now + kTick);
         if (Instance* instance = pick_ready_locked(pending.calculation)) {
           assign_locked(pending, instance->info.id);
           resends.push_back({it->first, pending.write,
@@ -468,6 +477,7 @@ ClientCore::Clock::time_point ClientCore::maintain() {
       }
       ++it;
     }
+    loop_wakes_at_ = std::min(next, now + kIdleWake);
   }
   // A writer whose window stayed full through one kAckWait is not tried again in this round:
   // the loop also fails requests past their deadline and must not wait kAckWait per request.
@@ -490,12 +500,12 @@ ClientCore::Clock::time_point ClientCore::maintain() {
 }
 
 void ClientCore::receive_loop() {
-  Clock::time_point next_resend = Clock::time_point::max();
+  Clock::time_point next = Clock::now() + kIdleWake;
   for (;;) {
-    // Every kTick, sooner when a request waits to be written again (a full window).
-    const auto wait = std::clamp(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                     next_resend - Clock::now()),
-                                 std::chrono::nanoseconds(0), std::chrono::nanoseconds(kTick));
+    // Until the next deadline or resend (maintain()), or something arrives: no periodic wake-up.
+    const auto wait = std::clamp(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(next - Clock::now()),
+        std::chrono::nanoseconds(0), std::chrono::nanoseconds(kIdleWake));
     dds_waitset_wait(waitset_.get(), nullptr, 0, static_cast<dds_duration_t>(wait.count()));
     bool woken = false;  // write_failed() or the destructor set it; reset it to wait again
     dds_take_guardcondition(guard_.get(), &woken);
@@ -504,7 +514,7 @@ void ClientCore::receive_loop() {
       if (closing_) return;
     }
     take_status();
-    next_resend = maintain();
+    next = maintain();
   }
 }
 

@@ -6,7 +6,6 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
-#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -52,20 +51,6 @@ class ClientCore {
   void call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
                  Callback<kCalculation> done);
 
-  /// Sends `request` and returns at once; the future holds the result or the error.
-  template <protocol::Calculation kCalculation>
-  std::future<typename protocol::CalculationTraits<kCalculation>::Result> call_async(
-      const typename protocol::CalculationTraits<kCalculation>::Request& request);
-
-  /// call_async(request).get(): the result, or throws the error. The caller sleeps in the
-  /// future (a futex) and never spins: a sleeping thread keeps the scheduler's wake-up
-  /// preference, so on a busy host the reply wakes it ahead of CPU hogs.
-  template <protocol::Calculation kCalculation>
-  typename protocol::CalculationTraits<kCalculation>::Result call(
-      const typename protocol::CalculationTraits<kCalculation>::Request& request) {
-    return call_async<kCalculation>(request).get();
-  }
-
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.
   bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
   /// Live instances known from the status topic.
@@ -101,7 +86,8 @@ class ClientCore {
   void create_request_writer_locked(Instance& instance, std::size_t calculation_index);
   void take_status();
   /// Fails requests past their deadline, sends orphaned ones (instance gone) to another and
-  /// writes deferred ones (a full window); returns when a request next waits to be written.
+  /// writes deferred ones (a full window); returns when the receive loop must next look: a
+  /// deadline, a resend, or kTick while a request waits for a ready instance.
   Clock::time_point maintain();
   /// Writing request `sequence` failed with `rc`: it is written again from the receive loop,
   /// to another instance if its own went (a deleted writer), after kWindowRetry if the window
@@ -137,6 +123,8 @@ class ClientCore {
   std::uint64_t sequence_ = 0;
   std::size_t in_flight_ = 0;  ///< pending_ entries sent and not answered (instance != 0)
   std::size_t round_robin_ = 0;
+  /// When the receive loop next wakes on its own (set by maintain()); a request due sooner wakes it.
+  Clock::time_point loop_wakes_at_ = Clock::time_point::max();
   ClientCounters counters_;
   bool closing_ = false;
   std::thread receiver_;
@@ -186,22 +174,6 @@ void ClientCore::call_then(const typename protocol::CalculationTraits<kCalculati
   };
   pending.fail = [callback](std::exception_ptr error) { (*callback)({std::nullopt, error}); };
   send(sequence, std::move(pending));
-}
-
-template <protocol::Calculation kCalculation>
-std::future<typename protocol::CalculationTraits<kCalculation>::Result> ClientCore::call_async(
-    const typename protocol::CalculationTraits<kCalculation>::Request& request) {
-  using Result = typename protocol::CalculationTraits<kCalculation>::Result;
-  auto promise = std::make_shared<std::promise<Result>>();
-  std::future<Result> future = promise->get_future();
-  call_then<kCalculation>(request, [promise](Outcome<Result> outcome) {
-    if (outcome.error) {
-      promise->set_exception(outcome.error);
-    } else {
-      promise->set_value(std::move(*outcome.result));
-    }
-  });
-  return future;
 }
 
 }  // namespace gc::client

@@ -6,6 +6,7 @@
 
 #include <deque>
 #include <future>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,24 @@ TEST(Service, KilledAndRestartedClientsTimeOutThenCarryOn) {
   EXPECT_GE(client.counters().timeouts, 1u);
   std::cout << "timeouts while the dead instance was still believed alive: "
             << timeouts_while_recovering << "\n";
+}
+
+// The client's receive loop sleeps until the next deadline it knows of (at most 1 s): a request
+// whose deadline comes sooner wakes it, so it times out on time, not at the loop's next look.
+TEST(Service, AnUnansweredRequestTimesOutOnTimeWhileTheClientsLoopSleeps) {
+  test::ServiceProcess service;
+  client::Client client({test::test_domain(), std::chrono::milliseconds(150)});
+  ASSERT_TRUE(client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(10)));
+  EXPECT_NO_THROW(client.call<Calculation::kJamAngle>(kJam));
+  // The loop last looked when that reply came; it now sleeps until about 1 s later.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  service.signal(SIGSTOP);
+  const Clock::time_point start = Clock::now();
+  EXPECT_THROW(client.call<Calculation::kJamAngle>(kJam), client::Timeout);
+  const double elapsed_s = std::chrono::duration<double>(Clock::now() - start).count();
+  service.signal(SIGCONT);
+  EXPECT_GE(elapsed_s, 0.15);
+  EXPECT_LT(elapsed_s, 0.5) << "the timeout waited for the receive loop's idle wake-up";
 }
 
 OperatingPoint unique_point(int request) { return {1.0e5 + 10.0 * request, 0.005, 0.3, 0.1}; }
