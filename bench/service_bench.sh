@@ -15,22 +15,26 @@
 # of the same round); the table gives the median round's p50s and the median ratio, with the
 # lowest and highest ratio beside it.
 #
-# SERVICE_BENCH_ROUNDS (default 5): rounds per load.
+# SERVICE_BENCH_ROUNDS (default 9): rounds per load. With one hog per core, whether a round
+# trip's threads share a core or are split over both decides its time (25-30 us or 60 us and
+# up, for ddsperf and the service alike) and changes within a second, so 5 rounds were too few.
 # SERVICE_BENCH_WINDOW (default 1): seconds measured per run.
 # SERVICE_BENCH_SECONDS (default 3): the throughput runs' length.
 # SERVICE_BENCH_LOADS (default "0 1 all"): hogs per run; "all" = one per core.
 # SERVICE_BENCH_SERVICE (default BUILD_DIR/service/gearcoupling-service): the service binary, to
 # compare another build's service with the same client.
+# SERVICE_BENCH_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
+# configuration of every process, ddsperf's too, to compare another.
 # Every process is bounded in time (timeout) and uses a domain derived from this shell's pid.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
-export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
+export CYCLONEDDS_URI="${SERVICE_BENCH_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
 domain=$((1 + $$ % 200))
 sdomain=$(( (domain + 100) % 200 + 1 ))
 seconds=${SERVICE_BENCH_SECONDS:-3}
 loads=${SERVICE_BENCH_LOADS:-0 1 all}
-rounds=${SERVICE_BENCH_ROUNDS:-5}
+rounds=${SERVICE_BENCH_ROUNDS:-9}
 window=${SERVICE_BENCH_WINDOW:-1}
 cores=$(nproc)
 hogs=""

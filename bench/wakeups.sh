@@ -1,0 +1,87 @@
+#!/bin/sh
+# Wake-ups per second of every thread of the service and of a client making blocking calls,
+# beside ddsperf's pong and ping (waitset mode, the same three wake-ups per round trip), on the
+# loopback configuration (docs/benchmarks.md, "fourth round"). On a busy host every wake-up
+# besides the round trip's own is a chance for the scheduler to split the round trip's threads
+# over the cores, so this counts them: from the third field of /proc/PID/task/TID/schedstat
+# (the number of times the thread was scheduled in), over a 1-second window in the middle of a
+# 3-second run.
+#
+#   bench/wakeups.sh [BUILD_DIR]      (default: build)
+#
+# WAKEUPS_CONFIG (default: deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
+# configuration of every process, to compare another.
+set -eu
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+export CYCLONEDDS_URI="${WAKEUPS_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
+domain=$((1 + $$ % 200))
+work=$(mktemp -d)
+pids=""
+cleanup() {
+  for pid in $pids; do kill "$pid" 2>/dev/null || true; done
+  rm -rf "$work"
+}
+trap cleanup EXIT INT TERM
+
+# snapshot FILE PID...: "pid tid name count" for every thread of each PID
+snapshot() {
+  out=$1
+  shift
+  : >"$out"
+  for pid in "$@"; do
+    for task in /proc/"$pid"/task/*; do
+      [ -r "$task/schedstat" ] || continue
+      echo "$pid ${task##*/} $(cat "$task/comm" | tr ' ' '_') $(cut -d' ' -f3 "$task/schedstat")" >>"$out"
+    done
+  done
+}
+
+child() {  # the pid of the process `timeout` (pid $1) runs
+  for _ in 1 2 3 4 5 6 7 8 9 10; do
+    pid=$(pgrep -P "$1" | head -n 1)
+    if [ -n "$pid" ]; then echo "$pid"; return; fi
+    sleep 0.1
+  done
+  echo "$1"
+}
+
+# report LABEL SERVER_PID CLIENT_PID: a 1-second window of both processes' threads
+report() {
+  snapshot "$work/a" "$2" "$3"
+  sleep 1
+  snapshot "$work/b" "$2" "$3"
+  echo "## $1 (wake-ups in 1 s; threads that woke at least once)"
+  awk -v s="$2" 'NR == FNR { n[$2] = $4; next } ($2 in n) && $4 > n[$2] {
+      printf "%-8s %-16s %6d\n", ($1 == s ? "server" : "client"), $3, $4 - n[$2] }' \
+    "$work/a" "$work/b"
+}
+
+timeout 30 "$build/service/gearcoupling-service" --domain "$domain" --log-level warn &
+service=$!
+pids="$service"
+sleep 1
+timeout 30 "$build/bench/gc_bench_service" --domain "$domain" --modes call --latency-seconds 3 \
+  --clients "" >"$work/client.out" &
+client=$!
+pids="$pids $client"
+sleep 1.5
+report "gearcoupling-service and gc_bench_service (blocking call(): jam angle, then moments)" \
+  "$(child "$service")" "$(child "$client")"
+wait "$client"
+cat "$work/client.out"
+kill -TERM "$service"
+wait "$service" || true
+
+pdomain=$(( (domain + 100) % 200 + 1 ))
+timeout 30 ddsperf -i "$pdomain" -D 5 pong >/dev/null 2>&1 &
+pong=$!
+pids="$pids $pong"
+sleep 0.5
+timeout 30 ddsperf -i "$pdomain" -D 3 ping waitset >"$work/ping.out" 2>&1 &
+ping=$!
+pids="$pids $ping"
+sleep 1.5
+report "ddsperf pong and ping waitset" "$(child "$pong")" "$(child "$ping")"
+wait "$ping" || true
+grep " 50% " "$work/ping.out" | tail -1
