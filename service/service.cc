@@ -226,9 +226,13 @@ void Service::answer(const gearcoupling_Correlation& correlation,
   write_reply<kCalculation>(correlation, std::shared_ptr<const void>(sample, &reply));
   const double service_time_s = std::chrono::duration<double>(Clock::now() - received).count();
   stats_.record(kCalculation, ok, service_time_s);
-  spdlog::debug("{} client={} seq={} {} {:.1f} us", protocol::to_string(kCalculation),
-                protocol::hex_id(correlation.client_id), correlation.sequence_number,
-                protocol::to_string(reply.status), service_time_s * 1e6);
+  // Guarded: the arguments (hex_id formats a string) would otherwise be built for every reply,
+  // on the round trip's own thread, with debug logging off.
+  if (spdlog::should_log(spdlog::level::debug)) {
+    spdlog::debug("{} client={} seq={} {} {:.1f} us", protocol::to_string(kCalculation),
+                  protocol::hex_id(correlation.client_id), correlation.sequence_number,
+                  protocol::to_string(reply.status), service_time_s * 1e6);
+  }
 }
 
 // The request names a client_id whose reply readers belong to another participant than the
