@@ -4,13 +4,16 @@
 # loopback configuration (docs/benchmarks.md, "fourth round"). On a busy host every wake-up
 # besides the round trip's own is a chance for the scheduler to split the round trip's threads
 # over the cores, so this counts them: from the third field of /proc/PID/task/TID/schedstat
-# (the number of times the thread was scheduled in), over a 1-second window in the middle of a
+# (the number of times the thread was scheduled in; the first, its time on a CPU, gives the CPU
+# time per wake-up), over a 1-second window in the middle of a
 # 3-second run.
 #
 #   bench/wakeups.sh [BUILD_DIR]      (default: build)
 #
 # WAKEUPS_CONFIG (default: deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
 # configuration of every process, to compare another.
+# WAKEUPS_MODE (default call): call, blocking calls beside ddsperf ping waitset; call_then,
+# listener mode (the reply callback sends the next request) beside ddsperf ping listener.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -23,6 +26,12 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT INT TERM
+mode=${WAKEUPS_MODE:-call}
+case $mode in
+  call) ping_mode=waitset ;;
+  call_then) ping_mode=listener ;;
+  *) echo "WAKEUPS_MODE: unknown mode \"$mode\" (allowed: call, call_then)" >&2; exit 2 ;;
+esac
 
 # snapshot FILE PID...: "pid tid name count" for every thread of each PID
 snapshot() {
@@ -32,7 +41,7 @@ snapshot() {
   for pid in "$@"; do
     for task in /proc/"$pid"/task/*; do
       [ -r "$task/schedstat" ] || continue
-      echo "$pid ${task##*/} $(cat "$task/comm" | tr ' ' '_') $(cut -d' ' -f3 "$task/schedstat")" >>"$out"
+      echo "$pid ${task##*/} $(cat "$task/comm" | tr ' ' '_') $(cut -d' ' -f1,3 "$task/schedstat")" >>"$out"
     done
   done
 }
@@ -51,9 +60,10 @@ report() {
   snapshot "$work/a" "$2" "$3"
   sleep 1
   snapshot "$work/b" "$2" "$3"
-  echo "## $1 (wake-ups in 1 s; threads that woke at least once)"
-  awk -v s="$2" 'NR == FNR { n[$2] = $4; next } ($2 in n) && $4 > n[$2] {
-      printf "%-8s %-16s %6d\n", ($1 == s ? "server" : "client"), $3, $4 - n[$2] }' \
+  echo "## $1 (wake-ups in 1 s, and CPU time per wake-up; threads that woke at least once)"
+  awk -v s="$2" 'NR == FNR { t[$2] = $4; n[$2] = $5; next } ($2 in n) && $5 > n[$2] {
+      printf "%-8s %-16s %6d %7.1f us\n", ($1 == s ? "server" : "client"), $3, $5 - n[$2],
+             ($4 - t[$2]) / 1000 / ($5 - n[$2]) }' \
     "$work/a" "$work/b"
 }
 
@@ -61,12 +71,12 @@ timeout 30 "$build/service/gearcoupling-service" --domain "$domain" --log-level 
 service=$!
 pids="$service"
 sleep 1
-timeout 30 "$build/bench/gc_bench_service" --domain "$domain" --modes call --latency-seconds 3 \
+timeout 30 "$build/bench/gc_bench_service" --domain "$domain" --modes "$mode" --latency-seconds 3 \
   --clients "" >"$work/client.out" &
 client=$!
 pids="$pids $client"
 sleep 1.5
-report "gearcoupling-service and gc_bench_service (blocking call(): jam angle, then moments)" \
+report "gearcoupling-service and gc_bench_service ($mode: jam angle, then moments)" \
   "$(child "$service")" "$(child "$client")"
 wait "$client"
 cat "$work/client.out"
@@ -78,10 +88,10 @@ timeout 30 ddsperf -i "$pdomain" -D 5 pong >/dev/null 2>&1 &
 pong=$!
 pids="$pids $pong"
 sleep 0.5
-timeout 30 ddsperf -i "$pdomain" -D 3 ping waitset >"$work/ping.out" 2>&1 &
+timeout 30 ddsperf -i "$pdomain" -D 3 ping "$ping_mode" >"$work/ping.out" 2>&1 &
 ping=$!
 pids="$pids $ping"
 sleep 1.5
-report "ddsperf pong and ping waitset" "$(child "$pong")" "$(child "$ping")"
+report "ddsperf pong and ping $ping_mode" "$(child "$pong")" "$(child "$ping")"
 wait "$ping" || true
 grep " 50% " "$work/ping.out" | tail -1
