@@ -5,8 +5,9 @@
 # besides the round trip's own is a chance for the scheduler to split the round trip's threads
 # over the cores, so this counts them: from the third field of /proc/PID/task/TID/schedstat
 # (the number of times the thread was scheduled in; the first, its time on a CPU, gives the CPU
-# time per wake-up), over a 1-second window in the middle of a
-# 3-second run.
+# time per wake-up), over a 1-second window that starts 1.5 s into the run. ddsperf ping gets
+# -D 5: its round-trip threads end a second before it does, and with -D 3 they had sometimes
+# ended inside the window, leaving them out of the report.
 #
 #   bench/wakeups.sh [BUILD_DIR]      (default: build)
 #
@@ -84,11 +85,11 @@ kill -TERM "$service"
 wait "$service" || true
 
 pdomain=$(( (domain + 100) % 200 + 1 ))
-timeout 30 ddsperf -i "$pdomain" -D 5 pong >/dev/null 2>&1 &
+timeout 30 ddsperf -i "$pdomain" -D 7 pong >/dev/null 2>&1 &
 pong=$!
 pids="$pids $pong"
 sleep 0.5
-timeout 30 ddsperf -i "$pdomain" -D 3 ping "$ping_mode" >"$work/ping.out" 2>&1 &
+timeout 30 ddsperf -i "$pdomain" -D 5 ping "$ping_mode" >"$work/ping.out" 2>&1 &
 ping=$!
 pids="$pids $ping"
 sleep 1.5
