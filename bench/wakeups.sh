@@ -7,7 +7,9 @@
 # (the number of times the thread was scheduled in; the first, its time on a CPU, gives the CPU
 # time per wake-up), over a 1-second window that starts 1.5 s into the run. ddsperf ping gets
 # -D 5: its round-trip threads end a second before it does, and with -D 3 they had sometimes
-# ended inside the window, leaving them out of the report.
+# ended inside the window, leaving them out of the report. A thread preempted and run again
+# counts twice, so for a thread that runs long (tev sending a burst) the count is more than
+# its wake-ups.
 #
 #   bench/wakeups.sh [BUILD_DIR]      (default: build)
 #
@@ -34,7 +36,7 @@ case $mode in
   *) echo "WAKEUPS_MODE: unknown mode \"$mode\" (allowed: call, call_then)" >&2; exit 2 ;;
 esac
 
-# snapshot FILE PID...: "pid tid name count" for every thread of each PID
+# snapshot FILE PID...: "pid tid name cpu_ns count" for every thread of each PID
 snapshot() {
   out=$1
   shift
