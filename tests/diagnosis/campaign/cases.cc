@@ -174,7 +174,7 @@ std::vector<Case> campaign_cases() {
     Case c;
     c.name = "pump_interference_0p4hz";
     c.truth_text = "y += 3 kN·m sin(2 pi 0.4 t + 0.7), z += 2 kN·m sin(2 pi 0.4 t + 2.0), t the DAQ clock";
-    c.must_name = {{"2.5 s cycle", {R"(time_cycle_2\.50?s_)"}}};
+    c.must_name = {{"2.5 s cycle", {R"(time_cycle_2\.[45][0-9]*s_)"}}};
     c.noise = daq;
     c.seed = 203;
     c.effect = [](const std::vector<InputRow>& in, Run r, Recording& out) {
@@ -211,7 +211,7 @@ std::vector<Case> campaign_cases() {
     Case c;
     c.name = "daq_skew_0p3s";
     c.truth_text = "moments of the inputs 0.3 s earlier (3 samples)";
-    c.must_name = {{"delay / lag", {R"(delay_on_)", R"(\blag)"}, true}};
+    c.must_name = {{"delay / lag", {R"(delay)", R"(\blag)"}, true}};
     c.noise = daq;
     c.seed = 205;
     c.effect = [](const std::vector<InputRow>& in, Run, Recording& out) {
@@ -228,7 +228,7 @@ std::vector<Case> campaign_cases() {
     Case c;
     c.name = "demodulation_lag_one_rev";
     c.truth_text = "moments averaged over the last revolution (window 60/n s, trailing)";
-    c.must_name = {{"delay / lag", {R"(delay_on_)", R"(\blag)"}, true}};
+    c.must_name = {{"delay / lag", {R"(delay)", R"(\blag)"}, true}};
     c.noise = daq;
     c.seed = 206;
     c.effect = [](const std::vector<InputRow>& in, Run, Recording& out) {
@@ -351,7 +351,7 @@ std::vector<Case> campaign_cases() {
     Case c;
     c.name = "skew_0p4s_plus_step_z";
     c.truth_text = "moments 0.4 s late (4 samples) and z -= 8 kN·m for t >= 902.4 s";
-    c.must_name = {{"delay / lag", {R"(delay_on_)", R"(\blag)"}, true},
+    c.must_name = {{"delay / lag", {R"(delay)", R"(\blag)"}, true},
                    {"step near 902 s on z", {R"(step_at_(89[7-9]|90[0-7])(\.[0-9]+)?s_on_z)"}}};
     c.noise = daq;
     c.seed = 401;
