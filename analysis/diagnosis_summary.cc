@@ -71,10 +71,14 @@ void print_signature(const v1::RoundRecord& round, std::FILE* out) {
 }  // namespace
 
 void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) {
-  fmt::print(out, "Recording {}: {} rows ({} refused by the model), model {}; search on {} rows, "
-             "refit on {}\n", result.recording(), result.recording_rows(), result.excluded_rows(),
-             result.model(), result.search_rows(), result.refit_rows());
-  if (result.excluded_rows() > 0) fmt::print(out, "  first refusal: {}\n", result.exclusion_reason());
+  fmt::print(out, "Recording {}: {} rows ({} malformed, {} refused by the model), model {}; search on {} rows, "
+             "refit on {}\n", result.recording(), result.recording_rows(), result.malformed_rows(),
+             result.refused_rows(), result.model(), result.search_rows(), result.refit_rows());
+  if (result.malformed_rows() > 0) {
+    fmt::print(out, "  {} malformed rows of the file excluded ('gearcoupling validate' lists them)\n",
+               result.malformed_rows());
+  }
+  if (result.refused_rows() > 0) fmt::print(out, "  first refusal: {}\n", result.exclusion_reason());
   if (result.outlier_rows() > 0) fmt::print(out, "  {} rows excluded as outliers (spikes)\n", result.outlier_rows());
   for (int i = 0; i < result.rounds_size(); ++i) {
     const v1::RoundRecord& round = result.rounds(i);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "analysis/effect_spec.h"
+#include "codec/count_field.h"
 #include "codec/diagnosis_messages.h"
 
 namespace gc::analysis {
@@ -15,6 +16,11 @@ gearcoupling::v1::DiagnosisResult diagnosis_result(const Diagnosis& diagnosis,
   gearcoupling::v1::DiagnosisResult result = codec::to_message(diagnosis);
   result.set_recording(std::string(recording_name));
   result.set_model(std::string(model_name));
+  // The core saw only the rows the reader kept: the file's malformed rows count here too, so that
+  // the JSON and the text give the same counts.
+  result.set_malformed_rows(codec::count_field(recording.excluded_rows, "malformed_rows"));
+  result.set_recording_rows(result.recording_rows() + result.malformed_rows());
+  result.set_excluded_rows(result.malformed_rows() + result.refused_rows());
   for (const std::string& warning : check.warnings) result.add_warnings(warning);
   for (const std::string& column : recording.ignored_columns) result.add_ignored_columns(column);
   for (const auto& effect : diagnosis.added) result.add_add_flags(effect_spec_text(*effect));

@@ -92,7 +92,8 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
 v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
   v1::DiagnosisResult r;
   r.set_recording_rows(count_field(diagnosis.rows, "recording_rows"));
-  r.set_excluded_rows(count_field(diagnosis.excluded_rows.size(), "excluded_rows"));
+  r.set_refused_rows(count_field(diagnosis.excluded_rows.size(), "refused_rows"));
+  r.set_excluded_rows(r.refused_rows());
   r.set_exclusion_reason(diagnosis.exclusion_reason);
   r.set_search_rows(count_field(diagnosis.search_rows, "search_rows"));
   r.set_refit_rows(count_field(diagnosis.refit_rows, "refit_rows"));

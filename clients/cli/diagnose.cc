@@ -62,10 +62,6 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
     print_json(result, out);
   } else {
     print_diagnosis_summary(result, out);
-    if (recording.excluded_rows > 0) {
-      fmt::print(out, "\n{} malformed rows of the file were excluded ('gearcoupling validate' lists them)\n",
-                 recording.excluded_rows);
-    }
   }
   return 0;
 }
