@@ -94,6 +94,19 @@ std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const Fit
   std::vector<double> neutral;
   for (const ParameterSpec& spec : problem.box.info().parameters) neutral.push_back(spec.neutral);
   candidates.push_back(problem.box.to_unit(neutral));
+  for (const ParameterValues& hint : settings.hints) {
+    std::vector<double> values;
+    bool mine = !hint.empty();
+    for (const auto& [name, value] : hint) {
+      mine = mine && std::any_of(problem.box.info().parameters.begin(), problem.box.info().parameters.end(),
+                                 [&](const ParameterSpec& p) { return p.name == name; });
+    }
+    if (!mine) continue;
+    for (const ParameterSpec& spec : problem.box.info().parameters) {
+      values.push_back(hint.count(spec.name) ? hint.at(spec.name) : spec.default_value);
+    }
+    candidates.push_back(problem.box.to_unit(values));
+  }
   for (const Eigen::VectorXd& x : halton_points(problem.box.size(), settings.probe_points)) candidates.push_back(x);
   for (Eigen::VectorXd& x : candidates) {  // a held parameter starts, and stays, at its default
     for (int i = 0; i < problem.box.size(); ++i) if (!problem.free[static_cast<std::size_t>(i)]) x(i) = problem.full(i);
@@ -117,6 +130,7 @@ bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
 /// Empty when the value is inside the box, else which physical bound it sits on. A bound that is the
 /// neutral value (no low-torque rise of friction, no lag) is where the data says "none": no note.
 std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, int i, double unit) {
+  if (spec.period > 0.0) return "";  // an angle wraps: its bounds are two turns apart, not physics
   if (!on_edge(unit) || !box.at_physical_bound(i, unit)) return "";
   if ((unit <= 0.5 ? spec.lower : spec.upper) == spec.neutral) return "";
   return unit <= 0.5 ? "at its lower bound " + short_number(spec.lower) + " " + spec.unit
@@ -124,7 +138,17 @@ std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, in
 }
 
 std::string implausible_note(const ParameterSpec& spec, double low, double high) {
-  return "outside its plausible range " + short_number(low) + " to " + short_number(high) + " " + spec.unit;
+  std::string note = "outside its plausible range " + short_number(low) + " to " + short_number(high) + " " + spec.unit;
+  if (!spec.check.empty()) note += ": check " + spec.check;
+  return note;
+}
+
+/// The values with every periodic parameter (a direction, a phase) wrapped into one turn.
+ParameterValues wrapped(const EffectInfo& info, ParameterValues values) {
+  for (const ParameterSpec& spec : info.parameters) {
+    if (spec.period > 0.0) values[spec.name] = wrap_periodic(values.at(spec.name), spec.period);
+  }
+  return values;
 }
 
 /// Estimates in physical units: s^2 (J'J)^-1 on the free parameters, scaled by the bounds.
@@ -138,7 +162,7 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
     fit.box_upper.push_back(problem.box.upper(i));
   }
   fit.free = problem.free;
-  const ParameterValues values = problem.box.to_values(fit.unit_values);
+  const ParameterValues values = wrapped(*fit.info, problem.box.to_values(fit.unit_values));
   fit.effect = problem.registration.make(values);
   fit.sum_of_squares = result.cost;
   fit.rows = problem.rows.size();
@@ -158,7 +182,8 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
       e.note = at_bound_note(spec, problem.box, i, fit.unit_values(i));
       const auto [low, high] = plausible_range(spec, problem.jam_angle_rad);
       const double tolerance = 1e-9 * std::max(1.0, std::abs(high - low));
-      e.plausible = e.note.empty() && e.value >= low - tolerance && e.value <= high + tolerance;
+      e.at_bound = !e.note.empty();
+      e.plausible = spec.period > 0.0 || (!e.at_bound && e.value >= low - tolerance && e.value <= high + tolerance);
       if (e.note.empty() && !e.plausible) e.note = implausible_note(spec, low, high);
       ++k;
     }
@@ -205,6 +230,10 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
 
 bool EffectFit::plausible() const {
   return std::all_of(parameters.begin(), parameters.end(), [](const ParameterEstimate& p) { return p.plausible; });
+}
+
+bool EffectFit::at_bound() const {
+  return std::any_of(parameters.begin(), parameters.end(), [](const ParameterEstimate& p) { return p.at_bound; });
 }
 
 ParameterBox EffectFit::box() const { return ParameterBox(*info, box_lower, box_upper); }

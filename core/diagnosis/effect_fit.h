@@ -29,8 +29,12 @@ struct ParameterEstimate {
   std::optional<double> standard_error;
   bool held = false;            ///< true when the data could not determine it
   std::string note;             ///< why it was held, or that it sits at a bound
-  /// Inside the parameter's plausible range for this coupling (ParameterSpec::plausible).
+  /// Inside the parameter's plausible range for this coupling (ParameterSpec::plausible) and not on
+  /// a physical bound. Advice: an effect best by held-out error stays the answer outside it.
   bool plausible = true;
+  /// On a physical bound other than the neutral value: the truth may lie beyond what the effect can
+  /// say, so the effect only partly explains.
+  bool at_bound = false;
 };
 
 struct EffectFit {
@@ -45,12 +49,17 @@ struct EffectFit {
   int evaluations = 0;                   ///< model evaluations over all rows (cost measure)
   /// Every fitted parameter inside its plausible range and none on a physical bound.
   bool plausible() const;
+  /// Some fitted parameter on a physical bound (ParameterEstimate::at_bound).
+  bool at_bound() const;
   /// The box the fit searched, for a refit.
   ParameterBox box() const;
 };
 
 struct FitSettings {
   LeastSquaresOptions least_squares;
+  /// Starts from the data beside the generic ones (e.g. a skew by cross-correlation,
+  /// delay_estimate.h), each for the effect whose parameters it names; the others at their defaults.
+  std::vector<ParameterValues> hints;
   int probe_points = 8;  ///< Halton points whose cost picks the starts
   int starts = 2;        ///< Levenberg-Marquardt runs from the best probes
 };

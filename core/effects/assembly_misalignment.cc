@@ -13,8 +13,10 @@ const EffectInfo kInfo{
     "A misalignment the sensors do not see (assembly tolerances, structural deflection), "
     "added to the measured misalignment vector.",
     "Section 6.3.1",
-    {{"zeta0_rad", "rad", "amplitude of the initial misalignment", 0.0, 0.05, 0.0, 0.0, {0.0, 0.3, RangeScale::jam_angle}},
-     {"beta0_rad", "rad", "its direction, as beta", -M_PI, M_PI, 0.0, 0.0, {}}}};
+    {{"zeta0_rad", "rad", "amplitude of the initial misalignment", 0.0, 0.05, 0.0, 0.0, {0.0, 0.3, RangeScale::jam_angle},
+      false, 0.0, "the alignment of the rig (a poor alignment, a settled foundation, a worn bearing)"},
+     {"beta0_rad", "rad", "its direction, as beta", -2.0 * M_PI, 2.0 * M_PI, 0.0, 0.0, {-M_PI, M_PI}, false,
+      2.0 * M_PI}}};
 
 class AssemblyMisalignment final : public Effect {
  public:

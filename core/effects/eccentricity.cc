@@ -21,8 +21,8 @@ const EffectInfo kInfo{
       0.0, 0.00105, {0.0, 0.3, RangeScale::jam_angle}},
      {"threshold_scale", "-", "s, the torque that centres the hub as a multiple of eqs 49-53's T_m",
       0.2, 3.0, 1.0, 1.0, {0.5, 2.0}},
-     {"gravity_direction_rad", "rad", "direction of the sag, as beta", -M_PI, M_PI, M_PI / 2,
-      M_PI / 2, {}},
+     {"gravity_direction_rad", "rad", "direction of the sag, as beta", -2.0 * M_PI, 2.0 * M_PI, M_PI / 2,
+      M_PI / 2, {-M_PI, M_PI}, false, 2.0 * M_PI},
      {"fade_sharpness", "-", "k, how abruptly the hub lifts off: 1 - (T / (s T_m))^k", 1.0, 20.0, 1.0, 1.0, {1.0, 10.0},
       true}}};
 

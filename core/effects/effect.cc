@@ -56,4 +56,11 @@ void add_misalignment(double zeta_rad, double beta_rad, OperatingPoint& point) {
   if (point.misalignment_rad > 0.0) point.direction_rad = std::atan2(z, y);
 }
 
+double wrap_periodic(double value, double period) {
+  if (!(period > 0.0)) return value;
+  double w = std::remainder(value, period);  // in [-period/2, period/2]
+  if (w <= -period / 2.0) w += period;
+  return w;
+}
+
 }  // namespace gc

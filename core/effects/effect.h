@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/coupling_definition.h"
+#include "core/input_timing.h"
 #include "core/measurement_sample.h"
 #include "core/operating_point.h"
 #include "core/tooth_contact.h"
@@ -48,7 +49,17 @@ struct ParameterSpec {
   /// on the paper's form, and the shape then bends it (a free shape at the first fit trades with
   /// them and finds poorer optima).
   bool refine_only = false;
+  /// > 0 for an angle (a direction, a phase) of this period [unit]: it wraps, so no value of it is
+  /// on a bound or implausible. Its bounds span two periods, so that a fit can cross the seam at
+  /// +-pi; the diagnosis reports it wrapped into (-period/2, period/2].
+  double period = 0.0;
+  /// What to check on the rig when a fitted value is outside the plausible range, e.g. "the
+  /// alignment of the rig": plausibility is advice, never a veto (docs/diagnosis.md).
+  std::string check = {};
 };
+
+/// `value` wrapped into (-period/2, period/2] (unchanged for period <= 0).
+double wrap_periodic(double value, double period);
 
 /// The plausible range in the parameter's unit for a coupling of jam angle `jam_angle_rad`,
 /// within the bounds.
@@ -102,6 +113,11 @@ class Effect {
   virtual void adjust_outputs(const MeasurementSample& /*sample*/,
                               const ModelContext& /*context*/, const ModelState& /*state*/,
                               SensorMoments& /*moments*/) const {}
+  /// When the moment channels see the inputs of this sample (core/input_timing.h): a model
+  /// predicting a recording takes the inputs from the recording at that time.
+  virtual InputTiming input_timing(const MeasurementSample& /*sample*/) const { return {}; }
+  /// True when input_timing can be other than none (a recording's evaluation then looks it up).
+  virtual bool times_inputs() const { return false; }
 
  private:
   const EffectInfo& info_;
