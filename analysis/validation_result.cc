@@ -82,10 +82,11 @@ RecordingCheck check_recording(const CouplingModel& model, std::string_view mode
   RecordingCheck check;
   MomentScale scale;
   double largest_misalignment_rad = 0.0;
-  for (const RecordedSample& sample : samples) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const RecordedSample& sample = samples[i];
     largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
     try {
-      scale.add(sample.measured, model.predict(sample.input).moments);
+      scale.add(sample.measured, model.predict_at(std::span<const RecordedSample>(samples), i).moments);
       ++check.compared;
     } catch (const InvalidInput& error) {
       if (check.first_refusal.empty()) check.first_refusal = error.field() + ": " + error.what();

@@ -21,7 +21,7 @@ void predict_range(const CouplingModel& model, const std::vector<RecordedSample>
   for (std::size_t i = begin; i < end; ++i) {
     Outcome& outcome = outcomes[i];
     try {
-      outcome.moments = model.predict(samples[i].input).moments;
+      outcome.moments = model.predict_at(std::span<const RecordedSample>(samples), i).moments;
     } catch (const InvalidInput& error) {
       outcome = {std::nullopt, error.field(), error.what()};
     } catch (const ModelError& error) {

@@ -34,7 +34,30 @@ CouplingModel::CouplingModel(const CouplingDefinition& coupling,
         throw InvalidInput("effects." + effects_[i]->name(), "appears twice in one model");
       }
     }
+    times_inputs_ = times_inputs_ || effects_[i]->times_inputs();
   }
+}
+
+InputTiming CouplingModel::input_timing(const MeasurementSample& sample) const {
+  InputTiming sum;
+  for (const auto& effect : effects_) {
+    const InputTiming t = effect->input_timing(sample);
+    sum.delay_s += t.delay_s;
+    sum.average_s += t.average_s;
+  }
+  return sum;
+}
+
+ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
+  if (!times_inputs_) return predict(recording[i].input);
+  const InputTiming timing = input_timing(recording[i].input);
+  return predict(timing.none() ? recording[i].input : timed_input(recording, i, timing));
+}
+
+ModelPrediction CouplingModel::predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const {
+  if (!times_inputs_) return predict(sequence[i]);
+  const InputTiming timing = input_timing(sequence[i]);
+  return predict(timing.none() ? sequence[i] : timed_input(sequence, i, timing));
 }
 
 bool CouplingModel::has_effect(const std::string& name) const {

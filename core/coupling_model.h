@@ -3,12 +3,16 @@
 // configuration {friction, pressure_angle_rotation, self_weight} (data/models/paper.textproto).
 #pragma once
 
+#include <cstddef>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/coupling_geometry.h"
 #include "core/effects/effect.h"
+#include "core/input_timing.h"
+#include "core/recorded_sample.h"
 
 namespace gc {
 
@@ -44,6 +48,14 @@ class CouplingModel {
   /// InvalidInput (e.g. the effective misalignment at or beyond the jam angle).
   ModelPrediction predict(const MeasurementSample& sample) const;
 
+  /// Sample i of a recording or an input sequence (time order): predict() on its inputs as the
+  /// moment channels see them, taken from the sequence at the time the effects say
+  /// (core/input_timing.h, e.g. moment_delay); predict(sequence[i]) for a model without such effects.
+  ModelPrediction predict_at(std::span<const RecordedSample> recording, std::size_t i) const;
+  ModelPrediction predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const;
+  /// The sum of the effects' input timings at this sample.
+  InputTiming input_timing(const MeasurementSample& sample) const;
+
  private:
   CouplingDefinition base_coupling_;
   std::vector<std::shared_ptr<const Effect>> effects_;
@@ -51,6 +63,7 @@ class CouplingModel {
   CouplingGeometry geometry_;
   double restoring_torque_nm_;
   double self_weight_moment_nm_;
+  bool times_inputs_ = false;  ///< some effect times the inputs (predict_at looks them up)
 };
 
 }  // namespace gc

@@ -25,6 +25,9 @@ struct MeasurementSample {
   std::optional<double> torque_rate_nm_s;
   std::optional<double> applied_moment_y_nm;  ///< LAD moment about y [N·m]
   std::optional<double> applied_moment_z_nm;  ///< LAD moment about z [N·m]
+  /// Set when the inputs were taken at the time the moment channels see them, from the recording
+  /// (core/input_timing.h): an effect that lags the moments then has nothing left to do.
+  bool inputs_timed = false;
 };
 
 /// The bending moments at the sensors, measured or predicted.

@@ -18,7 +18,7 @@ ModelResiduals model_residuals(const CouplingModel& model, std::span<const Recor
     for (std::size_t k = begin; k < end; ++k) {
       const RecordedSample& o = observations[rows[k]];
       try {
-        const SensorMoments m = model.predict(o.input).moments;
+        const SensorMoments m = model.predict_at(observations, rows[k]).moments;
         out.residual(static_cast<Eigen::Index>(k), 0) = o.measured.y_nm - m.y_nm;
         out.residual(static_cast<Eigen::Index>(k), 1) = o.measured.z_nm - m.z_nm;
       } catch (const ModelError& e) {

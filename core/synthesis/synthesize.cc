@@ -47,7 +47,7 @@ SynthesizedRecording synthesize(const CouplingModel& model,
   for (std::size_t i = 0; i < derived.size(); ++i) {
     RecordedSample sample{derived[i], {}, std::nullopt};
     try {
-      const SensorMoments moments = model.predict(sample.input).moments;
+      const SensorMoments moments = model.predict_at(std::span<const MeasurementSample>(derived), i).moments;
       sample.measured.y_nm = moments.y_nm + options.noise_nm * standard_normal(options.seed, i, 0);
       sample.measured.z_nm = moments.z_nm + options.noise_nm * standard_normal(options.seed, i, 1);
       recording.samples.push_back(sample);
