@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/diagnosis/change_point.h"
 #include "core/diagnosis/cycle_period.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/effects/expression.h"
@@ -141,14 +142,17 @@ Folds contiguous_folds(std::size_t count, int folds, int blocks) {
   return out;
 }
 
-/// A term in time alone (t, t^2, t^3) is a drift. The interleaved folds let it interpolate any slow
+/// Terms of time alone: a drift (t, t^2, t^3), a cycle (time_cycle_*) or a step (step_at_*).
+bool is_in_time_alone(const std::string& name) { return name.rfind("time", 0) == 0 || name.rfind("step_at_", 0) == 0; }
+
+/// A term in time alone (t, t^2, t^3, a cycle, a step) may be a drift of the noise. The interleaved folds let it interpolate any slow
 /// wander of the noise, so it must also predict whole stretches of time it was not fitted on:
 /// a drift term whose removal does not worsen those predictions (paired t below 2) is dropped.
 void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
                                           const std::vector<std::string>& names, std::vector<bool>& support) {
   const Folds stretches = contiguous_folds(static_cast<std::size_t>(residual.rows()), 5, 20);
   for (std::size_t j = 0; j < support.size(); ++j) {
-    if (!support[j] || names[j].rfind("time", 0) != 0) continue;
+    if (!support[j] || !is_in_time_alone(names[j])) continue;
     std::vector<bool> without = support;
     without[j] = false;
     const auto fixed = [](const std::vector<bool>& keep) {
@@ -193,13 +197,23 @@ TermDesign term_design(std::span<const RecordedSample> observations, std::span<c
   return design;
 }
 
+std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                        const Eigen::MatrixX2d& residual) {
+  std::vector<std::string> terms;
+  if (const std::optional<double> period = dominant_cycle_period(observations, rows, residual)) terms = cycle_term_names(*period);
+  if (const std::optional<double> step = dominant_step_time(observations, rows, residual)) {
+    for (std::string& name : step_term_names(*step)) terms.push_back(std::move(name));
+  }
+  return terms;
+}
+
 std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
                                      double variance_inflation) {
-  std::vector<std::string> cycles;  // terms outside the catalogue
+  std::vector<std::string> cycles;  // terms outside the catalogue (made for a period or a time)
   for (const std::string& name : terms) {
     const ExpressionTerm* term = find_expression_term(name);
-    if (term && term->period_s > 0.0) cycles.push_back(name);
+    if (term && (term->period_s > 0.0 || term->name.rfind("step_at_", 0) == 0)) cycles.push_back(name);
   }
   const TermDesign all = term_design(observations, rows, residual, cycles);
   const auto design_for = [&all](const EffectInfo& info) -> std::optional<Eigen::MatrixXd> {
@@ -264,8 +278,8 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                 const Folds& folds, const FormulaSettings& settings) {
-  const std::optional<double> cycle = dominant_cycle_period(observations, rows, residual);
-  const TermDesign design = term_design(observations, rows, residual, cycle ? cycle_term_names(*cycle) : std::vector<std::string>{});
+  const TermDesign design = term_design(observations, rows, residual,
+                                        settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
   if (design.terms.empty()) return std::nullopt;
   // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
   const Eigen::VectorXd scale =

@@ -7,8 +7,9 @@
 // within one standard error of the best). Forward selection rather than thresholded least squares
 // (SINDy's STLSQ): the catalogue writes one mechanism in several frames that correlate on a
 // recording of a few directions, and thresholding kept combinations of them where one term did.
-// Beside the catalogue, the time_cycle terms of the residual's dominant slow period
-// (core/diagnosis/cycle_period.h) are offered. The chosen terms are then scored like any candidate:
+// Beside the catalogue, the time_cycle terms of the residual's dominant period
+// (core/diagnosis/cycle_period.h) and the step terms of its strongest change in mean
+// (core/diagnosis/change_point.h) are offered. The chosen terms are then scored like any candidate:
 // refitted on each fold's training rows, their held-out residual tested against the base model's.
 #pragma once
 
@@ -29,7 +30,16 @@ struct FormulaSettings {
   /// Variance inflation of the noise's autocorrelation (NoiseEstimate::variance_inflation) for the
   /// coefficients' standard errors.
   double variance_inflation = 1.0;
+  /// Terms in time offered beside the catalogue: the time_cycle terms of the residual's dominant
+  /// period (cycle_period.h) and the step terms of its strongest change (change_point.h), found on
+  /// rows dense enough to see them (time_terms_for). Unset: found on the rows the formula is
+  /// searched on.
+  std::optional<std::vector<std::string>> time_terms;
 };
+
+/// The time_cycle and step terms of `residual` on `rows` (in time order).
+std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                        const Eigen::MatrixX2d& residual);
 
 /// The terms every listed row can evaluate, as columns: rows k (M_sy') and n + k (M_sz') for
 /// observations[rows[k]], with the model's moments taken as measured minus `residual`. The

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -116,9 +117,12 @@ constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
 constexpr int kTimesMoment = kFrameCount - 2;  ///< this and the next scale with the model's moment
 // Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
 constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
-// The time_cycle terms: scalar kCycle, frame the same four (sin/cos on y/z) as the revolution's.
-constexpr int kCycle = -2;
-constexpr double kShortestCycleS = 2.0, kLongestCycleS = 1e6;
+// The time_cycle terms: scalar kCycle, frame the same four (sin/cos on y/z) as the revolution's;
+// the shaft orders: scalar kOrder, the same frames; the steps: scalar kStep, frame on_y or on_z.
+constexpr int kCycle = -2, kOrder = -3, kStep = -4;
+constexpr double kShortestCycleS = 0.02, kLongestCycleS = 1e6;  // 50 Hz (a 100 Hz DAQ's Nyquist) to 11 days
+constexpr double kSlowCycleS = 10.0;  // from here on a cycle is a slow drift of the zero, below an interference
+constexpr double kLatestStepS = 1e9;  // the recording reader's time range
 
 Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMoments& m) {
   const Eigen::Vector2d moment(m.y_nm, m.z_nm);
@@ -162,6 +166,26 @@ std::vector<ExpressionTerm> make_terms() {
   terms.push_back({"revolution_cos_on_y", "cos(phi_rot) on M_sy'", "N·m", 1e7, revolution, -1, kCosY});
   terms.push_back({"revolution_sin_on_z", "sin(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kSinZ});
   terms.push_back({"revolution_cos_on_z", "cos(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kCosZ});
+  const char* order_mechanisms[] = {
+      "",
+      "",
+      "twice per revolution: an oval (out-of-round) sleeve or hub, a bent shaft's second harmonic, or a "
+      "misalignment that the rotating gauges see twice a turn",
+      "three times per revolution: a three-lobed (triangular) sleeve or hub from machining or clamping, or a "
+      "three-point support",
+      "four times per revolution: a four-lobed sleeve or hub, or the bolts of a four-bolt flange"};
+  for (int k = 2; k <= kHighestShaftOrder; ++k) {
+    const std::string order = "order_" + std::to_string(k);
+    const std::string angle = std::to_string(k) + " phi_rot";
+    const std::pair<const char*, int> parts[] = {{"_sin_on_y", kSinY}, {"_cos_on_y", kCosY}, {"_sin_on_z", kSinZ}, {"_cos_on_z", kCosZ}};
+    for (const auto& [suffix, frame] : parts) {
+      const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
+      ExpressionTerm term{order + suffix, std::string(frame == kSinY || frame == kSinZ ? "sin" : "cos") + "(" + angle + ") on " + channel,
+                          "N·m", 1e7, order_mechanisms[k], kOrder, frame};
+      term.order = k;
+      terms.push_back(std::move(term));
+    }
+  }
   return terms;
 }
 
@@ -179,31 +203,84 @@ constexpr std::string_view kCyclePrefix = "time_cycle_";
 constexpr std::pair<std::string_view, int> kCycleSuffixes[] = {
     {"s_sin_on_y", kSinY}, {"s_cos_on_y", kCosY}, {"s_sin_on_z", kSinZ}, {"s_cos_on_z", kCosZ}};
 
-std::string period_text(double period_s) { return std::to_string(static_cast<long long>(period_s)); }
+/// A number in at most 6 significant digits, without exponent or trailing zeros: "70", "2.50137".
+std::string number_text(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  std::string text(buffer);
+  if (text.find('e') != std::string::npos) {  // %g chose an exponent: write it out in full
+    std::snprintf(buffer, sizeof buffer, "%.6f", value);
+    text = buffer;
+    if (text.find('.') != std::string::npos) {
+      text.erase(text.find_last_not_of('0') + 1);
+      if (text.back() == '.') text.pop_back();
+    }
+  }
+  return text;
+}
+
+std::string period_text(double period_s) { return number_text(period_s); }
+
+/// The number at the start of `text` if it is written as number_text writes it (one spelling a
+/// value, so one term a period or a time); the rest of `text` in `rest`.
+std::optional<double> leading_number(std::string_view text, std::string_view& rest) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end == text.data() || !std::isfinite(value)) return std::nullopt;
+  const std::string_view written(text.data(), static_cast<std::size_t>(end - text.data()));
+  if (written != number_text(value)) return std::nullopt;
+  rest = std::string_view(end, static_cast<std::size_t>(text.data() + text.size() - end));
+  return value;
+}
 
 ExpressionTerm cycle_term(double period_s, std::string_view suffix, int frame) {
   const bool sine = suffix.find("sin") != std::string_view::npos;
   const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
+  const std::string mechanisms =
+      period_s >= kSlowCycleS
+          ? "a moment that swings with time alone on a slow cycle: zero drift of the strain-gauge bridge with the "
+            "cell's temperature control (the air or oil cycling about its set point), or a slow rig oscillation"
+          : "a periodic component at " + number_text(1.0 / period_s) + " Hz that no input explains: electrical "
+            "pickup from a pump, fan or converter, a structural resonance of the rig excited by the cell, or a "
+            "beat between the DAQ's and the telemetry's clocks";
   return {std::string(kCyclePrefix) + period_text(period_s) + std::string(suffix),
           std::string(sine ? "sin" : "cos") + "(2 pi t / " + period_text(period_s) + " s) on " + channel,
-          "N·m", 1e7,
-          "a moment that swings with time alone on a slow cycle: zero drift of the strain-gauge bridge with the "
-          "cell's temperature control (the air or oil cycling about its set point), or a slow rig oscillation; on "
-          "one channel, so more likely a sensor than the coupling",
-          kCycle, frame, period_s};
+          "N·m", 1e7, mechanisms + "; on one channel, so more likely a sensor than the coupling", kCycle, frame, period_s};
 }
 
-/// The time_cycle term `name` stands for, or nullopt: "time_cycle_<whole seconds>s_<sin|cos>_on_<y|z>".
+/// The time_cycle term `name` stands for, or nullopt: "time_cycle_<period>s_<sin|cos>_on_<y|z>".
 std::optional<ExpressionTerm> parse_cycle_term(std::string_view name) {
   if (name.substr(0, kCyclePrefix.size()) != kCyclePrefix) return std::nullopt;
   name.remove_prefix(kCyclePrefix.size());
-  long long period = 0;
-  const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), period);
-  if (error != std::errc() || end == name.data() || name.front() == '0') return std::nullopt;  // one spelling a period
-  const std::string_view suffix(end, static_cast<std::size_t>(name.data() + name.size() - end));
-  const double p = static_cast<double>(period);
-  if (p < kShortestCycleS || p > kLongestCycleS) return std::nullopt;
-  for (const auto& [s, frame] : kCycleSuffixes) if (suffix == s) return cycle_term(p, s, frame);
+  std::string_view suffix;
+  const std::optional<double> p = leading_number(name, suffix);
+  if (!p || *p < kShortestCycleS || *p > kLongestCycleS) return std::nullopt;
+  for (const auto& [s, frame] : kCycleSuffixes) if (suffix == s) return cycle_term(*p, s, frame);
+  return std::nullopt;
+}
+
+constexpr std::string_view kStepPrefix = "step_at_";
+
+ExpressionTerm step_term(double time_s, int frame) {
+  const std::string channel = frame == kSinY ? "M_sy'" : "M_sz'";
+  ExpressionTerm term{std::string(kStepPrefix) + number_text(time_s) + (frame == kSinY ? "s_on_y" : "s_on_z"),
+                      "(t >= " + number_text(time_s) + " s) on " + channel, "N·m", 1e7,
+                      "a step of one channel's zero at that time: a bridge re-zeroed or re-balanced, a gauge or "
+                      "amplifier replaced, a connector reseated, or a bolt that slipped",
+                      kStep, frame};
+  term.step_time_s = time_s;
+  return term;
+}
+
+/// The step term `name` stands for, or nullopt: "step_at_<time>s_on_<y|z>".
+std::optional<ExpressionTerm> parse_step_term(std::string_view name) {
+  if (name.substr(0, kStepPrefix.size()) != kStepPrefix) return std::nullopt;
+  name.remove_prefix(kStepPrefix.size());
+  std::string_view suffix;
+  const std::optional<double> t = leading_number(name, suffix);
+  if (!t || std::abs(*t) > kLatestStepS) return std::nullopt;
+  if (suffix == "s_on_y") return step_term(*t, kSinY);
+  if (suffix == "s_on_z") return step_term(*t, kSinZ);
   return std::nullopt;
 }
 
@@ -216,6 +293,10 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     return *s * direction(frame, sample, model);
   }
   if (scalar == kCycle) return harmonic(frame, 2.0 * std::numbers::pi * sample.time_s / period_s);
+  if (scalar == kStep) {
+    const double on = sample.time_s >= step_time_s ? 1.0 : 0.0;
+    return frame == kSinY ? Eigen::Vector2d(on, 0.0) : Eigen::Vector2d(0.0, on);
+  }
   switch (frame) {
     case kGainYY: return Eigen::Vector2d(model.y_nm, 0.0);
     case kGainZZ: return Eigen::Vector2d(0.0, model.z_nm);
@@ -224,7 +305,7 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     default: break;
   }
   if (!sample.rotation_phase_rad) return std::nullopt;
-  return harmonic(frame, *sample.rotation_phase_rad);
+  return harmonic(frame, (scalar == kOrder ? order : 1) * *sample.rotation_phase_rad);
 }
 
 const std::vector<ExpressionTerm>& expression_terms() {
@@ -235,6 +316,7 @@ const std::vector<ExpressionTerm>& expression_terms() {
 const ExpressionTerm* find_expression_term(std::string_view name) {
   for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return &t;
   std::optional<ExpressionTerm> cycle = parse_cycle_term(name);
+  if (!cycle) cycle = parse_step_term(name);
   if (!cycle) return nullptr;
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<const ExpressionTerm>, std::less<>> made;
@@ -245,10 +327,15 @@ const ExpressionTerm* find_expression_term(std::string_view name) {
 }
 
 std::vector<std::string> cycle_term_names(double period_s) {
-  const double p = std::clamp(std::round(period_s), kShortestCycleS, kLongestCycleS);
+  const double p = std::stod(number_text(std::clamp(period_s, kShortestCycleS, kLongestCycleS)));
   std::vector<std::string> names;
   for (const auto& [suffix, frame] : kCycleSuffixes) names.push_back(cycle_term(p, suffix, frame).name);
   return names;
+}
+
+std::vector<std::string> step_term_names(double time_s) {
+  const double t = std::stod(number_text(std::clamp(time_s, -kLatestStepS, kLatestStepS)));
+  return {step_term(t, kSinY).name, step_term(t, kSinZ).name};
 }
 
 }  // namespace gc

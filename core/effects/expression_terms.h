@@ -35,15 +35,28 @@ struct ExpressionTerm {
   int scalar = 0;
   int frame = 0;
   double period_s = 0.0;  ///< of a time_cycle term [s]; 0 for the others
+  int order = 0;          ///< of a shaft-order term (k of sin/cos(k phi_rot)); 0 for the others
+  double step_time_s = 0.0;  ///< of a step term [s]
 };
 
 /// Every term, in a fixed order.
 const std::vector<ExpressionTerm>& expression_terms();
-/// nullptr when no term has that name. A time_cycle term of a period of 2 s to 1e6 s in whole
-/// seconds is made on first use and lives as long as the process.
+/// nullptr when no term has that name. A time_cycle term (a period of 0.02 s to 1e6 s, written
+/// with at most 6 significant digits) or a step term (a time within +-1e9 s, likewise) is made on
+/// first use and lives as long as the process.
 const ExpressionTerm* find_expression_term(std::string_view name);
 
-/// The four time_cycle terms (sin and cos on each channel) of `period_s`, rounded to whole seconds.
+/// The four time_cycle terms (sin and cos on each channel) of `period_s`, written with 6
+/// significant digits: the phase of a cycle must hold over the whole recording (a 0.4 Hz
+/// interference over 10,000 s needs the period to 1e-5 of itself).
 std::vector<std::string> cycle_term_names(double period_s);
+
+/// The two step terms (on each channel) of a step at `time_s`, written with 6 significant digits:
+/// 0 before that time, 1 from it on.
+std::vector<std::string> step_term_names(double time_s);
+
+/// Shaft orders offered beside the revolution (order 1): 2 (an oval sleeve, a bent shaft's second
+/// harmonic) to this.
+inline constexpr int kHighestShaftOrder = 4;
 
 }  // namespace gc

@@ -1,0 +1,28 @@
+// The time of a step in the residual: a bridge re-zeroed or re-balanced mid-test, a gauge or an
+// amplifier replaced, a bolt that slipped. Each channel's residual, less what the inputs explain
+// (nuisance), is scanned by the CUSUM statistic of a single change in mean,
+//   C(k) = |S_k - (k / n) S_n| / sqrt(k (n - k) / n),   S_k the sum of the first k values,
+// the likelihood-ratio statistic for one change point under white noise (Page 1954; Hinkley 1970),
+// over changes that leave at least a twentieth of the rows on either side. The maximum over both
+// channels gives the time (halfway between the two rows it separates). The discrepancy stage offers
+// step terms at that time on each channel (core/effects/expression_terms.h); whether a step stays is
+// for its held-out test and the drift rule (a step must predict whole fifths of the recording it
+// was not fitted on), which judge it against the coloured noise that CUSUM alone would take for
+// steps.
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include <Eigen/Dense>
+
+#include "core/recorded_sample.h"
+
+namespace gc {
+
+/// The time [s] of the strongest single change in mean of `residual` (rows k of
+/// observations[rows[k]], in time order); nullopt for fewer than 40 rows.
+std::optional<double> dominant_step_time(std::span<const RecordedSample> observations,
+                                         std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual);
+
+}  // namespace gc
