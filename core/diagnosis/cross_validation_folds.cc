@@ -39,4 +39,11 @@ Folds blocked_folds(std::size_t count, int folds, int blocks_per_fold, std::uint
   return out;
 }
 
+Folds with_test_blocks(Folds folds, std::size_t rows_per_block) {
+  const std::size_t per = std::max<std::size_t>(2, rows_per_block);
+  for (std::size_t i = 0; i < folds.block_of.size(); ++i) folds.block_of[i] = static_cast<int>(i / per);
+  folds.blocks = static_cast<int>((folds.block_of.size() + per - 1) / per);
+  return folds;
+}
+
 }  // namespace gc

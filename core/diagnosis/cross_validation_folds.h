@@ -25,4 +25,11 @@ struct Folds {
 /// so every fold still sees the whole load sequence), to show a verdict does not hang on the cut.
 Folds blocked_folds(std::size_t count, int folds, int blocks_per_fold, std::uint64_t seed = 0);
 
+/// The blocks of the paired tests cut again, `rows_per_block` contiguous positions each (at least
+/// 2), the folds unchanged. A block must outlast the noise's correlation, no more: an effect that
+/// lives in transients (a skew shows only while the inputs move) carries its gain in few rows,
+/// and a test over 100 blocks cannot find it significant however large it is, for its gain falls
+/// in a tenth of them (t at most sqrt(100 x 0.1 / 0.9) = 3.3).
+Folds with_test_blocks(Folds folds, std::size_t rows_per_block);
+
 }  // namespace gc

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/diagnosis/claim_review.h"
+#include "core/diagnosis/delay_estimate.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/diagnosis/verdict_text.h"
@@ -66,7 +67,10 @@ std::optional<EffectRegistration> registration_for(const Effect& effect, const D
 std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
                                             const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
                                             const Folds& folds, const ParallelFor& parallel,
-                                            const CouplingModel& given, const DiagnosisSettings& settings) {
+                                            const CouplingModel& given, const DiagnosisSettings& given_settings,
+                                            const std::vector<ParameterValues>& hints) {
+  DiagnosisSettings settings = given_settings;
+  for (const ParameterValues& hint : hints) settings.cross_validation.fit.hints.push_back(hint);
   std::vector<CandidateScore> ranking;
   for (const EffectRegistration& registration : settings.library) {
     // The formula has its own stage; an effect the model has is a refinement below.
@@ -101,6 +105,12 @@ bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const D
 }
 
 bool plausible(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
+
+/// An input that carries at least this share of an effect's correction is one the effect explains.
+constexpr double kExplainedInputShare = 0.1;
+
+/// A parameter on a physical bound: the truth may lie beyond what the effect can say.
+bool at_bound(const CandidateScore& c) { return !c.fit || c.fit->at_bound(); }
 
 /// Alike: corrections that point the same way, and held-out errors within a small share of each
 /// other or not significantly different.
@@ -167,6 +177,7 @@ void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, doubl
 FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSettings& settings) {
   FormulaSettings out = settings.formula_settings;
   out.variance_inflation = round.noise.variance_inflation();
+  out.time_terms = round.time_terms;
   return out;
 }
 
@@ -191,7 +202,8 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
   round.noise = estimate_noise(residual);
-  const double noise_ms = round.noise.sigma_nm.squaredNorm() / 2.0;
+  // Tails included: a Student-t noise's mean square is twice its robust sigma^2 and is no physics.
+  const double noise_ms = round.noise.mean_square();
   const double all_ms = pooled_mean_square(residual);
   round.rmse_nm = std::sqrt(all_ms);
   // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
@@ -205,20 +217,34 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.outcome = RoundOutcome::noise;
     return round;
   }
-  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, settings);
+  // Cycles and steps on the dense rows: on the search rows of a long recording a cycle of a few
+  // seconds aliases, and a step's time is known only to their spacing.
+  round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows));
+  // A skew of the moment channels, by cross-correlation on the dense rows: a start for moment_delay.
+  std::vector<ParameterValues> hints;
+  if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows))) {
+    hints.push_back({{"delay_s", *delay}});
+  }
+  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, settings, hints);
   put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
   if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
   const bool effect_ok = !round.ranking.empty() && claimable(round.ranking.front(), base_ms, noise_ms, settings);
   const bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
+  if (round.formula && !round.ranking.empty() && round.ranking.front().failure.empty()) {
+    round.formula_against_effect = paired_block_test(round.ranking.front().held_out_residual,
+                                                     round.formula->held_out_residual, folds.block_of, folds.blocks);
+  }
   if (formula_ok && effect_ok) {
     const CandidateScore& effect = round.ranking.front();
-    const PairedBlockTest t = paired_block_test(effect.held_out_residual, round.formula->held_out_residual,
-                                                folds.block_of, folds.blocks);
+    const PairedBlockTest t = round.formula_against_effect;
     const double effect_gain = base_ms - std::pow(effect.held_out_rmse_nm, 2);
     const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
-    round.formula_chosen = !plausible(effect) || (t.t >= settings.formula_over_effect_t &&
-                                                  formula_gain >= settings.formula_over_effect_gain * effect_gain);
-    if (round.formula_chosen && plausible(effect) && effect_explains_part(effect, *round.formula, observations, search,
+    // Plausibility is advice, never a veto: an effect outside its plausible range (a rig aligned
+    // worse than usual) keeps the claim unless the formula is significantly better. Only an effect
+    // held on a physical bound, which cannot say how far beyond it the truth lies, yields to it.
+    round.formula_chosen = at_bound(effect) || (t.t >= settings.formula_over_effect_t &&
+                                                formula_gain >= settings.formula_over_effect_gain * effect_gain);
+    if (round.formula_chosen && !at_bound(effect) && effect_explains_part(effect, *round.formula, observations, search,
                                                                             folds, formula_settings(round, settings))) {
       round.formula_chosen = false;
     }
@@ -226,7 +252,12 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.formula_chosen = formula_ok;
   }
   if (!effect_ok && !formula_ok) {
-    round.outcome = RoundOutcome::unexplained;
+    // Structure must be explained by something: an input (the signature), a time pattern or a
+    // frequency (the formula's terms). A level above the noise estimate that none of them explains
+    // on held-out data is heavy-tailed or wandering noise, not physics.
+    round.unstructured_excess = !round.signature.systematic();
+    if (round.unstructured_excess) round.systematic = false;
+    round.outcome = round.unstructured_excess ? RoundOutcome::noise : RoundOutcome::unexplained;
     return round;
   }
   if (round.formula_chosen) {
@@ -234,28 +265,29 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   } else {
     round.alike = alike_effects(model, round.ranking, base, folds, base_ms, noise_ms, observations, rows,
                                 round.noise.pooled_sigma_nm(), settings);
-    round.outcome = !plausible(round.ranking.front()) ? RoundOutcome::partly_explained
-                    : round.alike.empty()             ? RoundOutcome::effect_found
-                                                      : RoundOutcome::indistinguishable;
+    round.outcome = at_bound(round.ranking.front()) ? RoundOutcome::partly_explained
+                    : round.alike.empty()           ? RoundOutcome::effect_found
+                                                    : RoundOutcome::indistinguishable;
     if (round.outcome == RoundOutcome::partly_explained) {
-      round.partly_reason = "a fitted value outside its plausible range or on a bound means another mechanism with a "
-                            "similar signature";
+      round.partly_reason = "a fitted value on a physical bound of the effect: the truth may lie beyond what it can say, "
+                            "or another mechanism has a similar signature";
     } else if (round.outcome == RoundOutcome::effect_found) {
-      // Found only when what it leaves shows no structure in the input it explains: the physical
-      // input that carries most of its correction (given the others), e.g. loading_direction for
-      // hysteresis. Not time: a sweep moves every input with time, and effects act through the others.
+      // Found only when what it leaves shows no structure in the inputs it explains: the physical
+      // inputs that carry a real share of its correction (given the others), e.g. loading_direction
+      // for hysteresis. Not time: a sweep moves every input with time, and effects act through the
+      // others. A gain of both channels that took a torque sensor's nonlinearity leaves torque
+      // structure behind, and is then only "partly".
       const CandidateScore& best = round.ranking.front();
       const double inflation = round.noise.variance_inflation();
       const ResidualSignature correction = residual_signature(observations, search, base - best.held_out_residual, inflation);
       const ResidualSignature after = residual_signature(observations, search, best.held_out_residual, inflation);
-      std::string input;
       for (const InputSignature& s : correction.inputs) {
-        if (s.input != "time" && s.explained_share > 0.0) { input = s.input; break; }
-      }
-      const InputSignature* left = after.find(input);
-      if (left && left->systematic) {
+        if (s.input == "time" || s.explained_share < kExplainedInputShare) continue;
+        const InputSignature* left = after.find(s.input);
+        if (!left || !left->systematic) continue;
         round.outcome = RoundOutcome::partly_explained;
-        round.partly_reason = "the residual it leaves is still systematic against " + input + ", the input it explains";
+        round.partly_reason = "the residual it leaves is still systematic against " + s.input + ", an input it explains";
+        break;
       }
     }
   }
@@ -317,6 +349,20 @@ std::optional<EffectFit> formula_absorbing(const CouplingModel& model, const std
   std::vector<std::string> terms;
   for (const ParameterEstimate& p : fresh->fit->parameters) terms.push_back(p.name);
   return fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
+}
+
+/// Search rows per block of the paired tests: three times the variance inflation of the noise's
+/// correlation between neighbouring search rows (lag-1 correlation phi^stride for search rows
+/// `stride` samples apart), so that block means are nearly independent; at most the rows of the
+/// cross-validation's blocks, the most a test needs.
+std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
+                            const DiagnosisSettings& settings) {
+  const double stride = static_cast<double>(rows) / static_cast<double>(std::max<std::size_t>(1, search));
+  const double phi = std::pow(std::clamp(noise.phi.maxCoeff(), 0.0, 0.99), stride);
+  const auto wanted = static_cast<std::size_t>(std::ceil(3.0 * (1.0 + phi) / (1.0 - phi)));
+  const std::size_t coarsest = search / static_cast<std::size_t>(settings.cross_validation.folds *
+                                                                  settings.cross_validation.blocks_per_fold);
+  return std::clamp<std::size_t>(wanted, 2, std::max<std::size_t>(2, coarsest));
 }
 
 /// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
@@ -416,8 +462,10 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   out.search_rows = search.size();
   const std::vector<std::size_t> refit = evenly_spaced(rows, settings.refit_rows);
   out.refit_rows = refit.size();
-  const Folds folds = blocked_folds(search.size(), settings.cross_validation.folds,
-                                    settings.cross_validation.blocks_per_fold, settings.cross_validation.fold_seed);
+  const Folds folds = with_test_blocks(
+      blocked_folds(search.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
+                    settings.cross_validation.fold_seed),
+      test_block_rows(estimate_noise(residual), rows.size(), search.size(), settings));
   if (!out.outlier_rows.empty()) {
     out.summary = std::to_string(out.outlier_rows.size()) + " of " + std::to_string(out.rows) +
                   " samples excluded as outliers (more than " + short_number(settings.outlier_deviations) +

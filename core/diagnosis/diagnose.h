@@ -101,6 +101,9 @@ struct DiagnosisRound {
   double rmse_nm = 0.0;                    ///< the model's pooled RMSE over all usable rows
   NoiseEstimate noise;                     ///< sigma and lag-1 autocorrelation per channel (variogram fit)
   bool systematic = false;                 ///< the residual is more than noise
+  /// Noise although its level is above the noise estimate: no input, time pattern or frequency
+  /// explains any of it on held-out data (heavy-tailed or wandering noise).
+  bool unstructured_excess = false;
   ResidualSignature signature;             ///< of the model's residual, all usable rows
   std::vector<CandidateScore> ranking;     ///< by held-out RMSE, best first; failures last
   double search_base_rmse_nm = 0.0;        ///< the model's RMSE on the search rows
@@ -110,6 +113,8 @@ struct DiagnosisRound {
   Eigen::Vector2d channel_reduction = Eigen::Vector2d::Zero();
   std::vector<AlikeEffect> alike;          ///< when indistinguishable
   std::optional<CandidateScore> formula;   ///< the discrepancy stage's candidate, when it kept terms
+  /// The formula's held-out gain over the best effect, block-paired (t > 0: the formula is better).
+  PairedBlockTest formula_against_effect;
   /// The candidate claimed: ranking.front(), or the formula (then ranking.front() is the best effect).
   const CandidateScore& chosen() const;
   bool formula_chosen = false;
@@ -118,6 +123,8 @@ struct DiagnosisRound {
   /// residual left after it still systematic against the input it explains.
   std::string partly_reason;
   std::string verdict;                     ///< plain language
+  /// The time_cycle and step terms the formula stage is offered this round, found on the refit rows.
+  std::vector<std::string> time_terms;
 };
 
 struct Diagnosis {

@@ -6,7 +6,10 @@
 namespace gc {
 namespace {
 
-constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of the noise we meet
+constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of most noise we meet
+constexpr int kLongestLag = 100;  ///< samples: for noise of long correlation (phi >= kLongPhi)
+constexpr double kLongPhi = 0.8;
+constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean square says little
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
 
 double median(std::vector<double> values) {
@@ -49,34 +52,62 @@ VariogramFit fit_for_phi(const Eigen::VectorXd& gamma, double phi) {
   return best;
 }
 
-/// sigma, phi of one channel.
-std::pair<double, double> channel_noise(const Eigen::VectorXd& r) {
-  if (r.size() < 2) return {0.0, 0.0};
-  const int lags = static_cast<int>(std::min<Eigen::Index>(kMaxLag, r.size() / 4));
-  if (lags < 3) return {std::sqrt(robust_semivariance(r, 1)), 0.0};
-  Eigen::VectorXd gamma(lags);
-  for (int h = 1; h <= lags; ++h) gamma(h - 1) = robust_semivariance(r, h);
+/// The best fit of the variogram over phi in [0, highest_phi] (steps of 0.005).
+VariogramFit fit_variogram(const Eigen::VectorXd& gamma, double highest_phi) {
   VariogramFit best;
-  for (int k = 0; k <= 95; ++k) {
-    const VariogramFit f = fit_for_phi(gamma, k / 100.0);
+  for (int k = 0; k <= static_cast<int>(std::lround(highest_phi * 200.0)); ++k) {
+    const VariogramFit f = fit_for_phi(gamma, k / 200.0);
     if (f.sse < best.sse) best = f;
   }
-  return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi};
+  return best;
+}
+
+Eigen::VectorXd semivariances(const Eigen::VectorXd& r, int lags) {
+  Eigen::VectorXd gamma(lags);
+  for (int h = 1; h <= lags; ++h) gamma(h - 1) = robust_semivariance(r, h);
+  return gamma;
+}
+
+/// Mean over median-based lag-1 semivariance: the tails of the noise's increments.
+double tail_factor(const Eigen::VectorXd& r) {
+  const double robust = robust_semivariance(r, 1);
+  if (!(robust > 0.0) || r.size() < 3) return 1.0;
+  const double mean = 0.5 * (r.tail(r.size() - 1) - r.head(r.size() - 1)).squaredNorm() / static_cast<double>(r.size() - 1);
+  return std::clamp(mean / robust, 1.0, kTailCap);
+}
+
+struct ChannelNoise {
+  double sigma = 0.0, phi = 0.0, tail = 1.0;
+};
+
+/// sigma, phi and the tail factor of one channel.
+ChannelNoise channel_noise(const Eigen::VectorXd& r) {
+  if (r.size() < 2) return {};
+  const int lags = static_cast<int>(std::min<Eigen::Index>(kMaxLag, r.size() / 4));
+  if (lags < 3) return {std::sqrt(robust_semivariance(r, 1)), 0.0, tail_factor(r)};
+  VariogramFit best = fit_variogram(semivariances(r, lags), 0.95);
+  const int long_lags = static_cast<int>(std::min<Eigen::Index>(kLongestLag, r.size() / 4));
+  if (best.phi >= kLongPhi && long_lags > lags) {
+    const int wanted = static_cast<int>(std::ceil(3.0 / (1.0 - std::min(best.phi, 0.97))));
+    best = fit_variogram(semivariances(r, std::clamp(wanted, lags, long_lags)), 0.99);
+  }
+  return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi, tail_factor(r)};
 }
 
 }  // namespace
 
 double NoiseEstimate::variance_inflation() const {
-  const double p = std::clamp(phi.maxCoeff(), 0.0, 0.95);
+  const double p = std::clamp(phi.maxCoeff(), 0.0, 0.99);
   return (1.0 + p) / (1.0 - p);
 }
 
 NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual) {
   NoiseEstimate out;
   for (int c = 0; c < 2; ++c) {
-    const auto [sigma, phi] = channel_noise(residual.col(c));
-    out.sigma_nm(c) = sigma;
-    out.phi(c) = phi;
+    const ChannelNoise noise = channel_noise(residual.col(c));
+    out.sigma_nm(c) = noise.sigma;
+    out.phi(c) = noise.phi;
+    out.tail(c) = noise.tail;
   }
   return out;
 }

@@ -1,7 +1,9 @@
 // Whether one model predicts held-out data better than another: a paired t statistic on the
 // per-block mean difference of squared errors. Blocks (contiguous in time) rather than single
 // samples, because neighbouring errors are correlated and a per-sample test would overstate
-// the evidence.
+// the evidence. The block means are winsorized at 1 % either end (a transient of one block must not
+// carry the variance of the whole test), and the blocks are cut as long as the noise's correlation
+// needs (cross_validation_folds.h, with_test_blocks).
 #pragma once
 
 #include <vector>

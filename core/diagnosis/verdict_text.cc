@@ -46,9 +46,12 @@ std::string formula_text(const EffectFit& fit) {
 /// not so much better that it is claimed instead), it is shown: another reading of the same residual.
 std::string rival_formula_text(const DiagnosisRound& round) {
   if (!round.formula || round.formula_chosen || round.ranking.empty() || !round.formula->fit) return "";
-  if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm) return "";
+  // Within the uncertainty of each other (the effect not better by a block-paired t of 2): say so,
+  // as for two library effects.
+  if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm && round.formula_against_effect.t < -2.0) return "";
   return " A formula of physical terms does as well on held-out data (RMSE " + engineering_text(round.formula->held_out_rmse_nm, "N·m") +
-         "), another reading of the same residual: " + formula_text(*round.formula->fit) + ".";
+         ", t = " + short_number(round.formula_against_effect.t) + " against the effect), another reading of the same "
+         "residual that this data cannot tell from it: " + formula_text(*round.formula->fit) + ".";
 }
 
 std::string dropped_text(const DiagnosisRound& round) {
@@ -79,6 +82,18 @@ std::string signature_text(const ResidualSignature& signature) {
     text << ")";
   }
   return shown ? "systematic against " + text.str() : "no single input shows it";
+}
+
+/// Plausibility is advice: a value outside the usual range stays the answer, and the rig is checked.
+std::string implausible_advice(const EffectFit& fit) {
+  std::string text;
+  for (const ParameterEstimate& p : fit.parameters) {
+    if (p.held || p.plausible || p.at_bound) continue;
+    text += " " + p.name + " is " + p.note + ".";
+  }
+  if (text.empty()) return "";
+  return " It is still the best explanation on held-out data, with a value outside the range this physics usually "
+         "has:" + text;
 }
 
 std::string gain_text(const DiagnosisRound& round, const CandidateScore& c) {
@@ -115,13 +130,19 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
   const std::string head = "Round " + std::to_string(number) + " (model: " + (model.empty() ? "no effects" : model) + "): ";
   switch (round.outcome) {
     case RoundOutcome::noise:
+      if (round.unstructured_excess) {
+        return head + "the residual is noise: " + noise_text(round) + ". Its level is above that estimate, but no input, "
+               "time pattern or frequency explains any of it on held-out data (the best effect or formula is not "
+               "significant): noise with heavy tails or a wandering level, not physics. No effect is claimed.";
+      }
       return head + "the residual is noise: " + noise_text(round) +
              ", and no input shows a systematic dependence. No effect is claimed.";
     case RoundOutcome::unexplained: {
       std::string best;
  if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
-        best = " (the best, " + round.ranking.front().info->name + ", lowers the held-out RMSE by only " +
-               percent(round.ranking.front().reduction) + ", t = " + short_number(round.ranking.front().against_base.t) + ")";
+        best = " (the best, " + round.ranking.front().info->name + ", lowers the held-out RMSE by " +
+               percent(round.ranking.front().reduction) + " with t = " + short_number(round.ranking.front().against_base.t) +
+               " over blocks of the recording; a claim needs t >= 3.5 and 30 % of the excess over the noise)";
       }
  return head + "the residual is systematic (" + noise_text(round) + ") but neither an effect of the library nor a formula of physical terms explains it" +
              best + ". Its signature: " + signature_text(round.signature) + ".";
@@ -135,7 +156,7 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
       }
       return head + "the residual in " + channels(round.channel_reduction) + " is explained by " + c.info->name +
              " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " + gain_text(round, c) + "." +
-             rival_formula_text(round) + dropped_text(round);
+             implausible_advice(*round.claimed) + rival_formula_text(round) + dropped_text(round);
     }
     case RoundOutcome::partly_explained: {
       const CandidateScore& c = round.ranking.front();
