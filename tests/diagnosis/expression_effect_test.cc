@@ -92,8 +92,9 @@ TEST(ExpressionTerms, EveryTermHasAUnitABoundAndMechanisms) {
   EXPECT_NEAR(scaled.y(), 4.0, 1e-12);
 }
 
-// A slow cycle in time is a term whose period is in its name, made on first use: one spelling per
-// period in whole seconds, 2 s to 1e6 s; others are unknown terms, refused by name.
+// A cycle in time is a term whose period is in its name, made on first use: one spelling per period
+// (at most 6 significant digits, no exponent, no trailing zeros), 0.02 s to 1e6 s; others are
+// unknown terms, refused by name.
 TEST(ExpressionTerms, TimeCycleTermsCarryTheirPeriodInTheirName) {
   const ExpressionTerm* sine = find_expression_term("time_cycle_70s_sin_on_z");
   ASSERT_NE(sine, nullptr);
@@ -106,19 +107,65 @@ TEST(ExpressionTerms, TimeCycleTermsCarryTheirPeriodInTheirName) {
   EXPECT_NEAR(v.x(), 0.0, 1e-12);
   EXPECT_NEAR(v.y(), 1.0, 1e-12);
   EXPECT_NEAR(find_expression_term("time_cycle_70s_cos_on_y")->value(s, {1.0, 2.0})->x(), 0.0, 1e-12);
-  for (const char* bad : {"time_cycle_1s_sin_on_y", "time_cycle_070s_sin_on_y", "time_cycle_70.5s_sin_on_y",
-                          "time_cycle_70s_tan_on_y", "time_cycle_s_sin_on_y", "time_cycle_2000000s_sin_on_y"}) {
+  for (const char* bad : {"time_cycle_0.01s_sin_on_y", "time_cycle_070s_sin_on_y", "time_cycle_70.50s_sin_on_y",
+                          "time_cycle_70s_tan_on_y", "time_cycle_s_sin_on_y", "time_cycle_2000000s_sin_on_y",
+                          "time_cycle_7e1s_sin_on_y", "time_cycle_2.5000001s_sin_on_y", "time_cycle_nans_sin_on_y"}) {
     EXPECT_EQ(find_expression_term(bad), nullptr) << bad;
     EXPECT_EQ(field_of({{bad, 1.0}}).rfind(std::string("effects.expression.") + bad + ":", 0), 0u) << field_of({{bad, 1.0}});
   }
-  EXPECT_EQ(cycle_term_names(69.6), (std::vector<std::string>{"time_cycle_70s_sin_on_y", "time_cycle_70s_cos_on_y",
-                                                              "time_cycle_70s_sin_on_z", "time_cycle_70s_cos_on_z"}));
+  EXPECT_EQ(cycle_term_names(69.6), (std::vector<std::string>{"time_cycle_69.6s_sin_on_y", "time_cycle_69.6s_cos_on_y",
+                                                              "time_cycle_69.6s_sin_on_z", "time_cycle_69.6s_cos_on_z"}));
+  // An interference of a fixed frequency: its period to 6 digits, so that its phase holds.
+  EXPECT_EQ(cycle_term_names(2.50001234)[0], "time_cycle_2.50001s_sin_on_y");
+  const ExpressionTerm* fast = find_expression_term("time_cycle_2.50001s_cos_on_z");
+  ASSERT_NE(fast, nullptr);
+  EXPECT_DOUBLE_EQ(fast->period_s, 2.50001);
+  EXPECT_NE(fast->mechanisms.find("0.399998 Hz"), std::string::npos) << fast->mechanisms;
   // In a model, as any term: the expression adds c sin(2 pi t / P).
   const CouplingModel plain(testing::nrel_upwind(), {make_effect("friction")});
   const CouplingModel with = plain.with_effect(make_expression({{"time_cycle_70s_sin_on_z", 3000.0}}));
   s.torque_nm = 1.2e6;
   s.misalignment_rad = 0.004;
   EXPECT_NEAR(with.predict(s).moments.z_nm, plain.predict(s).moments.z_nm + 3000.0, 1e-6);
+}
+
+// Shaft orders 2..4 beside the revolution: sin/cos(k phi_rot) on each channel.
+TEST(ExpressionTerms, ShaftOrdersAreHarmonicsOfTheRotationPhase) {
+  const ExpressionTerm* order2 = find_expression_term("order_2_sin_on_y");
+  ASSERT_NE(order2, nullptr);
+  EXPECT_EQ(order2->formula, "sin(2 phi_rot) on M_sy'");
+  EXPECT_NE(order2->mechanisms.find("oval"), std::string::npos);
+  MeasurementSample s;
+  s.rotation_phase_rad = 0.25 * M_PI;  // 2 phi = 90 deg
+  EXPECT_NEAR(order2->value(s, {1.0, 2.0})->x(), 1.0, 1e-12);
+  EXPECT_NEAR(find_expression_term("order_4_cos_on_z")->value(s, {1.0, 2.0})->y(), -1.0, 1e-12);  // cos(pi)
+  EXPECT_EQ(find_expression_term("order_5_sin_on_y"), nullptr);
+  s.rotation_phase_rad.reset();
+  EXPECT_FALSE(order2->value(s, {1.0, 2.0}).has_value()) << "no speed, no phase, no order";
+}
+
+// A step of one channel at a time: its time in its name, 0 before and 1 from it on.
+TEST(ExpressionTerms, StepTermsCarryTheirTimeInTheirName) {
+  EXPECT_EQ(step_term_names(333.25), (std::vector<std::string>{"step_at_333.25s_on_y", "step_at_333.25s_on_z"}));
+  const ExpressionTerm* step = find_expression_term("step_at_333.25s_on_y");
+  ASSERT_NE(step, nullptr);
+  EXPECT_NE(step->mechanisms.find("re-zeroed"), std::string::npos);
+  MeasurementSample s;
+  s.time_s = 333.2;
+  EXPECT_EQ(*step->value(s, {}), Eigen::Vector2d(0.0, 0.0));
+  s.time_s = 333.25;
+  EXPECT_EQ(*step->value(s, {}), Eigen::Vector2d(1.0, 0.0));
+  for (const char* bad : {"step_at_333.250s_on_y", "step_at_333.25s_on_x", "step_at_s_on_y", "step_at_2e9s_on_z"}) {
+    EXPECT_EQ(find_expression_term(bad), nullptr) << bad;
+  }
+  const CouplingModel plain(testing::nrel_upwind(), {make_effect("friction")});
+  const CouplingModel with = plain.with_effect(make_expression({{"step_at_10s_on_z", -4000.0}}));
+  s.torque_nm = 1.2e6;
+  s.misalignment_rad = 0.004;
+  s.time_s = 12.0;
+  EXPECT_NEAR(with.predict(s).moments.z_nm, plain.predict(s).moments.z_nm - 4000.0, 1e-6);
+  s.time_s = 8.0;
+  EXPECT_NEAR(with.predict(s).moments.z_nm, plain.predict(s).moments.z_nm, 1e-6);
 }
 
 }  // namespace
