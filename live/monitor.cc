@@ -116,9 +116,12 @@ CellModel Monitor::model_for(const std::string& test_cell) {
   return model;
 }
 
-Monitor::Cell& Monitor::cell(const std::string& test_cell) {
+Monitor::Cell* Monitor::cell(const std::string& test_cell) {
   auto found = cells_.find(test_cell);
   if (found == cells_.end()) {
+    if (cells_.size() >= options_.max_cells && options_.cell_models.count(test_cell) == 0) {
+      return nullptr;
+    }
     spdlog::info("test cell {}: first sample, model {}", test_cell, model_for(test_cell).name);
     found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
                                           CellMonitor(model_for(test_cell), options_.cell)}))
@@ -129,7 +132,36 @@ Monitor::Cell& Monitor::cell(const std::string& test_cell) {
       model_refusals_.erase(refusal);
     }
   }
-  return *found->second;
+  return found->second.get();
+}
+
+void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
+  refused_batches_ += 1;
+  refused_samples_ += samples;
+  // Once, then a summary at most once a minute: a burst of names must not flood the log.
+  const auto now = Clock::now();
+  if (refused_batches_ == 1) {
+    spdlog::warn("test cell {} refused: {} test cells are followed, the most --max-cells allows "
+                 "(a place frees when a cell is disposed after --dispose-s without samples); "
+                 "further refusals are summarised at most once a minute",
+                 test_cell, options_.max_cells);
+  } else if (now - refusals_logged_at_ >= std::chrono::minutes(1)) {
+    spdlog::warn("{} measurement batches ({} samples) of test cells beyond --max-cells {} refused "
+                 "so far, the latest of {}",
+                 refused_batches_, refused_samples_, options_.max_cells, test_cell);
+  } else {
+    return;
+  }
+  refusals_logged_at_ = now;
+}
+
+template <typename Map>
+bool Monitor::may_keep(const Map& kept, const std::string& test_cell) const {
+  if (kept.count(test_cell) > 0 || cells_.count(test_cell) > 0 ||
+      options_.cell_models.count(test_cell) > 0) {
+    return true;
+  }
+  return kept.size() < options_.max_cells + options_.cell_models.size();
 }
 
 CellModel Monitor::parsed_model(const std::string& text, const std::string& test_cell) {
@@ -157,6 +189,15 @@ void Monitor::take_models() {
         require_test_cell_name(test_cell);
       } catch (const InvalidInput& error) {
         spdlog::warn("model swap refused: {}", error.what());
+        continue;
+      }
+      if (!may_keep(decimations_, test_cell) || !may_keep(models_, test_cell) ||
+          !may_keep(model_refusals_, test_cell)) {
+        if (refused_swaps_++ == 0) {
+          spdlog::warn("model swap for test cell {} refused: swaps for {} test cells not seen "
+                       "yet are kept already, the most --max-cells allows; not logged again",
+                       test_cell, options_.max_cells);
+        }
         continue;
       }
       if (swap.residual_decimation > 0) decimations_[test_cell] = swap.residual_decimation;
@@ -196,7 +237,12 @@ void Monitor::take_measurements() {
                      error.what());
         continue;
       }
-      Cell& c = cell(test_cell);
+      Cell* followed = cell(test_cell);
+      if (followed == nullptr) {
+        refuse_cell(test_cell, batch.samples._length);
+        continue;
+      }
+      Cell& c = *followed;
       c.last_sample = Clock::now();
       const auto decimation = decimations_.find(test_cell);
       const std::uint32_t every = decimation != decimations_.end() ? decimation->second

@@ -27,6 +27,13 @@ struct MonitorOptions {
   double stale_s = 2.0;           ///< health says stale after this long without a sample [s]
   double dispose_s = 10.0;        ///< and the cell's health is disposed after this long [s]
   std::uint32_t decimation = 1;   ///< residuals: one per this many evaluated samples
+  /// Test cells followed at once, besides those named in cell_models (always followed). A
+  /// batch of a new test cell beyond it is refused and counted (refused_batches()), logged the
+  /// first time and then at most once a minute; a cell's place is free again once disposed
+  /// (dispose_s). A cell costs ~50 kB (its CellMonitor: two health windows, the model in force
+  /// and the one before; docs/dashboard.md), so 64, a test hall, keep the monitor within a few
+  /// MB whatever names arrive. Model swaps for cells not followed yet are kept for as many.
+  std::size_t max_cells = 64;
 };
 
 class Monitor {
@@ -42,13 +49,22 @@ class Monitor {
   void stop();
 
   std::uint64_t monitor_id() const { return monitor_id_; }
+  /// Measurement batches refused because max_cells test cells were followed.
+  std::uint64_t refused_batches() const { return refused_batches_; }
 
  private:
   struct Cell;
   void take_models();
   void take_measurements();
   void publish_health();
-  Cell& cell(const std::string& test_cell);
+  /// `test_cell`'s state, made when new; nullptr when max_cells cells are followed and it is
+  /// not configured (counted and logged by refuse_cell).
+  Cell* cell(const std::string& test_cell);
+  void refuse_cell(const std::string& test_cell, std::size_t samples);
+  /// Whether a swap for `test_cell` may be remembered in `kept` (a map by test cell): always
+  /// for a followed or configured cell, for others while fewer than max_cells are kept.
+  template <typename Map>
+  bool may_keep(const Map& kept, const std::string& test_cell) const;
   CellModel model_for(const std::string& test_cell);
   /// The model of a swap's text, parsed once (throws InvalidInput as parse_cell_model).
   CellModel parsed_model(const std::string& text, const std::string& test_cell);
@@ -70,6 +86,9 @@ class Monitor {
   protocol::Entity measurement_reader_, model_reader_, residual_writer_, health_writer_;
   protocol::Entity waitset_;
   std::atomic<bool> stopping_{false};
+  std::uint64_t refused_batches_ = 0, refused_samples_ = 0, refused_swaps_ = 0;
+  std::uint64_t refused_batches_logged_ = 0;
+  std::chrono::steady_clock::time_point refusals_logged_at_{};
 };
 
 }  // namespace gc::live
