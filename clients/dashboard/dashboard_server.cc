@@ -59,6 +59,12 @@ DashboardServer::DashboardServer(DashboardOptions options)
       http_(std::make_unique<httplib::Server>()) {
   const std::size_t threads = options_.max_streams + kThreadsBesideStreams;
   http_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  // One request per connection. httplib serves a connection on one thread until it closes, so a
+  // kept-alive connection holds a thread for up to 5 s after each answer: a browser refused a
+  // stream (or anyone) could pin the threads meant for the page and /metrics that way. A new
+  // connection per request costs a dashboard (a page of three requests, a scrape every few
+  // seconds) nothing measurable.
+  http_->set_keep_alive_max_count(1);
   add_routes();
   port_ = options_.listen_port == 0 ? http_->bind_to_any_port(options_.listen_host)
                                     : (http_->bind_to_port(options_.listen_host,
@@ -127,8 +133,6 @@ void DashboardServer::add_routes() {
 void DashboardServer::refuse_stream(httplib::Response& response) {
   response.status = 503;
   response.set_header("Retry-After", kRetryAfterSeconds);
-  // The refused browser's connection goes at once: kept alive, it would hold a thread.
-  response.set_header("Connection", "close");
   response.set_content(fmt::format("{{\"error\": \"{} event streams are open, the most this dashboard "
                                    "serves (--max-streams): try again in {} s\"}}",
                                    options_.max_streams, kRetryAfterSeconds),

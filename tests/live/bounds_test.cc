@@ -157,7 +157,7 @@ TEST(LiveBounds, FiveThousandCellHealthsInABurstLeaveTheDashboardShowingAtMostMa
   const long before_kb = resident_kb(dashboard.pid());
 
   live::HealthReport report;
-  report.model.name = "paper";
+  report.model.model_name = "paper";
   report.worst_region = "at high torque the model is 10 % low";
   gearcoupling_Residual residual{1, 0.0, 1e4, 2e4, 1.1e4, 2.1e4};
   const std::uint64_t monitor_id = protocol::random_id();
