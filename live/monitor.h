@@ -30,9 +30,10 @@ struct MonitorOptions {
   /// Test cells followed at once, besides those named in cell_models (always followed). A
   /// batch of a new test cell beyond it is refused and counted (refused_batches()), logged the
   /// first time and then at most once a minute; a cell's place is free again once disposed
-  /// (dispose_s). A cell costs ~50 kB (its CellMonitor: two health windows, the model in force
-  /// and the one before; docs/dashboard.md), so 64, a test hall, keep the monitor within a few
-  /// MB whatever names arrive. Model swaps for cells not followed yet are kept for as many.
+  /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
+  /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
+  /// test hall, keep the monitor within 3 MB whatever names arrive. Model swaps for cells not
+  /// followed yet are kept for as many.
   std::size_t max_cells = 64;
 };
 

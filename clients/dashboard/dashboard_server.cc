@@ -178,6 +178,9 @@ std::string DashboardServer::metrics() {
   own.family("gearcoupling_dashboard_cells_refused_total", "counter",
              "Test-cell samples (health or residuals) ignored because --max-cells cells were on the board.");
   own.sample("gearcoupling_dashboard_cells_refused_total", {}, static_cast<double>(cells_.refused()));
+  own.family("gearcoupling_dashboard_instances_refused_total", "counter",
+             "Service status samples ignored because 64 live instances were on the board.");
+  own.sample("gearcoupling_dashboard_instances_refused_total", {}, static_cast<double>(instances_.refused()));
   own.family("gearcoupling_dashboard_max_cells", "gauge",
              "Test cells the board holds at most (--max-cells).");
   own.sample("gearcoupling_dashboard_max_cells", {}, static_cast<double>(options_.max_cells));

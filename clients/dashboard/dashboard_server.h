@@ -33,9 +33,9 @@ struct DashboardOptions {
   std::chrono::milliseconds update_interval{100};
   /// Updates a slow browser may fall behind before its oldest is dropped.
   std::size_t queue_capacity = 16;
-  /// The same in bytes: a queued update is the whole state (about 1.5 kB a test cell, so 64
-  /// cells make ~100 kB), and this keeps a browser that stopped reading from holding 16 of the
-  /// largest. The newest update is always kept.
+  /// The same in bytes: a queued update is the whole state (~650 B a test cell, 42 kB for 64,
+  /// more with long refusal texts), and this keeps a browser that stopped reading from holding
+  /// 16 of the largest. The newest update is always kept.
   std::size_t queue_bytes = 1 << 20;
   /// Event streams at once. Each holds one HTTP thread for as long as the browser stays, so
   /// the server runs max_streams + kThreadsBesideStreams threads: the page, /metrics and the

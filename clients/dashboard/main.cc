@@ -17,8 +17,9 @@ namespace {
 constexpr int kBadInput = 2;
 /// An event stream holds a thread (~8 MB of address space, little resident) and a queue.
 constexpr std::size_t kMostStreams = 1024;
-/// A cell takes ~1.5 kB of /metrics: 512 keep it under 1 MB (docs/dashboard.md).
-constexpr std::size_t kMostCells = 512;
+/// A cell takes 1 to 1.8 kB of /metrics (a 64-character name the most): 256 keep it far under
+/// 1 MB (docs/dashboard.md, "Bounds").
+constexpr std::size_t kMostCells = 256;
 
 /// "ADDR:PORT" (the port after the last colon, so "[::1]:8080" works too) into the options.
 void parse_listen(const std::string& listen, gc::dashboard::DashboardOptions& options) {

@@ -29,9 +29,9 @@ struct CellBoardOptions {
   /// Cells on the board at most. A new cell beyond it takes the place of the gone or stale one
   /// heard from longest ago, else it is refused (counted in refused(), logged once): whoever
   /// may publish health or residuals cannot grow the board, its JSON or /metrics without bound,
-  /// whatever forget_after is. A cell costs ~4 kB here (its record, strings cut at
-  /// kMaxTextBytes, and its aggregate) and ~1.5 kB in /metrics, so 64 (a test hall) keep both
-  /// small and 512 keeps /metrics under 1 MB.
+  /// whatever forget_after is. A cell costs the dashboard 5.7 kB resident (its record, strings
+  /// cut at kMaxTextBytes, its aggregate, Cyclone's instances), ~650 B of each update's JSON and
+  /// 1 to 1.8 kB of /metrics (docs/dashboard.md, "Bounds"): 64, a test hall, keep all small.
   std::size_t max_cells = 64;
 };
 

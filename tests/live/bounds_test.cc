@@ -12,7 +12,10 @@
 
 #include "live/health_wire.h"
 #include "live/live_qos.h"
+#include "protocol/names.h"
+#include "protocol/qos.h"
 #include "protocol/random_id.h"
+#include "protocol/topics.h"
 #include "protocol/samples.h"
 #include "tests/live/http_get.h"
 #include "tests/live/live_fixture.h"
@@ -310,6 +313,40 @@ TEST_F(DashboardBounds, ACellTakesAtMost16KilobytesOfTheDashboard) {
   EXPECT_LT(metrics.size(), kMostMetricsBytes);
   std::printf("dashboard: %.1f kB resident per test cell, /metrics %zu bytes (%d cells)\n",
               per_cell_kb, metrics.size(), kCells);
+}
+
+TEST_F(DashboardBounds, FiveThousandServiceStatusesLeaveTheDashboardShowingAtMost64Instances) {
+  start();
+  protocol::Entity topic = protocol::make_status_topic(participant_.get());
+  const protocol::Qos partition = protocol::partition_qos(protocol::kStatusPartition);
+  protocol::Entity publisher(protocol::check_dds(
+      dds_create_publisher(participant_.get(), partition.get(), nullptr), "dds_create_publisher"));
+  protocol::Entity writer = make_writer(publisher, topic, protocol::status_qos(2.0));
+  ASSERT_TRUE(live::wait_for_readers(writer.get(), 1, 20s));
+  const long before_kb = resident_kb(pid());
+  // Each status lists 6 calculations, as a service's does.
+  std::vector<gearcoupling_CalculationStats> calculations(6);
+  for (auto& c : calculations) c.calculation = const_cast<char*>("jam_angle");
+  for (int k = 0; k < kBurstCells; ++k) {
+    gearcoupling_ServiceStatus status{};
+    status.instance_id = 1000 + k;
+    status.request_partition = const_cast<char*>("gearcoupling.request.x");
+    status.host = const_cast<char*>("attacker");
+    status.accepting = true;
+    status.calculations._buffer = calculations.data();
+    status.calculations._length = status.calculations._maximum = 6;
+    write_reliably(writer.get(), &status);
+  }
+  const double beyond = kBurstCells - 64.0;
+  const std::string metrics = metrics_when([&](const std::string& m) {
+    return metric(m, "gearcoupling_dashboard_instances_refused_total") >= beyond;
+  });
+  EXPECT_GE(metric(metrics, "gearcoupling_dashboard_instances_refused_total"), beyond);
+  EXPECT_EQ(occurrences(metrics, "gearcoupling_instance_up{"), 64u);
+  EXPECT_LT(metrics.size(), kMostMetricsBytes);
+  EXPECT_LT(resident_kb(pid()) - before_kb, kMostGrowthKb);
+  std::printf("dashboard: %d service statuses: /metrics %zu bytes, +%ld kB resident\n", kBurstCells,
+              metrics.size(), resident_kb(pid()) - before_kb);
 }
 
 /// A connection asking for /events that never reads, with a small receive buffer: the server's
