@@ -156,12 +156,23 @@ void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
 }
 
 template <typename Map>
-bool Monitor::may_keep(const Map& kept, const std::string& test_cell) const {
-  if (kept.count(test_cell) > 0 || cells_.count(test_cell) > 0 ||
-      options_.cell_models.count(test_cell) > 0) {
-    return true;
+bool Monitor::make_room(Map& kept, const std::string& test_cell) {
+  if (kept.count(test_cell) > 0 || options_.cell_models.count(test_cell) > 0) return true;
+  if (kept.size() < 2 * options_.max_cells + options_.cell_models.size()) return true;
+  // Full: what is kept for a test cell neither followed nor configured goes. There is always
+  // one, since at most max_cells others are followed.
+  for (auto it = kept.begin(); it != kept.end(); ++it) {
+    if (cells_.count(it->first) == 0 && options_.cell_models.count(it->first) == 0) {
+      if (dropped_swaps_++ == 0) {
+        spdlog::warn("model swap kept for test cell {} (not seen yet) dropped for one of {}: "
+                     "swaps are kept for at most {} test cells not followed; not logged again",
+                     it->first, test_cell, options_.max_cells);
+      }
+      kept.erase(it);
+      return true;
+    }
   }
-  return kept.size() < options_.max_cells + options_.cell_models.size();
+  return false;
 }
 
 CellModel Monitor::parsed_model(const std::string& text, const std::string& test_cell) {
@@ -191,13 +202,8 @@ void Monitor::take_models() {
         spdlog::warn("model swap refused: {}", error.what());
         continue;
       }
-      if (!may_keep(decimations_, test_cell) || !may_keep(models_, test_cell) ||
-          !may_keep(model_refusals_, test_cell)) {
-        if (refused_swaps_++ == 0) {
-          spdlog::warn("model swap for test cell {} refused: swaps for {} test cells not seen "
-                       "yet are kept already, the most --max-cells allows; not logged again",
-                       test_cell, options_.max_cells);
-        }
+      if (!make_room(decimations_, test_cell) || !make_room(models_, test_cell) ||
+          !make_room(model_refusals_, test_cell)) {
         continue;
       }
       if (swap.residual_decimation > 0) decimations_[test_cell] = swap.residual_decimation;

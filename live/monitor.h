@@ -32,8 +32,8 @@ struct MonitorOptions {
   /// first time and then at most once a minute; a cell's place is free again once disposed
   /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
   /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
-  /// test hall, keep the monitor within 3 MB whatever names arrive. Model swaps for cells not
-  /// followed yet are kept for as many.
+  /// test hall, keep the monitor within 3 MB whatever names arrive. What swaps leave per test
+  /// cell (model, decimation, refusal) is kept for at most 2 max_cells cells (make_room).
   std::size_t max_cells = 64;
 };
 
@@ -62,10 +62,11 @@ class Monitor {
   /// not configured (counted and logged by refuse_cell).
   Cell* cell(const std::string& test_cell);
   void refuse_cell(const std::string& test_cell, std::size_t samples);
-  /// Whether a swap for `test_cell` may be remembered in `kept` (a map by test cell): always
-  /// for a followed or configured cell, for others while fewer than max_cells are kept.
+  /// Makes room in `kept` (what swaps left, by test cell) for `test_cell`: at most
+  /// 2 max_cells + the configured cells are kept, so once full what is kept for a cell neither
+  /// followed nor configured is dropped (logged once). False only if there is none to drop.
   template <typename Map>
-  bool may_keep(const Map& kept, const std::string& test_cell) const;
+  bool make_room(Map& kept, const std::string& test_cell);
   CellModel model_for(const std::string& test_cell);
   /// The model of a swap's text, parsed once (throws InvalidInput as parse_cell_model).
   CellModel parsed_model(const std::string& text, const std::string& test_cell);
@@ -87,7 +88,7 @@ class Monitor {
   protocol::Entity measurement_reader_, model_reader_, residual_writer_, health_writer_;
   protocol::Entity waitset_;
   std::atomic<bool> stopping_{false};
-  std::uint64_t refused_batches_ = 0, refused_samples_ = 0, refused_swaps_ = 0;
+  std::uint64_t refused_batches_ = 0, refused_samples_ = 0, dropped_swaps_ = 0;
   std::uint64_t refused_batches_logged_ = 0;
   std::chrono::steady_clock::time_point refusals_logged_at_{};
 };

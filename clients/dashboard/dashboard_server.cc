@@ -139,7 +139,7 @@ void DashboardServer::refuse_stream(httplib::Response& response) {
                        "application/json");
   if (!stream_refusal_logged_.exchange(true)) {
     spdlog::warn("an event stream refused: {} are open, the most --max-streams allows; counted "
-                 "in gearcoupling_dashboard_streams_refused_total, not logged again",
+                 "in gearcoupling_dashboard_connections_refused_total, not logged again",
                  options_.max_streams);
   }
 }
@@ -148,8 +148,8 @@ void DashboardServer::publish_loop() {
   auto next = std::chrono::steady_clock::now();
   while (!stopping_) {
     next += options_.update_interval;
-    // Nobody listens: build nothing (the whole state costs ~1 ms per 100 cells). The residual
-    // aggregates keep running on the board, and the first browser gets them in its first update.
+    // Nobody listens: build nothing. The residual aggregates keep running on the board (bounded:
+    // one per cell), and the first browser gets them in its first update.
     if (hub_.subscribers() > 0) {
       hub_.publish(state_json(true));
       updates_published_ += 1;

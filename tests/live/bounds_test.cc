@@ -166,6 +166,42 @@ TEST(LiveBounds, TheMonitorTakesAtMost100KilobytesPerFollowedCell) {
   std::printf("monitor: %.1f kB resident per followed test cell (%d cells)\n", per_cell_kb, kCells);
 }
 
+TEST(LiveBounds, ModelSwapsForThousandsOfUnseenCellsAreKeptForAtMostTwiceMaxCells) {
+  constexpr int kSwaps = 2000;
+  std::string log;
+  auto monitor = start_monitor({}, &log);
+  protocol::Entity participant = live::make_participant(test_domain());
+  protocol::Entity publisher = live::make_live_publisher(participant.get());
+  protocol::Entity topic = live::make_model_topic(participant.get());
+  protocol::Entity writer = make_writer(publisher, topic, live::model_qos());
+  ASSERT_TRUE(live::wait_for_readers(writer.get(), 1, 20s)) << "the monitor never matched";
+  std::this_thread::sleep_for(1s);
+  const long before_kb = resident_kb(monitor->pid());
+  // Each swap a text of its own (a comment makes it differ), so each is parsed into a model.
+  const std::string paper = read_file(GC_SOURCE_DIR "/data/models/paper.textproto");
+  const auto swap = [&](const std::string& name, const std::string& text) {
+    gearcoupling_ModelSwap sample{};
+    std::copy_n(name.c_str(), name.size() + 1, sample.test_cell);
+    sample.model_text = const_cast<char*>(text.c_str());
+    write_reliably(writer.get(), &sample);
+  };
+  for (int k = 0; k < kSwaps; ++k) swap(burst_cell(k), paper + "\n# " + std::to_string(k) + "\n");
+  // Last, from the same writer (so taken after all the others), a swap the monitor refuses with
+  // a warning: once it is in the log, every swap before it has been taken.
+  swap("burst-last", "not a model");
+  const auto deadline = std::chrono::steady_clock::now() + 120s;
+  while (read_file(log).find("test cell burst-last: model swap refused") == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(200ms);
+  }
+  ASSERT_NE(read_file(log).find("test cell burst-last: model swap refused"), std::string::npos);
+  const std::string text = read_file(log);
+  EXPECT_EQ(occurrences(text, "dropped for one of"), 1u) << text.substr(0, 4000);
+  const long growth_kb = resident_kb(monitor->pid()) - before_kb;
+  EXPECT_LT(growth_kb, kMostGrowthKb);
+  std::printf("monitor: %d model swaps for unseen cells: +%ld kB resident\n", kSwaps, growth_kb);
+}
+
 /// The dashboard's address from the first line it prints ("listening on http://ADDR:PORT/").
 int dashboard_port(const std::string& stdout_path) {
   const std::regex listening("listening on http://[^:]+:([0-9]+)/");
