@@ -5,7 +5,8 @@ it is received minus when the monitor published the newest residual batch it sum
 (ResidualAggregate.latest_published_unix_s; one host, one clock).
 
     dashboard_sse_clients.py URL CLIENTS SECONDS
-prints: clients, updates received per client per second, latency p50 and p99 [ms], residual
+prints: clients served, clients refused (503 beyond --max-streams), updates received per
+served client per second, latency p50 and p99 [ms], residual
 aggregates received, and this process's CPU time as a share of one core.
 """
 import http.client
@@ -17,11 +18,16 @@ import time
 import urllib.parse
 
 
-def client(url, seconds, latencies, counts, lock):
+def client(url, seconds, latencies, counts, refused, lock):
     parts = urllib.parse.urlsplit(url)
     connection = http.client.HTTPConnection(parts.hostname, parts.port, timeout=seconds + 5)
     connection.request("GET", "/events")
     response = connection.getresponse()
+    if response.status != 200:  # 503 beyond the dashboard's --max-streams
+        connection.close()
+        with lock:
+            refused.append(response.status)
+        return
     end = time.monotonic() + seconds
     mine, updates = [], 0
     while time.monotonic() < end:
@@ -45,8 +51,8 @@ def client(url, seconds, latencies, counts, lock):
 def main():
     url, clients, seconds = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
     cpu_start, wall_start = time.process_time(), time.monotonic()
-    latencies, counts, lock = [], [], threading.Lock()
-    threads = [threading.Thread(target=client, args=(url, seconds, latencies, counts, lock))
+    latencies, counts, refused, lock = [], [], [], threading.Lock()
+    threads = [threading.Thread(target=client, args=(url, seconds, latencies, counts, refused, lock))
                for _ in range(clients)]
     for thread in threads:
         thread.start()
@@ -54,7 +60,8 @@ def main():
         thread.join()
     latencies.sort()
     p = lambda q: 1e3 * latencies[min(len(latencies) - 1, int(q * len(latencies)))] if latencies else float("nan")
-    print(f"clients={len(counts)} updates_per_client_per_s={statistics.mean(counts) / seconds:.2f} "
+    mean = statistics.mean(counts) if counts else 0.0
+    print(f"clients={len(counts)} refused={len(refused)} updates_per_client_per_s={mean / seconds:.2f} "
           f"latency_p50_ms={p(0.50):.1f} latency_p99_ms={p(0.99):.1f} aggregates={len(latencies)} "
           f"cpu={100 * (time.process_time() - cpu_start) / (time.monotonic() - wall_start):.1f}%")
 

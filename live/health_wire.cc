@@ -59,6 +59,9 @@ void dispose_health(dds_entity_t writer, const std::string& test_cell) {
   gearcoupling_CellHealth key{};
   set_test_cell(key.test_cell, test_cell);
   dds_dispose(writer, &key);
+  // And forgotten: a TRANSIENT_LOCAL writer keeps a disposed instance for late readers until it
+  // is unregistered, so test cells coming and going would grow the writer without bound.
+  dds_unregister_instance(writer, &key);
 }
 
 }  // namespace gc::live

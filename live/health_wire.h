@@ -17,7 +17,8 @@ namespace gc::live {
 void write_health(dds_entity_t writer, const std::string& test_cell, std::uint64_t monitor_id,
                   bool stale, const HealthReport& report);
 
-/// Disposes test cell `test_cell`'s CellHealth instance.
+/// Disposes test cell `test_cell`'s CellHealth instance and unregisters it (the writer keeps
+/// nothing of it).
 void dispose_health(dds_entity_t writer, const std::string& test_cell);
 
 /// The seconds since 1970 of `time` [s].

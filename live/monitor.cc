@@ -116,9 +116,12 @@ CellModel Monitor::model_for(const std::string& test_cell) {
   return model;
 }
 
-Monitor::Cell& Monitor::cell(const std::string& test_cell) {
+Monitor::Cell* Monitor::cell(const std::string& test_cell) {
   auto found = cells_.find(test_cell);
   if (found == cells_.end()) {
+    if (cells_.size() >= options_.max_cells && options_.cell_models.count(test_cell) == 0) {
+      return nullptr;
+    }
     spdlog::info("test cell {}: first sample, model {}", test_cell, model_for(test_cell).name);
     found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
                                           CellMonitor(model_for(test_cell), options_.cell)}))
@@ -129,7 +132,47 @@ Monitor::Cell& Monitor::cell(const std::string& test_cell) {
       model_refusals_.erase(refusal);
     }
   }
-  return *found->second;
+  return found->second.get();
+}
+
+void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
+  refused_batches_ += 1;
+  refused_samples_ += samples;
+  // Once, then a summary at most once a minute: a burst of names must not flood the log.
+  const auto now = Clock::now();
+  if (refused_batches_ == 1) {
+    spdlog::warn("test cell {} refused: {} test cells are followed, the most --max-cells allows "
+                 "(a place frees when a cell is disposed after --dispose-s without samples); "
+                 "further refusals are summarised at most once a minute",
+                 test_cell, options_.max_cells);
+  } else if (now - refusals_logged_at_ >= std::chrono::minutes(1)) {
+    spdlog::warn("{} measurement batches ({} samples) of test cells beyond --max-cells {} refused "
+                 "so far, the latest of {}",
+                 refused_batches_, refused_samples_, options_.max_cells, test_cell);
+  } else {
+    return;
+  }
+  refusals_logged_at_ = now;
+}
+
+template <typename Map>
+bool Monitor::make_room(Map& kept, const std::string& test_cell) {
+  if (kept.count(test_cell) > 0 || options_.cell_models.count(test_cell) > 0) return true;
+  if (kept.size() < 2 * options_.max_cells + options_.cell_models.size()) return true;
+  // Full: what is kept for a test cell neither followed nor configured goes. There is always
+  // one, since at most max_cells others are followed.
+  for (auto it = kept.begin(); it != kept.end(); ++it) {
+    if (cells_.count(it->first) == 0 && options_.cell_models.count(it->first) == 0) {
+      if (dropped_swaps_++ == 0) {
+        spdlog::warn("model swap kept for test cell {} (not seen yet) dropped for one of {}: "
+                     "swaps are kept for at most {} test cells not followed; not logged again",
+                     it->first, test_cell, options_.max_cells);
+      }
+      kept.erase(it);
+      return true;
+    }
+  }
+  return false;
 }
 
 CellModel Monitor::parsed_model(const std::string& text, const std::string& test_cell) {
@@ -157,6 +200,10 @@ void Monitor::take_models() {
         require_test_cell_name(test_cell);
       } catch (const InvalidInput& error) {
         spdlog::warn("model swap refused: {}", error.what());
+        continue;
+      }
+      if (!make_room(decimations_, test_cell) || !make_room(models_, test_cell) ||
+          !make_room(model_refusals_, test_cell)) {
         continue;
       }
       if (swap.residual_decimation > 0) decimations_[test_cell] = swap.residual_decimation;
@@ -196,7 +243,12 @@ void Monitor::take_measurements() {
                      error.what());
         continue;
       }
-      Cell& c = cell(test_cell);
+      Cell* followed = cell(test_cell);
+      if (followed == nullptr) {
+        refuse_cell(test_cell, batch.samples._length);
+        continue;
+      }
+      Cell& c = *followed;
       c.last_sample = Clock::now();
       const auto decimation = decimations_.find(test_cell);
       const std::uint32_t every = decimation != decimations_.end() ? decimation->second

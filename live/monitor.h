@@ -27,6 +27,14 @@ struct MonitorOptions {
   double stale_s = 2.0;           ///< health says stale after this long without a sample [s]
   double dispose_s = 10.0;        ///< and the cell's health is disposed after this long [s]
   std::uint32_t decimation = 1;   ///< residuals: one per this many evaluated samples
+  /// Test cells followed at once, besides those named in cell_models (always followed). A
+  /// batch of a new test cell beyond it is refused and counted (refused_batches()), logged the
+  /// first time and then at most once a minute; a cell's place is free again once disposed
+  /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
+  /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
+  /// test hall, keep the monitor within 3 MB whatever names arrive. What swaps leave per test
+  /// cell (model, decimation, refusal) is kept for at most 2 max_cells cells (make_room).
+  std::size_t max_cells = 64;
 };
 
 class Monitor {
@@ -42,13 +50,23 @@ class Monitor {
   void stop();
 
   std::uint64_t monitor_id() const { return monitor_id_; }
+  /// Measurement batches refused because max_cells test cells were followed.
+  std::uint64_t refused_batches() const { return refused_batches_; }
 
  private:
   struct Cell;
   void take_models();
   void take_measurements();
   void publish_health();
-  Cell& cell(const std::string& test_cell);
+  /// `test_cell`'s state, made when new; nullptr when max_cells cells are followed and it is
+  /// not configured (counted and logged by refuse_cell).
+  Cell* cell(const std::string& test_cell);
+  void refuse_cell(const std::string& test_cell, std::size_t samples);
+  /// Makes room in `kept` (what swaps left, by test cell) for `test_cell`: at most
+  /// 2 max_cells + the configured cells are kept, so once full what is kept for a cell neither
+  /// followed nor configured is dropped (logged once). False only if there is none to drop.
+  template <typename Map>
+  bool make_room(Map& kept, const std::string& test_cell);
   CellModel model_for(const std::string& test_cell);
   /// The model of a swap's text, parsed once (throws InvalidInput as parse_cell_model).
   CellModel parsed_model(const std::string& text, const std::string& test_cell);
@@ -70,6 +88,9 @@ class Monitor {
   protocol::Entity measurement_reader_, model_reader_, residual_writer_, health_writer_;
   protocol::Entity waitset_;
   std::atomic<bool> stopping_{false};
+  std::uint64_t refused_batches_ = 0, refused_samples_ = 0, dropped_swaps_ = 0;
+  std::uint64_t refused_batches_logged_ = 0;
+  std::chrono::steady_clock::time_point refusals_logged_at_{};
 };
 
 }  // namespace gc::live

@@ -43,6 +43,10 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--decimate", o.decimation, "publish one residual per N evaluated samples")
       ->check(CLI::Range(1u, 1000000u))->capture_default_str();
+  app.add_option("--max-cells", o.max_cells,
+                 "test cells followed at once besides those of --cell; a new one beyond it is "
+                 "refused and counted until a followed one is disposed")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}))->capture_default_str();
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
   app.parse(argc, argv);

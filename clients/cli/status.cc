@@ -3,6 +3,8 @@
 #include <csignal>
 
 #include <fmt/format.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
 
 #include "clients/cli/subcommand.h"
 #include "clients/status/status_report.h"
@@ -48,6 +50,11 @@ int run_status(const Flags& flags, const Calculator&, std::FILE* out) {
   options.interval = seconds_flag(flags, "interval-s", 0.1, 3600.0);
   options.discovery = seconds_flag(flags, "discovery-s", 0.0, 60.0);
   options.count = static_cast<unsigned>(flags.integer("count", 0, 1000000));
+  // The boards warn (once) when they refuse instances or cells beyond their caps: on stderr,
+  // so that --json keeps one JSON object a line on stdout.
+  if (spdlog::get("gearcoupling-status") == nullptr) {
+    spdlog::set_default_logger(spdlog::stderr_color_mt("gearcoupling-status"));
+  }
   interrupted = 0;
   std::signal(SIGINT, [](int) { interrupted = 1; });
   return status::print_status(options, out, [] { return interrupted != 0; });

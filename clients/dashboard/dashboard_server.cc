@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "analysis/validation_report_html.h"
 #include "clients/status/prometheus_text.h"
@@ -19,9 +20,9 @@ namespace {
 /// How long an event stream waits for an update before it sends a comment line: a browser (or
 /// proxy) that sees nothing for a long time may think the connection dead.
 constexpr std::chrono::milliseconds kKeepAlive{2000};
-/// httplib serves each connection on a pool thread, and an event stream holds its thread: room
-/// for a few dozen browsers at once plus page, metrics and query requests.
-constexpr std::size_t kHttpThreads = 64;
+/// What a browser beyond max_streams is told to wait before it tries again [s]; EventSource
+/// reconnects by itself, after its own delay (about 3 s) when it ignores the header.
+constexpr const char* kRetryAfterSeconds = "10";
 
 client::ClientOptions query_client_options(const DashboardOptions& options) {
   client::ClientOptions client;
@@ -29,6 +30,12 @@ client::ClientOptions query_client_options(const DashboardOptions& options) {
   client.timeout = options.query_timeout;
   client.client_id_prefix = options.client_id_prefix;
   return client;
+}
+
+status::CellBoardOptions cell_board_options(const DashboardOptions& options) {
+  status::CellBoardOptions cells;
+  cells.max_cells = options.max_cells;
+  return cells;
 }
 
 std::map<std::string, std::string> parameters_of(const httplib::Request& request) {
@@ -46,11 +53,18 @@ DashboardServer::DashboardServer(DashboardOptions options)
           dds_create_participant(static_cast<dds_domainid_t>(options_.domain), nullptr, nullptr),
           "dds_create_participant")),
       instances_(participant_.get()),
-      cells_(participant_.get()),
+      cells_(participant_.get(), cell_board_options(options_)),
       query_(query_client_options(options_)),
-      hub_(options_.queue_capacity),
+      hub_(options_.queue_capacity, options_.max_streams, options_.queue_bytes),
       http_(std::make_unique<httplib::Server>()) {
-  http_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
+  const std::size_t threads = options_.max_streams + kThreadsBesideStreams;
+  http_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  // One request per connection. httplib serves a connection on one thread until it closes, so a
+  // kept-alive connection holds a thread for up to 5 s after each answer: a browser refused a
+  // stream (or anyone) could pin the threads meant for the page and /metrics that way. A new
+  // connection per request costs a dashboard (a page of three requests, a scrape every few
+  // seconds) nothing measurable.
+  http_->set_keep_alive_max_count(1);
   add_routes();
   port_ = options_.listen_port == 0 ? http_->bind_to_any_port(options_.listen_host)
                                     : (http_->bind_to_port(options_.listen_host,
@@ -99,6 +113,10 @@ void DashboardServer::add_routes() {
   });
   http_->Get("/events", [this](const httplib::Request&, httplib::Response& response) {
     std::shared_ptr<EventQueue> queue = hub_.subscribe();
+    if (queue == nullptr) {
+      refuse_stream(response);
+      return;
+    }
     response.set_header("Cache-Control", "no-cache");
     response.set_chunked_content_provider(
         "text/event-stream",
@@ -112,13 +130,28 @@ void DashboardServer::add_routes() {
   });
 }
 
+void DashboardServer::refuse_stream(httplib::Response& response) {
+  response.status = 503;
+  response.set_header("Retry-After", kRetryAfterSeconds);
+  response.set_content(fmt::format("{{\"error\": \"{} event streams are open, the most this dashboard "
+                                   "serves (--max-streams): try again in {} s\"}}",
+                                   options_.max_streams, kRetryAfterSeconds),
+                       "application/json");
+  if (!stream_refusal_logged_.exchange(true)) {
+    spdlog::warn("an event stream refused: {} are open, the most --max-streams allows; counted "
+                 "in gearcoupling_dashboard_connections_refused_total, not logged again",
+                 options_.max_streams);
+  }
+}
+
 void DashboardServer::publish_loop() {
   auto next = std::chrono::steady_clock::now();
   while (!stopping_) {
     next += options_.update_interval;
-    std::string state = state_json(true);
+    // Nobody listens: build nothing. The residual aggregates keep running on the board (bounded:
+    // one per cell), and the first browser gets them in its first update.
     if (hub_.subscribers() > 0) {
-      hub_.publish(std::move(state));
+      hub_.publish(state_json(true));
       updates_published_ += 1;
     }
     std::this_thread::sleep_until(next);
@@ -136,6 +169,21 @@ std::string DashboardServer::metrics() {
   own.family("gearcoupling_dashboard_connections", "gauge",
              "Browsers connected to the dashboard's event stream.");
   own.sample("gearcoupling_dashboard_connections", {}, static_cast<double>(hub_.subscribers()));
+  own.family("gearcoupling_dashboard_max_connections", "gauge",
+             "Browsers the event stream serves at once (--max-streams).");
+  own.sample("gearcoupling_dashboard_max_connections", {}, static_cast<double>(options_.max_streams));
+  own.family("gearcoupling_dashboard_connections_refused_total", "counter",
+             "Event streams refused with 503 because --max-streams were open.");
+  own.sample("gearcoupling_dashboard_connections_refused_total", {}, static_cast<double>(hub_.refused()));
+  own.family("gearcoupling_dashboard_cells_refused_total", "counter",
+             "Test-cell samples (health or residuals) ignored because --max-cells cells were on the board.");
+  own.sample("gearcoupling_dashboard_cells_refused_total", {}, static_cast<double>(cells_.refused()));
+  own.family("gearcoupling_dashboard_instances_refused_total", "counter",
+             "Service status samples ignored because 64 live instances were on the board.");
+  own.sample("gearcoupling_dashboard_instances_refused_total", {}, static_cast<double>(instances_.refused()));
+  own.family("gearcoupling_dashboard_max_cells", "gauge",
+             "Test cells the board holds at most (--max-cells).");
+  own.sample("gearcoupling_dashboard_max_cells", {}, static_cast<double>(options_.max_cells));
   own.family("gearcoupling_dashboard_updates_total", "counter",
              "Live updates published to the connected browsers.");
   own.sample("gearcoupling_dashboard_updates_total", {}, static_cast<double>(updates_published_));

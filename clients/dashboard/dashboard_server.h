@@ -20,6 +20,7 @@
 
 namespace httplib {
 class Server;
+struct Response;
 }
 
 namespace gc::dashboard {
@@ -32,6 +33,16 @@ struct DashboardOptions {
   std::chrono::milliseconds update_interval{100};
   /// Updates a slow browser may fall behind before its oldest is dropped.
   std::size_t queue_capacity = 16;
+  /// The same in bytes: a queued update is the whole state (~650 B a test cell, 42 kB for 64,
+  /// more with long refusal texts), and this keeps a browser that stopped reading from holding
+  /// 16 of the largest. The newest update is always kept.
+  std::size_t queue_bytes = 1 << 20;
+  /// Event streams at once. Each holds one HTTP thread for as long as the browser stays, so
+  /// the server runs max_streams + kThreadsBesideStreams threads: the page, /metrics and the
+  /// query panel keep theirs whatever the browsers do. Beyond it: 503 with Retry-After.
+  std::size_t max_streams = 32;
+  /// Test cells on the board (status::CellBoardOptions::max_cells).
+  std::size_t max_cells = 64;
   /// The query panel's wait for the service, discovery included.
   std::chrono::milliseconds query_timeout{5000};
   /// The query panel's client_id_prefix under DDS Security (client::ClientOptions); 0: none.
@@ -47,6 +58,10 @@ class DashboardServer {
   DashboardServer(const DashboardServer&) = delete;
   DashboardServer& operator=(const DashboardServer&) = delete;
 
+  /// HTTP threads beside the event streams' (for the page, /metrics, /api/*): a query waits up
+  /// to query_timeout for the service, so a few dozen users may ask at once.
+  static constexpr std::size_t kThreadsBesideStreams = 32;
+
   int port() const { return port_; }
   /// Serves until stop(). Call once.
   void run();
@@ -55,6 +70,8 @@ class DashboardServer {
 
  private:
   void add_routes();
+  /// Answers an event stream beyond max_streams: 503, Retry-After, the connection closed.
+  void refuse_stream(httplib::Response& response);
   void publish_loop();
   /// The whole live state as compact JSON; `drain` takes the residual aggregates since the last
   /// drain (only the publisher does, so every interval's aggregate goes out once).
@@ -74,6 +91,7 @@ class DashboardServer {
   int port_ = 0;
   std::atomic<bool> stopping_{false};
   std::atomic<std::uint64_t> updates_published_{0};
+  std::atomic<bool> stream_refusal_logged_{false};
   std::thread publisher_;
 };
 

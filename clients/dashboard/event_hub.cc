@@ -6,11 +6,14 @@ void EventQueue::push(const std::shared_ptr<const std::string>& event) {
   {
     std::lock_guard lock(mutex_);
     if (closed_) return;
-    if (events_.size() >= capacity_) {
+    while (!events_.empty() &&
+           (events_.size() >= capacity_ || bytes_ + event->size() > max_bytes_)) {
+      bytes_ -= events_.front()->size();
       events_.pop_front();
       dropped_ += 1;
     }
     events_.push_back(event);
+    bytes_ += event->size();
   }
   ready_.notify_one();
 }
@@ -21,6 +24,7 @@ std::shared_ptr<const std::string> EventQueue::pop(std::chrono::milliseconds tim
   if (closed_ || events_.empty()) return nullptr;
   auto event = std::move(events_.front());
   events_.pop_front();
+  bytes_ -= event->size();
   return event;
 }
 
@@ -43,8 +47,12 @@ std::uint64_t EventQueue::dropped() const {
 }
 
 std::shared_ptr<EventQueue> EventHub::subscribe() {
-  auto queue = std::make_shared<EventQueue>(queue_capacity_);
+  auto queue = std::make_shared<EventQueue>(queue_capacity_, queue_bytes_);
   std::lock_guard lock(mutex_);
+  if (!closed_ && queues_.size() >= max_subscribers_) {
+    refused_ += 1;
+    return nullptr;
+  }
   if (closed_) {
     queue->close();
   } else {
@@ -80,6 +88,11 @@ std::uint64_t EventHub::dropped() const {
   std::uint64_t total = dropped_by_gone_;
   for (const auto& queue : queues_) total += queue->dropped();
   return total;
+}
+
+std::uint64_t EventHub::refused() const {
+  std::lock_guard lock(mutex_);
+  return refused_;
 }
 
 }  // namespace gc::dashboard

@@ -15,6 +15,11 @@
 namespace {
 
 constexpr int kBadInput = 2;
+/// An event stream holds a thread (~8 MB of address space, little resident) and a queue.
+constexpr std::size_t kMostStreams = 1024;
+/// A cell takes 1 to 1.8 kB of /metrics (a 64-character name the most): 256 keep it far under
+/// 1 MB (docs/dashboard.md, "Bounds").
+constexpr std::size_t kMostCells = 256;
 
 /// "ADDR:PORT" (the port after the last colon, so "[::1]:8080" works too) into the options.
 void parse_listen(const std::string& listen, gc::dashboard::DashboardOptions& options) {
@@ -62,6 +67,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--query-timeout", query_timeout_s, "the query panel's wait for the service [s]")
       ->check(CLI::Range(0.1, 60.0))
+      ->capture_default_str();
+  app.add_option("--max-streams", options.max_streams,
+                 "browsers on the live event stream at once; beyond it 503 with Retry-After "
+                 "(the page, /metrics and queries keep 32 threads of their own)")
+      ->check(CLI::Range(std::size_t{1}, kMostStreams))
+      ->capture_default_str();
+  app.add_option("--max-cells", options.max_cells,
+                 "test cells shown at most; a new one beyond it replaces a gone or stale one, "
+                 "else it is ignored and counted")
+      ->check(CLI::Range(std::size_t{1}, kMostCells))
       ->capture_default_str();
   app.add_option("--client-id-prefix", client_id_prefix,
                  std::string("for the query panel, ") + gc::cli::kClientIdPrefixHelp);

@@ -1,6 +1,9 @@
 #include "clients/status/cell_board.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
+#include <cstring>
 
 #include "gearcoupling.h"
 #include "live/live_qos.h"
@@ -15,7 +18,10 @@ using protocol::Entity;
 
 namespace {
 
-std::string text(const char* value) { return value != nullptr ? value : ""; }
+/// A string of a sample, cut at kMaxTextBytes: the IDL does not bound them.
+std::string text(const char* value) {
+  return value != nullptr ? std::string(value, strnlen(value, kMaxTextBytes)) : "";
+}
 
 void copy_channel(const gearcoupling_ChannelHealth& in, v1::ChannelHealthRecord& out) {
   out.set_rmse_nm(in.rmse_nm);
@@ -98,8 +104,13 @@ void CellBoard::take_health() {
       const dds_sample_info_t& info = samples.info(i);
       if (info.valid_data) {
         const std::string cell = samples[i].test_cell;
+        Entry* admitted = admit(cell, now);
+        if (admitted == nullptr) continue;
+        Entry& entry = *admitted;
+        // A cell that was disposed and unregistered comes back under a new handle.
+        if (entry.health_handle) health_handles_.erase(*entry.health_handle);
         health_handles_[info.instance_handle] = cell;
-        Entry& entry = entries_[cell];
+        entry.health_handle = info.instance_handle;
         entry.record.set_test_cell(cell);
         copy_health(samples[i], entry.record);
         entry.has_health = true;
@@ -109,7 +120,7 @@ void CellBoard::take_health() {
       }
       const auto handle = health_handles_.find(info.instance_handle);
       if (handle == health_handles_.end()) continue;
-      Entry& entry = entries_[handle->second];
+      Entry& entry = entries_.at(handle->second);
       entry.disposed = info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED;
       entry.writer_lost = info.instance_state == DDS_IST_NOT_ALIVE_NO_WRITERS;
       if (info.instance_state != DDS_IST_ALIVE) entry.last_heard = now;
@@ -124,7 +135,9 @@ void CellBoard::take_residuals() {
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!samples.info(i).valid_data) continue;
       const gearcoupling_ResidualBatch& batch = samples[i];
-      Entry& entry = entries_[batch.test_cell];
+      Entry* admitted = admit(batch.test_cell, now);
+      if (admitted == nullptr) continue;
+      Entry& entry = *admitted;
       entry.record.set_test_cell(batch.test_cell);
       entry.last_heard = now;
       Aggregate& aggregate = entry.aggregate;
@@ -145,6 +158,53 @@ void CellBoard::take_residuals() {
   });
 }
 
+const char* CellBoard::state_of(const Entry& entry, Clock::time_point now) const {
+  const bool old = !entry.has_health || now - entry.health_received > options_.stale_after;
+  if (entry.disposed) return "gone";
+  return entry.writer_lost || entry.monitor_says_stale || (entry.has_health && old) ? "stale"
+                                                                                    : "alive";
+}
+
+CellBoard::Entry* CellBoard::admit(const std::string& cell, Clock::time_point now) {
+  const auto found = entries_.find(cell);
+  if (found != entries_.end()) return &found->second;
+  if (entries_.size() >= options_.max_cells) {
+    // Live cells keep their places; the gone or stale one heard from longest ago makes room.
+    auto oldest = entries_.end();
+    for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+      if (state_of(it->second, now)[0] == 'a') continue;
+      if (oldest == entries_.end() || it->second.last_heard < oldest->second.last_heard) oldest = it;
+    }
+    if (oldest == entries_.end()) {
+      if (refused_++ == 0) {
+        spdlog::warn("test cell {} ignored: {} cells are on the board, all alive, the most "
+                     "--max-cells allows; further ones are counted "
+                     "(gearcoupling_dashboard_cells_refused_total), not logged",
+                     cell, options_.max_cells);
+      }
+      return nullptr;
+    }
+    forget(oldest);
+  }
+  return &entries_[cell];
+}
+
+std::map<std::string, CellBoard::Entry>::iterator CellBoard::forget(
+    std::map<std::string, Entry>::iterator it) {
+  if (it->second.health_handle) health_handles_.erase(*it->second.health_handle);
+  return entries_.erase(it);
+}
+
+std::uint64_t CellBoard::refused() {
+  std::lock_guard lock(mutex_);
+  return refused_;
+}
+
+std::size_t CellBoard::size() {
+  std::lock_guard lock(mutex_);
+  return entries_.size();
+}
+
 std::vector<v1::TestCellRecord> CellBoard::snapshot() { return collect(false); }
 
 std::vector<v1::TestCellRecord> CellBoard::drain() { return collect(true); }
@@ -155,13 +215,9 @@ std::vector<v1::TestCellRecord> CellBoard::collect(bool drain) {
   std::lock_guard lock(mutex_);
   for (auto it = entries_.begin(); it != entries_.end();) {
     Entry& entry = it->second;
-    const bool old = !entry.has_health || now - entry.health_received > options_.stale_after;
-    const char* state = entry.disposed ? "gone"
-                        : entry.writer_lost || entry.monitor_says_stale || (entry.has_health && old)
-                            ? "stale"
-                            : "alive";
+    const char* state = state_of(entry, now);
     if (state[0] != 'a' && now - entry.last_heard > options_.forget_after) {
-      it = entries_.erase(it);
+      it = forget(it);
       continue;
     }
     v1::TestCellRecord& record = cells.emplace_back(entry.record);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,18 @@ struct CellBoardOptions {
   std::chrono::milliseconds stale_after{3000};
   /// A cell gone (disposed) or stale for this long is dropped from the board.
   std::chrono::milliseconds forget_after{std::chrono::minutes(10)};
+  /// Cells on the board at most. A new cell beyond it takes the place of the gone or stale one
+  /// heard from longest ago, else it is refused (counted in refused(), logged once): whoever
+  /// may publish health or residuals cannot grow the board, its JSON or /metrics without bound,
+  /// whatever forget_after is. A cell costs the dashboard 5.7 kB resident (its record, strings
+  /// cut at kMaxTextBytes, its aggregate, Cyclone's instances), ~650 B of each update's JSON and
+  /// 1 to 1.8 kB of /metrics (docs/dashboard.md, "Bounds"): 64, a test hall, keep all small.
+  std::size_t max_cells = 64;
 };
+
+/// The longest text (model name, worst region, refusal) a cell keeps from a health sample [bytes];
+/// longer ones are cut: the monitor writes sentences, not pages.
+inline constexpr std::size_t kMaxTextBytes = 1024;
 
 class CellBoard {
  public:
@@ -43,6 +55,10 @@ class CellBoard {
   /// snapshot() with each cell's residual aggregate since the previous drain() (none when no
   /// residual came), which it then forgets: one reader (the dashboard's publisher) drains.
   std::vector<v1::TestCellRecord> drain();
+  /// Health samples and residual batches ignored because max_cells cells were on the board.
+  std::uint64_t refused();
+  /// Cells on the board now.
+  std::size_t size();
 
  private:
   /// Running min/max/sum of one quantity.
@@ -67,16 +83,25 @@ class CellBoard {
     Clock::time_point health_received{};
     Clock::time_point last_heard = Clock::now();  ///< health or residual
     Aggregate aggregate;
+    std::optional<dds_instance_handle_t> health_handle;   ///< its key in health_handles_
   };
 
   void take_health();
   void take_residuals();
   std::vector<v1::TestCellRecord> collect(bool drain);
+  /// "alive", "stale" or "gone".
+  const char* state_of(const Entry& entry, Clock::time_point now) const;
+  /// `cell`'s entry, made when new if there is room (or a gone or stale cell to drop for it);
+  /// nullptr, counted and logged once, when not. Call with mutex_ held.
+  Entry* admit(const std::string& cell, Clock::time_point now);
+  /// Drops an entry and its health handle. Call with mutex_ held.
+  std::map<std::string, Entry>::iterator forget(std::map<std::string, Entry>::iterator it);
 
   CellBoardOptions options_;
   std::mutex mutex_;
   std::map<std::string, Entry> entries_;
-  std::map<dds_instance_handle_t, std::string> health_handles_;
+  std::map<dds_instance_handle_t, std::string> health_handles_;   // of the cells on the board
+  std::uint64_t refused_ = 0;
   protocol::Entity health_topic_;
   protocol::Entity residual_topic_;
   protocol::Entity subscriber_;

@@ -37,7 +37,18 @@ struct InstanceBoardOptions {
   std::chrono::milliseconds stale_after{3000};
   /// A stale or stopped instance is dropped from the board after this long.
   std::chrono::milliseconds forget_after{std::chrono::minutes(10)};
+  /// Instances on the board at most: anyone allowed to publish a status could otherwise grow
+  /// the board and /metrics without bound. A new one beyond it takes the place of the stale or
+  /// stopped one heard from longest ago, else it is ignored (counted in refused(), logged
+  /// once). Each instance's lists and texts are cut too (kMaxCalculations, kMaxCatalogue,
+  /// kMaxTextBytes of cell_board.h).
+  std::size_t max_instances = 64;
 };
+
+/// The calculations and catalogue couplings an instance's status may list on the board: the
+/// service has 6 calculations and the NREL catalogue 2 couplings.
+inline constexpr std::size_t kMaxCalculations = 32;
+inline constexpr std::size_t kMaxCatalogue = 256;
 
 class InstanceBoard {
  public:
@@ -52,6 +63,8 @@ class InstanceBoard {
   /// Every instance seen and not yet forgotten, ordered by host, then pid, then id. Forgets
   /// those gone for longer than forget_after.
   std::vector<InstanceView> snapshot();
+  /// Status samples ignored because max_instances live instances were on the board.
+  std::uint64_t refused();
 
  private:
   struct Entry {
@@ -63,11 +76,17 @@ class InstanceBoard {
 
   /// Takes every sample the reader holds (Cyclone's listener thread).
   void take();
+  /// `id`'s entry, made when new if there is room (or a stale or stopped instance to drop for
+  /// it); nullptr, counted and logged once, when not. Call with mutex_ held.
+  Entry* admit(std::uint64_t id, Clock::time_point now);
+  /// Whether `entry` is alive as of `now`.
+  bool alive(const Entry& entry, Clock::time_point now) const;
 
   InstanceBoardOptions options_;
   std::mutex mutex_;
   std::map<std::uint64_t, Entry> entries_;
   std::map<dds_instance_handle_t, std::uint64_t> handles_;
+  std::uint64_t refused_ = 0;
   protocol::Entity topic_;
   protocol::Entity subscriber_;
   protocol::Entity reader_;  // last: deleted first, so no listener call outlives the members

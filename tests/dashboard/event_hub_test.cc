@@ -60,5 +60,29 @@ TEST(EventHub, AnUnsubscribedQueueGetsNothingAndItsDropsStayCounted) {
   EXPECT_EQ(hub.dropped(), 1u);
 }
 
+TEST(EventHub, RefusesASubscriberBeyondItsMostAndCountsIt) {
+  EventHub hub(4, 2);
+  auto first = hub.subscribe();
+  auto second = hub.subscribe();
+  EXPECT_EQ(hub.subscribe(), nullptr);
+  EXPECT_EQ(hub.refused(), 1u);
+  EXPECT_EQ(hub.subscribers(), 2u);
+  hub.unsubscribe(first);  // a browser left: its place is free
+  EXPECT_NE(hub.subscribe(), nullptr);
+}
+
+TEST(EventHub, AQueueHoldsAtMostItsBytesAndAlwaysTheNewest) {
+  EventHub hub(16, 1, 1000);
+  auto slow = hub.subscribe();
+  for (char c : std::string("abcdefgh")) hub.publish(std::string(300, c));
+  // 1000 bytes hold three updates of 300: the five oldest went, counted.
+  EXPECT_EQ(*slow->pop(milliseconds(0)), std::string(300, 'f'));
+  EXPECT_EQ(*slow->pop(milliseconds(0)), std::string(300, 'g'));
+  EXPECT_EQ(*slow->pop(milliseconds(0)), std::string(300, 'h'));
+  EXPECT_EQ(slow->dropped(), 5u);
+  hub.publish(std::string(5000, 'x'));  // larger than the bound alone: kept, as the latest state
+  EXPECT_EQ(slow->pop(milliseconds(0))->size(), 5000u);
+}
+
 }  // namespace
 }  // namespace gc::dashboard
