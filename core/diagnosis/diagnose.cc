@@ -202,13 +202,16 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
   round.noise = estimate_noise(residual);
-  // Tails included: a Student-t noise's mean square is twice its robust sigma^2 and is no physics.
-  const double noise_ms = round.noise.mean_square();
   const double all_ms = pooled_mean_square(residual);
   round.rmse_nm = std::sqrt(all_ms);
   // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
   round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
                                        round.noise.variance_inflation());
+  // Where no input shows structure, the residual is taken for noise: its tails and long
+  // correlation are measured (noise_estimate.h), and the level test is against them.
+  if (!round.signature.systematic()) round.noise = estimate_noise(residual, true);
+  // Tails included: a Student-t noise's mean square is twice its robust sigma^2 and is no physics.
+  const double noise_ms = round.noise.mean_square();
   round.systematic = is_systematic(all_ms, noise_ms, rows.size(), round.noise, round.signature);
   const Eigen::MatrixX2d base = select_rows(residual, rows, search);
   const double base_ms = pooled_mean_square(base);

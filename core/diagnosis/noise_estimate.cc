@@ -9,6 +9,8 @@ namespace {
 constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of most noise we meet
 constexpr int kLongestLag = 100;  ///< samples: for noise of long correlation (phi >= kLongPhi)
 constexpr double kLongPhi = 0.8;
+constexpr double kLongStructureShare = 0.1;  ///< of the longest lag's semivariance
+constexpr double kLongMisfitShare = 0.1;     ///< RMS misfit of the long fit over the mean semivariance
 constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean square says little
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
 
@@ -29,6 +31,7 @@ double robust_semivariance(const Eigen::VectorXd& r, int h) {
 
 struct VariogramFit {
   double sigma2 = 0.0, phi = 0.0, sse = INFINITY;
+  double structure = 0.0;  ///< b h + c h^2 at the longest lag: the slow change the fit gave to structure
 };
 
 /// gamma(h) = s2 (1 - phi^h) + b h + c h^2 for fixed phi: linear least squares with b, c >= 0
@@ -47,7 +50,11 @@ VariogramFit fit_for_phi(const Eigen::VectorXd& gamma, double phi) {
     const Eigen::VectorXd x = a.colPivHouseholderQr().solve(gamma);
     if ((x.array() < 0.0).any()) continue;
     const double sse = (a * x - gamma).squaredNorm();
-    if (sse < best.sse) best = {x(0), phi, sse};
+    if (sse < best.sse) {
+      const double h = static_cast<double>(n);
+      const double b = (mask & 1) ? x(1) : 0.0, c = (mask & 2) ? x(static_cast<Eigen::Index>(columns.size()) - 1) : 0.0;
+      best = {x(0), phi, sse, b * h + c * h * h};
+    }
   }
   return best;
 }
@@ -80,18 +87,27 @@ struct ChannelNoise {
   double sigma = 0.0, phi = 0.0, tail = 1.0;
 };
 
-/// sigma, phi and the tail factor of one channel.
-ChannelNoise channel_noise(const Eigen::VectorXd& r) {
+/// sigma, phi and (as noise) the tail factor of one channel.
+ChannelNoise channel_noise(const Eigen::VectorXd& r, bool as_noise) {
   if (r.size() < 2) return {};
+  const double tail = as_noise ? tail_factor(r) : 1.0;
   const int lags = static_cast<int>(std::min<Eigen::Index>(kMaxLag, r.size() / 4));
-  if (lags < 3) return {std::sqrt(robust_semivariance(r, 1)), 0.0, tail_factor(r)};
+  if (lags < 3) return {std::sqrt(robust_semivariance(r, 1)), 0.0, tail};
   VariogramFit best = fit_variogram(semivariances(r, lags), 0.95);
   const int long_lags = static_cast<int>(std::min<Eigen::Index>(kLongestLag, r.size() / 4));
-  if (best.phi >= kLongPhi && long_lags > lags) {
+  if (as_noise && best.phi >= kLongPhi && long_lags > lags) {
+    // Only noise may take the long lags: a long fit that needs the structure terms (a residual
+    // that follows the sweeps, whose variogram keeps growing) is structure, which the short fit
+    // already leaves to b and c. Pure AR(1) noise fits sigma^2 (1 - phi^h) alone, and well.
     const int wanted = static_cast<int>(std::ceil(3.0 / (1.0 - std::min(best.phi, 0.97))));
-    best = fit_variogram(semivariances(r, std::clamp(wanted, lags, long_lags)), 0.99);
+    const Eigen::VectorXd gamma = semivariances(r, std::clamp(wanted, lags, long_lags));
+    const VariogramFit longer = fit_variogram(gamma, 0.99);
+    const double rms_misfit = std::sqrt(longer.sse / static_cast<double>(gamma.size()));
+    if (longer.structure < kLongStructureShare * gamma(gamma.size() - 1) && rms_misfit < kLongMisfitShare * gamma.mean()) {
+      best = longer;
+    }
   }
-  return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi, tail_factor(r)};
+  return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi, tail};
 }
 
 }  // namespace
@@ -101,10 +117,10 @@ double NoiseEstimate::variance_inflation() const {
   return (1.0 + p) / (1.0 - p);
 }
 
-NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual) {
+NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise) {
   NoiseEstimate out;
   for (int c = 0; c < 2; ++c) {
-    const ChannelNoise noise = channel_noise(residual.col(c));
+    const ChannelNoise noise = channel_noise(residual.col(c), as_noise);
     out.sigma_nm(c) = noise.sigma;
     out.phi(c) = noise.phi;
     out.tail(c) = noise.tail;

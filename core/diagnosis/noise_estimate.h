@@ -7,8 +7,8 @@
 // which is how an autocorrelated noise passed for an effect. Each gamma(h) is median-based
 // ((1.4826 MAD)^2 / 2 of the lag-h differences), so spikes do not inflate it.
 //
-// Heavy tails: a robust sigma is the right scale for tests of structure, but the mean square of a
-// Student-t noise is several times sigma^2. The ratio of the mean to the median-based lag-1
+// Heavy tails (where the residual is taken for noise): a robust sigma is the right scale for tests
+// of structure, but the mean square of a Student-t noise is several times sigma^2. The ratio of the mean to the median-based lag-1
 // semivariance says how much (NoiseEstimate::tail), so that a residual RMS above sigma is not taken
 // for physics. Long correlation: when the fit puts phi at 0.8 or more, the variogram is refitted
 // on lags up to three correlation times (at most 100), phi up to 0.99: at 10 Hz with a correlation
@@ -46,7 +46,11 @@ struct NoiseEstimate {
 };
 
 /// `residual` rows in time order (at least 12 rows for the variogram; fewer give lag-1 only).
-NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual);
+/// `as_noise`: the residual shows no structure against any input, so what it holds is taken for
+/// noise: its tails are measured and its correlation followed to long lags. Otherwise slow
+/// structure would pass for long-correlated noise (a residual that follows the sweeps has the
+/// variogram of an AR(1) of phi 0.98), and its jumps (the sawtooth of eqs 42-43) for heavy tails.
+NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise = false);
 
 /// Positions (into the rows of `residual`, in time order) of samples more than `k` robust
 /// deviations from the running median of their neighbours, on either channel.
