@@ -192,6 +192,9 @@ bool effect_explains_part(const CandidateScore& effect, const CandidateScore& fo
   return paired_block_test(both, formula.held_out_residual, folds.block_of, folds.blocks).t < 2.0;
 }
 
+std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
+                            const DiagnosisSettings& settings);
+
 /// One round: residual, noise, signature, candidates, outcome.
 /// `residual`: the model's on `rows`.
 DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
@@ -207,22 +210,31 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
   round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
                                        round.noise.variance_inflation());
-  // Where no input shows structure, the residual is taken for noise: its tails and long
-  // correlation are measured (noise_estimate.h), and the level test is against them.
-  if (!round.signature.systematic()) round.noise = estimate_noise(residual, true);
+  // The level test is against the variogram's noise, which a cycle or a step in time does not
+  // inflate: with it, a residual that no input explains is still searched for a time pattern.
+  // Cycles and steps on the dense rows (on the search rows of a long recording a cycle of a few
+  // seconds aliases, and a step's time is known only to their spacing). Each stands out of the
+  // noise by its own test (cycle_period.h, change_point.h), and is something to explain: an
+  // interference that no input shows hides from the signature, and from a variogram, which takes
+  // a cycle of a few samples for correlated noise.
+  round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows));
+  round.systematic = is_systematic(all_ms, round.noise.mean_square(), rows.size(), round.noise, round.signature) ||
+                     !round.time_terms.empty();
+  // Where no input shows structure, the residual's own scale, correlation and tails are the noise's
+  // unless a time pattern or a frequency is found (noise_estimate.h): the share of the excess a
+  // claim must remove is then measured against heavy-tailed, long-correlated noise as it is.
+  const std::optional<NoiseEstimate> as_noise =
+      round.signature.systematic() ? std::nullopt : std::optional(estimate_noise(residual, true));
   // Tails included: a Student-t noise's mean square is twice its robust sigma^2 and is no physics.
-  const double noise_ms = round.noise.mean_square();
-  round.systematic = is_systematic(all_ms, noise_ms, rows.size(), round.noise, round.signature);
+  const double noise_ms = (as_noise ? *as_noise : round.noise).mean_square();
   const Eigen::MatrixX2d base = select_rows(residual, rows, search);
   const double base_ms = pooled_mean_square(base);
   round.search_base_rmse_nm = std::sqrt(base_ms);
   if (!round.systematic) {
+    if (as_noise) round.noise = *as_noise;
     round.outcome = RoundOutcome::noise;
     return round;
   }
-  // Cycles and steps on the dense rows: on the search rows of a long recording a cycle of a few
-  // seconds aliases, and a step's time is known only to their spacing.
-  round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows));
   // A skew of the moment channels, by cross-correlation on the dense rows: a start for moment_delay.
   std::vector<ParameterValues> hints;
   if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows))) {
@@ -254,12 +266,37 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   } else {
     round.formula_chosen = formula_ok;
   }
+  if (!effect_ok && !formula_ok && signature_rows.size() >= 2 * search.size()) {
+    // A long recording: a weak formula that its 20,000 dense rows reveal, and 1,500 search rows do
+    // not (a ripple of a third of the noise), is searched for on the dense rows, with folds of its
+    // own. Formulas only: they are linear, so the dense rows cost milliseconds where every effect's
+    // fit would cost seconds.
+    const Folds dense_folds = with_test_blocks(
+        blocked_folds(signature_rows.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
+                      settings.cross_validation.fold_seed),
+        test_block_rows(round.noise, rows.size(), signature_rows.size(), settings));
+    const Eigen::MatrixX2d dense = select_rows(residual, rows, signature_rows);
+    std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds,
+                                                              formula_settings(round, settings));
+    if (formula && claimable(*formula, pooled_mean_square(dense), noise_ms, settings)) {
+      round.formula = std::move(formula);
+      round.formula_chosen = true;
+      round.formula_on_dense_rows = true;
+      round.search_base_rmse_nm = std::sqrt(pooled_mean_square(dense));
+      round.outcome = RoundOutcome::formula_proposed;
+      round.channel_reduction = channel_reduction(dense, round.formula->held_out_residual);
+      return round;
+    }
+  }
   if (!effect_ok && !formula_ok) {
     // Structure must be explained by something: an input (the signature), a time pattern or a
     // frequency (the formula's terms). A level above the noise estimate that none of them explains
     // on held-out data is heavy-tailed or wandering noise, not physics.
     round.unstructured_excess = !round.signature.systematic();
-    if (round.unstructured_excess) round.systematic = false;
+    if (round.unstructured_excess) {
+      round.systematic = false;
+      round.noise = *as_noise;
+    }
     round.outcome = round.unstructured_excess ? RoundOutcome::noise : RoundOutcome::unexplained;
     return round;
   }
@@ -494,7 +531,10 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       const CouplingModel claimed_model = candidate;
       const std::vector<std::shared_ptr<const Effect>> added_before = out.added;
       const std::optional<EffectFit> claimed_fit = round.claimed;
-      revisit_claims(candidate, round, out.added, model, observations, search, refit, folds, parallel, settings);
+      // A dense-row formula's held-out residual is not on the search rows the revisit compares.
+      if (!round.formula_on_dense_rows) {
+        revisit_claims(candidate, round, out.added, model, observations, search, refit, folds, parallel, settings);
+      }
       if (!round.dropped.empty()) {
         // A claim dropped or taken over changed the model: its residual again, on every row. Should
         // that refuse a row (a dropped effect held it inside the jam angle), every claim stays.

@@ -118,6 +118,9 @@ struct DiagnosisRound {
   /// The candidate claimed: ranking.front(), or the formula (then ranking.front() is the best effect).
   const CandidateScore& chosen() const;
   bool formula_chosen = false;
+  /// The formula was found and scored on the dense (refit) rows, with folds of their own: a weak
+  /// one that the search rows of a long recording cannot show. Its held-out residual is on those rows.
+  bool formula_on_dense_rows = false;
   std::vector<std::string> dropped;        ///< earlier claims dropped after this round's claim
   /// Why a claimed effect only partly explains: a value outside its plausible range, or the
   /// residual left after it still systematic against the input it explains.

@@ -31,8 +31,8 @@ struct NoiseEstimate {
   Eigen::Vector2d sigma_nm = Eigen::Vector2d::Zero();  ///< per channel, marginal standard deviation [N·m]
   Eigen::Vector2d phi = Eigen::Vector2d::Zero();       ///< per channel, lag-1 autocorrelation [-]
   /// Per channel, the noise's mean square over sigma^2 (>= 1): how much heavier its tails are than
-  /// a Gaussian's of the same robust scale. The mean of the squared successive differences over
-  /// their median-based value; 1 for Gaussian noise, about 2 for Student-t with 3 degrees of freedom.
+  /// a Gaussian's of the same robust scale; 1 for Gaussian noise, about 2 for Student-t with 3
+  /// degrees of freedom. Measured only where the residual is taken for noise.
   Eigen::Vector2d tail = Eigen::Vector2d::Ones();
   /// Pooled sigma over both channels [N·m] (the robust scale).
   double pooled_sigma_nm() const { return std::sqrt(sigma_nm.squaredNorm() / 2.0); }
@@ -47,9 +47,9 @@ struct NoiseEstimate {
 
 /// `residual` rows in time order (at least 12 rows for the variogram; fewer give lag-1 only).
 /// `as_noise`: the residual shows no structure against any input, so what it holds is taken for
-/// noise: its tails are measured and its correlation followed to long lags. Otherwise slow
-/// structure would pass for long-correlated noise (a residual that follows the sweeps has the
-/// variogram of an AR(1) of phi 0.98), and its jumps (the sawtooth of eqs 42-43) for heavy tails.
+/// noise, and its marginal scale, correlation and tails are the noise's. Otherwise (the variogram)
+/// slow structure would pass for noise (a residual that follows the sweeps has the variogram of an
+/// AR(1) of phi 0.98), and its jumps (the sawtooth of eqs 42-43) for heavy tails.
 NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise = false);
 
 /// Positions (into the rows of `residual`, in time order) of samples more than `k` robust

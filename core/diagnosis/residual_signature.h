@@ -48,6 +48,9 @@ struct InputSignature {
 
 struct ResidualSignature {
   std::vector<InputSignature> inputs;  ///< most explaining first
+  /// The variance inflation the F tests were judged against: the caller's, or the long-run
+  /// inflation of what the inputs leave (block means), when larger.
+  double variance_inflation = 1.0;
   const InputSignature* find(const std::string& input) const;
   bool systematic() const;
 };

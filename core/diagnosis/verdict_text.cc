@@ -131,9 +131,9 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
   switch (round.outcome) {
     case RoundOutcome::noise:
       if (round.unstructured_excess) {
-        return head + "the residual is noise: " + noise_text(round) + ". Its level is above that estimate, but no input, "
-               "time pattern or frequency explains any of it on held-out data (the best effect or formula is not "
-               "significant): noise with heavy tails or a wandering level, not physics. No effect is claimed.";
+        return head + "the residual is noise: " + noise_text(round) + " (its own scale: a short variogram put it lower, "
+               "but no input, time pattern or frequency explains any of the difference on held-out data; noise with "
+               "heavy tails, a long correlation or a wandering level, not physics). No effect is claimed.";
       }
       return head + "the residual is noise: " + noise_text(round) +
              ", and no input shows a systematic dependence. No effect is claimed.";
@@ -173,8 +173,10 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
         effect = " (the best effect, " + std::string(e.kind == CandidateKind::refinement ? "refining " : "") + e.info->name +
                  ", lowers it " + percent(e.reduction) + (plausible_fit(e) ? "" : " with implausible values") + ")";
       }
+      const std::string where =
+          round.formula_on_dense_rows ? " (found on the recording's dense rows: too weak for the search rows)" : "";
       return head + "no effect of the library explains the residual in " + channels(round.channel_reduction) + effect +
-             "; a formula does: " + formula_text(*round.claimed) + ". " + gain_text(round, c) +
+             "; a formula does" + where + ": " + formula_text(*round.claimed) + ". " + gain_text(round, c) +
              ". The search continues with it (an expression effect in the model file)." + dropped_text(round);
     }
     case RoundOutcome::indistinguishable: {

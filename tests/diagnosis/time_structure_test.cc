@@ -90,6 +90,20 @@ TEST(TimeStructure, FindsARippleAtTwiceShaftSpeed) {
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
+// A weak ripple (a third of the noise) on a long recording: 60,000 rows reveal it, the 1,500 search
+// rows do not. The formula stage looks on the dense rows before calling the residual noise.
+TEST(TimeStructure, FindsAWeakRippleThatOnlyTheWholeLongRecordingReveals) {
+  std::vector<RecordedSample> observations = record(paper_model(), 2000.0, 137, 60000);
+  for (RecordedSample& o : observations) {
+    const double phi = *o.input.rotation_phase_rad;
+    o.measured.y_nm += 700.0 * std::sin(2.0 * phi + 0.4);
+    o.measured.z_nm += 700.0 * std::cos(2.0 * phi + 0.4);
+  }
+  const Diagnosis d = testing::diagnose_on_threads(paper_model(), observations);
+  SCOPED_TRACE(d.summary);
+  EXPECT_TRUE(has_term_starting(formula_terms(d), "order_2_"));
+}
+
 // Pickup at 0.4 Hz that no input explains, on M_sz': a cycle with its frequency in its name.
 TEST(TimeStructure, FindsAnInterferenceAtAFixedFrequency) {
   std::vector<RecordedSample> observations = record(paper_model(), 2000.0, 103);
