@@ -71,11 +71,16 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
 const Subcommand& diagnose_subcommand() {
   static const Subcommand subcommand{
       "diagnose",
-      "Which effect of the library the model lacks: fit each, rank by held-out error.\n"
-      "Every effect the model does not have is fitted on training folds and scored on held-out "
-      "folds; the best is claimed only when its gain is significant against the noise, then the "
-      "search runs again. Says when the residual is noise, and shows its signature when no "
-      "effect explains it.",
+      "What the model lacks: an effect of the library, a refinement of one it has, or a formula.\n"
+      "Each round scores three kinds of candidate on held-out blocks of the recording: every effect "
+      "of the library the model does not have (moment_delay among them: moment channels that lag "
+      "the inputs), every effect it has with its parameters freed, and a formula of physical terms "
+      "(torque, misalignment, speed, temperature, rates, the model's own moments, shaft orders, "
+      "cycles at any frequency, steps at a time), each with the mechanisms it usually means. The best "
+      "is claimed only when its gain is significant against the noise as the recording has it "
+      "(coloured, heavy-tailed, wandering); a value outside its plausible range is advice on what to "
+      "check, not a veto. Then earlier claims are revisited and the search runs again. Says when "
+      "the residual is noise, and shows its signature when nothing explains it.",
       diagnose_flags, run_diagnose};
   return subcommand;
 }

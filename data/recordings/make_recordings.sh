@@ -15,3 +15,5 @@ done
   "${common[@]}" --out "$here/hidden_eccentricity_torque_ramp.csv"
 "$gearcoupling" synth --model "$here/hidden_loading_friction.truth.textproto" --sequence moment-sweep \
   "${common[@]}" --out "$here/hidden_loading_friction_moment_sweep.csv"
+"$gearcoupling" synth --model "$here/hidden_daq_skew.truth.textproto" --sequence torque-ramp \
+  "${common[@]}" --out "$here/hidden_daq_skew_torque_ramp.csv"

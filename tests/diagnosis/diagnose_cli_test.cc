@@ -1,6 +1,7 @@
 // diagnose and validate --add run as a user runs them, on the bundled recordings
 // (data/recordings/make_recordings.sh): find the hidden effect, write the model with it, and
 // watch the error fall to the noise.
+#include <cstdio>
 #include <numbers>
 
 #include <google/protobuf/util/json_util.h>
@@ -52,6 +53,56 @@ TEST(DiagnoseCli, FindsTheBundledHiddenEccentricityAndThenOnlyNoise) {
       {"validate", "--data", kHidden, "--model", "paper", "--add", result.add_flags(0), "--json"}));
   ASSERT_EQ(validated.models_size(), 2);
   EXPECT_NEAR(validated.models(1).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+}
+
+// Issue 22, a time structure: the bundled recording whose moment channels are 0.25 s late
+// (hidden_daq_skew.truth.textproto). The delay is found with its time, added with validate --add,
+// and the error falls to the noise; the JSON's row counts agree with the text's.
+TEST(DiagnoseCli, FindsTheBundledDaqSkewWithItsTimeAndTheErrorFallsToTheNoise) {
+  const std::string skew = kRecordings + "/hidden_daq_skew_torque_ramp.csv";
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(
+      run_gearcoupling({"diagnose", "--data", skew, "--model", "paper", "--json"}));
+  ASSERT_GE(result.rounds_size(), 2) << result.summary();
+  EXPECT_EQ(result.rounds(0).outcome(), "effect_found");
+  EXPECT_EQ(result.rounds(0).claimed().effect(), "moment_delay");
+  EXPECT_NEAR(parameter(result.rounds(0).claimed(), "delay_s"), 0.25, 0.01);
+  EXPECT_EQ(result.rounds(1).outcome(), "noise");
+  EXPECT_EQ(result.malformed_rows(), 0u);
+  EXPECT_EQ(result.excluded_rows(), result.malformed_rows() + result.refused_rows());
+  ASSERT_EQ(result.add_flags_size(), 1);
+  EXPECT_EQ(result.add_flags(0).rfind("moment_delay=delay_s=0.2", 0), 0u) << result.add_flags(0);
+  const auto validated = parse<gearcoupling::v1::ValidationResult>(run_gearcoupling(
+      {"validate", "--data", skew, "--model", "paper", "--add", result.add_flags(0), "--json"}));
+  ASSERT_EQ(validated.models_size(), 2);
+  EXPECT_GT(validated.models(0).overall().msy().rmse_nm(), 1.5 * kNoiseNm);
+  EXPECT_NEAR(validated.models(1).overall().msy().rmse_nm(), kNoiseNm, 0.1 * kNoiseNm);
+}
+
+// Issue 22, class 5: a file with malformed rows gives the same counts in the JSON and the text.
+TEST(DiagnoseCli, JsonAndTextGiveTheSameRowCounts) {
+  const std::string path = ::testing::TempDir() + "/malformed.csv";
+  {
+    std::FILE* in = std::fopen(kHidden.c_str(), "r");
+    std::FILE* out = std::fopen(path.c_str(), "w");
+    ASSERT_TRUE(in && out);
+    char line[4096];
+    int n = 0;
+    while (std::fgets(line, sizeof line, in)) {
+      std::fputs(line, out);
+      if (++n % 100 == 50) std::fputs("not-a-time,1e5,0,0,0,0\n", out);  // 10 malformed rows
+    }
+    std::fclose(in);
+    std::fclose(out);
+  }
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(
+      run_gearcoupling({"diagnose", "--data", path, "--model", "paper", "--json"}));
+  EXPECT_EQ(result.malformed_rows(), 10u);
+  EXPECT_EQ(result.recording_rows(), 1010u);
+  EXPECT_EQ(result.excluded_rows(), 10u + result.refused_rows());
+  const ProcessResult text = run_gearcoupling({"diagnose", "--data", path, "--model", "paper"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("1010 rows (10 malformed, 0 refused by the model)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("10 malformed rows of the file excluded"), std::string::npos) << text.out;
 }
 
 TEST(DiagnoseCli, TerminalVerdictNamesTheEffectAndTheFall) {
