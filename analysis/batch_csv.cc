@@ -8,7 +8,7 @@
 #include "analysis/csv_fields.h"
 #include "analysis/input_names.h"
 #include "analysis/number_text.h"
-#include "codec/angle_units.h"
+#include "analysis/recording_csv.h"
 
 namespace gc::analysis {
 namespace {
@@ -43,12 +43,23 @@ void append_row_start(std::string& out, long line, std::string_view coupling) {
   append_csv_field(out, coupling);
 }
 
-std::string_view column_name(int index, const BatchColumns& columns) {
-  if (index == columns.torque) return "torque_nm";
-  if (index == columns.misalignment) return "misalignment_deg";
-  if (index == columns.direction) return "direction_deg";
-  if (index == columns.mu) return "mu";
-  return "coupling";
+// The load case's quantities, read as a recording reads them (analysis/recording_csv.h).
+constexpr std::array<Quantity, 3> kLoadQuantities{Quantity::torque, Quantity::misalignment,
+                                                  Quantity::direction};
+
+BatchColumn* slot_of(Quantity quantity, BatchColumns& columns) {
+  switch (quantity) {
+    case Quantity::torque: return &columns.torque;
+    case Quantity::misalignment: return &columns.misalignment;
+    case Quantity::direction: return &columns.direction;
+    default: return nullptr;
+  }
+}
+
+std::string allowed_columns() {
+  std::string text;
+  for (Quantity quantity : kLoadQuantities) text += column_spellings(quantity) + "; ";
+  return text + "mu; coupling";
 }
 
 }  // namespace
@@ -59,26 +70,41 @@ BatchColumns parse_batch_header(std::string_view header) {
   BatchColumns columns;
   columns.count = static_cast<int>(names.size());
   for (int i = 0; i < columns.count; ++i) {
-    int* slot = names[i] == "torque_nm"          ? &columns.torque
-                : names[i] == "misalignment_deg" ? &columns.misalignment
-                : names[i] == "direction_deg"    ? &columns.direction
-                : names[i] == "mu"               ? &columns.mu
-                : names[i] == "coupling"         ? &columns.coupling
-                                                 : nullptr;
-    if (slot == nullptr) {
-      throw FormatError(fmt::format(
-          "input header: unknown column '{}' (allowed: torque_nm, misalignment_deg, "
-          "direction_deg, mu, coupling)",
-          names[i]));
+    const std::string_view name = names[i];
+    BatchColumn* slot = nullptr;
+    double to_si = 1.0;
+    std::string_view unit;
+    if (name == "mu") {
+      slot = &columns.mu;
+    } else if (name == "coupling") {
+      slot = &columns.coupling;
+    } else if (const std::optional<Quantity> quantity = column_quantity(name, unit)) {
+      slot = slot_of(*quantity, columns);
+      if (slot != nullptr) {
+        const std::optional<UnitSpelling> spelling = find_unit_spelling(*quantity, unit);
+        if (!spelling) {
+          throw FormatError(fmt::format("input header: unknown unit '{}' in column '{}' "
+                                        "(accepted, in any case: {})",
+                                        unit, name, column_spellings(*quantity)));
+        }
+        to_si = spelling->scale;
+      }
     }
-    if (*slot != -1) throw FormatError(fmt::format("input header: column '{}' twice", names[i]));
-    *slot = i;
+    if (slot == nullptr) {
+      throw FormatError(fmt::format("input header: unknown column '{}' (allowed: {})", name,
+                                    allowed_columns()));
+    }
+    if (slot->index != -1) {
+      throw FormatError(fmt::format("input header: column '{}' repeats '{}'", name, slot->name));
+    }
+    *slot = {i, std::string(name), to_si};
   }
-  for (const auto& [slot, name] : {std::pair{columns.torque, "torque_nm"},
-                                   {columns.misalignment, "misalignment_deg"},
-                                   {columns.direction, "direction_deg"}, {columns.mu, "mu"}}) {
-    if (slot == -1) {
-      throw FormatError(fmt::format("input header: required column '{}' missing", name));
+  for (const auto& [column, name] :
+       {std::pair{&columns.torque, column_spellings(Quantity::torque)},
+        {&columns.misalignment, column_spellings(Quantity::misalignment)},
+        {&columns.mu, std::string("mu")}}) {
+    if (column->index == -1) {
+      throw FormatError(fmt::format("input header: required column missing (one of: {})", name));
     }
   }
   return columns;
@@ -91,37 +117,44 @@ std::optional<std::string> parse_batch_row(std::string_view line, const BatchCol
   if (static_cast<int>(row.fields.size()) != columns.count) {
     return fmt::format("{} fields, the header has {}", row.fields.size(), columns.count);
   }
-  if (columns.coupling != -1) row.coupling = row.fields[columns.coupling];
+  if (columns.coupling.index != -1) row.coupling = row.fields[columns.coupling.index];
   if (row.coupling.empty()) return std::string("coupling is empty");
-  double values[4];
-  const int indices[4] = {columns.torque, columns.misalignment, columns.direction, columns.mu};
+  double values[4] = {0.0, 0.0, 0.0, 0.0};
+  const BatchColumn* numeric[4] = {&columns.torque, &columns.misalignment, &columns.direction,
+                                   &columns.mu};
   for (int k = 0; k < 4; ++k) {
-    const auto value = parse_double(row.fields[indices[k]]);
-    if (!value) {
-      return fmt::format("{} '{}' is not a number", column_name(indices[k], columns),
-                         row.fields[indices[k]]);
-    }
-    values[k] = *value;
+    if (numeric[k]->index == -1) continue;   // no direction column: 0
+    const std::string_view cell = row.fields[numeric[k]->index];
+    const auto value = parse_double(cell);
+    if (!value) return fmt::format("{} '{}' is not a number", numeric[k]->name, cell);
+    values[k] = *value * numeric[k]->to_si;
   }
   row.point = {.torque_nm = values[0],
-               .misalignment_rad = codec::radians_from_degrees(values[1]),
-               .direction_rad = codec::radians_from_degrees(values[2]),
+               .misalignment_rad = values[1],
+               .direction_rad = values[2],
                .friction_coefficient = values[3]};
   return std::nullopt;
 }
 
 std::string describe_row_error(const InvalidInput& error, const BatchColumns& columns,
                                const BatchRow& row) {
-  const std::string_view column = column_for_field(error.field());
-  if (column.empty()) return describe_input_error(error, "", "");
-  const int index = column == "torque_nm"          ? columns.torque
-                    : column == "misalignment_deg" ? columns.misalignment
-                    : column == "direction_deg"    ? columns.direction
-                    : column == "mu"               ? columns.mu
-                                                   : columns.coupling;
-  const std::string_view value =
-      index >= 0 ? row.fields[static_cast<std::size_t>(index)] : row.coupling;
-  return describe_input_error(error, column, value);
+  const std::string_view field = error.field();
+  const BatchColumn* column =
+      field == "operating_point.torque_nm"              ? &columns.torque
+      : field == "operating_point.misalignment_rad"     ? &columns.misalignment
+      : field == "operating_point.direction_rad"        ? &columns.direction
+      : field == "operating_point.friction_coefficient" ? &columns.mu
+      : column_for_field(field) == "coupling"           ? &columns.coupling
+                                                        : nullptr;
+  if (column == nullptr) return describe_input_error(error, "", "");
+  if (column->index < 0) return describe_input_error(error, "coupling", row.coupling);
+  std::string text = describe_input_error(error, column->name,
+                                          row.fields[static_cast<std::size_t>(column->index)]);
+  if (column == &columns.torque && refuses_negative_torque(error)) {
+    text += negative_torque_hint("for a dyno that logs the drive torque negative, write the " +
+                                 column->name + " column's magnitude");
+  }
+  return text;
 }
 
 std::string batch_output_header() {

@@ -1,10 +1,12 @@
 // The CSV formats of `gearcoupling batch`.
 //
 // Input: CSV as analysis/csv_fields.h reads it (byte-order mark, CRLF, blank lines, quoted
-// fields), a header line naming the columns, in any order:
-//   torque_nm, misalignment_deg, direction_deg, mu   required
-//   coupling                                         optional: a catalogue name or .textproto
-//                                                    file per row (default: --coupling)
+// fields), a header line naming the columns, in any order, by the recordings' rules
+// (analysis/recording_csv.h, docs/recordings.md: <quantity>_<unit>, the unit in any case):
+//   torque_<nm|knm|mnm>, misalignment_<rad|deg|mrad>, mu   required
+//   direction_<rad|deg|mrad>                              optional, 0 when absent
+//   coupling                                              optional: a catalogue name or
+//                                                         .textproto file per row (default: --coupling)
 // then one load case per line. A field may be quoted ("1.5", "my, coupling.textproto").
 //
 // Output: one row per input row, in input order, under the header
@@ -28,17 +30,22 @@
 
 namespace gc::analysis {
 
-/// Where each input column sits in a row; -1 for the absent optional coupling column.
+/// One input column: where it sits in a row (-1: absent), its name as written, and the factor to
+/// SI (N·m, rad) of its unit.
+struct BatchColumn {
+  int index = -1;
+  std::string name;
+  double to_si = 1.0;
+};
+
+/// The input columns; direction and coupling may be absent.
 struct BatchColumns {
-  int torque = -1;
-  int misalignment = -1;
-  int direction = -1;
-  int mu = -1;
-  int coupling = -1;
+  BatchColumn torque, misalignment, direction, mu, coupling;
   int count = 0;
 };
 
-/// `header` as next_csv_line returns it. Throws FormatError naming an unknown, repeated or missing column.
+/// `header` as next_csv_line returns it. Throws FormatError naming an unknown, repeated or
+/// missing column, or an unknown unit of a known quantity with the accepted spellings.
 BatchColumns parse_batch_header(std::string_view header);
 
 /// One parsed input row; the raw fields are kept so errors can quote what the user wrote.
@@ -53,7 +60,8 @@ struct BatchRow {
 std::optional<std::string> parse_batch_row(std::string_view line, const BatchColumns& columns,
                                            std::string_view default_coupling, BatchRow& row);
 
-/// The core's complaint about a row, naming the column and the value as written.
+/// The core's complaint about a row, naming the column and the value as written; for a negative
+/// torque, what to do (the model takes the torque's magnitude).
 std::string describe_row_error(const InvalidInput& error, const BatchColumns& columns,
                                const BatchRow& row);
 

@@ -58,4 +58,17 @@ std::string describe_input_error(const InvalidInput& error, std::string_view use
   return std::string(user_name) + " " + std::string(user_value) + ": " + error.what();
 }
 
+std::string negative_torque_hint(std::string_view remedy) {
+  return "; the model takes the torque as a magnitude (T > 0): " + std::string(remedy);
+}
+
+bool refuses_negative_torque(std::string_view field, std::string_view message) {
+  return field == "operating_point.torque_nm" &&
+         message.find("operating_point.torque_nm = -") != std::string_view::npos;
+}
+
+bool refuses_negative_torque(const InvalidInput& error) {
+  return refuses_negative_torque(error.field(), error.what());
+}
+
 }  // namespace gc::analysis

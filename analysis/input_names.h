@@ -21,4 +21,13 @@ std::string_view column_for_field(std::string_view field);
 std::string describe_input_error(const InvalidInput& error, std::string_view user_name,
                                  std::string_view user_value);
 
+/// Said where a negative torque is refused: "; the model takes the torque as a magnitude
+/// (T > 0): <remedy>" (for a dyno that logs the drive torque negative: --negate torque for a
+/// recording, the magnitude for a flag or a batch column).
+std::string negative_torque_hint(std::string_view remedy);
+
+/// Whether `error` refuses a negative torque (operating_point.torque_nm = -...).
+bool refuses_negative_torque(const InvalidInput& error);
+bool refuses_negative_torque(std::string_view field, std::string_view message);
+
 }  // namespace gc::analysis

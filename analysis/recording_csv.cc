@@ -79,8 +79,8 @@ std::optional<RecordingColumn> parse_column(std::string_view name, std::string_v
   std::string_view unit;
   const std::optional<Quantity> quantity = quantity_of(name, unit);
   if (!quantity) return std::nullopt;
-  for (const UnitSpelling& spelling : unit_spellings(*quantity)) {
-    if (spelling.unit == lower_case(unit)) return RecordingColumn{*quantity, std::string(name), spelling};
+  if (const std::optional<UnitSpelling> spelling = find_unit_spelling(*quantity, unit)) {
+    return RecordingColumn{*quantity, std::string(name), *spelling};
   }
   header_error(source, column, name,
                fmt::format("unknown unit '{}' in column '{}' (accepted, in any case: {}; "
@@ -168,6 +168,20 @@ std::string_view cell_complaint(std::string_view cell) {
 
 }  // namespace
 
+std::optional<Quantity> column_quantity(std::string_view name, std::string_view& unit) {
+  return quantity_of(name, unit);
+}
+
+std::optional<UnitSpelling> find_unit_spelling(Quantity quantity, std::string_view unit) {
+  const std::string lower = lower_case(unit);
+  for (const UnitSpelling& spelling : unit_spellings(quantity)) {
+    if (spelling.unit == lower) return spelling;
+  }
+  return std::nullopt;
+}
+
+std::string column_spellings(Quantity quantity) { return spellings_text(quantity); }
+
 std::string_view quantity_name(Quantity quantity) {
   static constexpr std::array<std::string_view, kQuantityCount> kNames{
       "time", "torque", "misalignment", "direction", "msy", "msz",
@@ -208,6 +222,25 @@ std::vector<ColumnRename> parse_column_renames(std::string_view text) {
     renames.push_back({std::string(name), std::string(trim(item.substr(equals + 1)))});
   }
   return renames;
+}
+
+std::vector<Quantity> parse_negated_quantities(std::string_view text) {
+  std::vector<Quantity> quantities;
+  CsvFields items;
+  if (auto problem = items.split(text)) throw FormatError(fmt::format("--negate '{}': {}", text, *problem));
+  for (std::string_view item : items.fields()) {
+    const std::string_view name = trim(item);
+    const auto found = std::find_if(kQuantities.begin(), kQuantities.end(),
+                                    [&](Quantity q) { return quantity_name(q) == name; });
+    if (found == kQuantities.end()) {
+      std::string names;
+      for (Quantity q : kQuantities) names += fmt::format("{}{}", names.empty() ? "" : ", ", quantity_name(q));
+      throw FormatError(fmt::format("--negate '{}': '{}' is no quantity of docs/recordings.md "
+                                    "(one of: {})", text, item, names));
+    }
+    quantities.push_back(*found);
+  }
+  return quantities;
 }
 
 RecordingHeader parse_recording_header(std::string_view header, std::string_view source_name,
@@ -258,6 +291,18 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }
   header_ = parse_recording_header(line_, source_name_, options.renames);
+  for (const Quantity quantity : options.negated) {
+    const auto column = std::find_if(header_.columns.begin(), header_.columns.end(),
+                                     [&](const RecordingColumn& c) { return c.quantity == quantity; });
+    if (column == header_.columns.end()) {
+      throw InvalidInput("recording.negate",
+                         fmt::format("{}:1: --negate {}: the header has no {} column (one of: {})",
+                                     source_name_, quantity_name(quantity), quantity_name(quantity),
+                                     spellings_text(quantity)));
+    }
+    column->unit.scale = -column->unit.scale;   // value_SI = -(value * scale + offset)
+    column->unit.offset = -column->unit.offset;
+  }
   loading_dead_band_rad_ = scan_dead_band(options.loading);
   derived_.emplace(loading_dead_band_rad_, options.loading.still_after_s);
 }

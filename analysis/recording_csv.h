@@ -47,6 +47,14 @@ std::string_view quantity_name(Quantity quantity);
 /// The unit spellings a quantity accepts, the SI one first.
 const std::vector<UnitSpelling>& unit_spellings(Quantity quantity);
 
+/// How a recording reads a column name, for the other CSV readers (batch): the quantity that
+/// `name` (<quantity>_<unit>) names, with `unit` set to the rest; nullopt when it names none.
+std::optional<Quantity> column_quantity(std::string_view name, std::string_view& unit);
+/// The quantity's spelling of `unit`, matched in any case ("kNm"), or nullopt.
+std::optional<UnitSpelling> find_unit_spelling(Quantity quantity, std::string_view unit);
+/// The column names the quantity accepts: "torque_nm, torque_knm, torque_mnm".
+std::string column_spellings(Quantity quantity);
+
 /// A column of the header: which quantity, in which unit.
 struct RecordingColumn {
   Quantity quantity;
@@ -77,7 +85,14 @@ struct RecordingHeader {
 struct RecordingOptions {
   LoadingDirectionOptions loading;
   std::vector<ColumnRename> renames;
+  /// Quantities read with their sign flipped (--negate torque: a dyno that logs the drive
+  /// torque negative; the model takes the torque's magnitude).
+  std::vector<Quantity> negated = {};
 };
+
+/// "torque,msy" as quantities (their header names, docs/recordings.md). Throws FormatError
+/// naming an item that is no quantity.
+std::vector<Quantity> parse_negated_quantities(std::string_view text);
 
 /// A row excluded from the recording, and why.
 struct RowProblem {

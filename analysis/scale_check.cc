@@ -7,12 +7,15 @@
 #include <fmt/format.h>
 
 #include "core/engineering_text.h"
+#include "core/model_error.h"
 
 namespace gc::analysis {
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 constexpr std::array<double, 4> kUnitSlips{10.0, 100.0, 1000.0, kDegreesPerRadian};
+// A factor of 1000 is a kilo prefix slipped: never a model that wrong.
+constexpr double kRefusedSlip = 1000.0;
 // Within a factor of 1.5 of a slip: 10 matches 6.7-15, 57.3 matches 38-86. A model wrong by
 // 3-5 times (no unit at fault) matches none.
 constexpr double kSlipTolerance = 1.5;
@@ -50,6 +53,29 @@ void MomentScale::add(const SensorMoments& measured, const SensorMoments& predic
 
 std::vector<std::string> MomentScale::warnings(std::string_view model_name) const {
   std::vector<std::string> warnings;
+  for (ChannelSlip& slip : slips(model_name)) warnings.push_back(std::move(slip.warning));
+  return warnings;
+}
+
+std::optional<std::string> MomentScale::refusal(std::string_view model_name) const {
+  for (ChannelSlip& slip : slips(model_name)) {
+    if (slip.factor == kRefusedSlip) return std::move(slip.warning);
+  }
+  return std::nullopt;
+}
+
+void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal) {
+  if (!refusal) return;
+  throw InvalidInput(
+      "recording",
+      fmt::format("{}: {}; a fit to moments 1000 times off says nothing: give the column its "
+                  "unit (rename it in the file, or --columns msy_knm=HEADER), or --force-scale "
+                  "to run anyway",
+                  source, *refusal));
+}
+
+std::vector<MomentScale::ChannelSlip> MomentScale::slips(std::string_view model_name) const {
+  std::vector<ChannelSlip> warnings;
   if (count_ == 0) return warnings;
   const double n = static_cast<double>(count_);
   const double model_y = std::sqrt(model_y_ / n), model_z = std::sqrt(model_z_ / n);
@@ -63,12 +89,12 @@ std::vector<std::string> MomentScale::warnings(std::string_view model_name) cons
     const double ratio = c.measured / c.model;
     const std::optional<double> slip = unit_slip_factor(ratio);
     if (!slip) continue;
-    warnings.push_back(fmt::format(
+    warnings.push_back({*slip, fmt::format(
         "{} measured RMS {} is {:.4g} times the model {}'s {}, {} by about {:g}: "
         "check the unit of the {} column (N·m under _knm? kN·m under _nm?{})",
         c.name, engineering_text(c.measured, "N·m"), ratio, model_name,
         engineering_text(c.model, "N·m"), channel_hint(ratio), *slip, c.column,
-        *slip == kUnitSlips.back() ? " or degrees and radians in the misalignment's" : ""));
+        *slip == kUnitSlips.back() ? " or degrees and radians in the misalignment's" : "")});
   }
   return warnings;
 }

@@ -26,12 +26,27 @@ class MomentScale {
   /// One warning per channel whose measured RMS is off from the model's by a unit-slip factor.
   /// A channel the model holds near zero (under a tenth of the other's RMS) is not judged.
   std::vector<std::string> warnings(std::string_view model_name) const;
+  /// The warning of the first channel off by about 1000 (kN·m under a _nm header, N·m under
+  /// _knm): a validation or a fit on such data prints nonsense (an R² of -3e7, a gain at its
+  /// bound), so validate and diagnose refuse it (refuse_unit_slip) unless forced. nullopt when
+  /// no channel is; 10, 100 and 57.3 stay warnings (a model can be that wrong).
+  std::optional<std::string> refusal(std::string_view model_name) const;
 
  private:
+  struct ChannelSlip {
+    double factor;
+    std::string warning;
+  };
+  std::vector<ChannelSlip> slips(std::string_view model_name) const;
+
   double measured_y_ = 0.0, measured_z_ = 0.0;   // sums of squares [N²·m²]
   double model_y_ = 0.0, model_z_ = 0.0;
   std::size_t count_ = 0;
 };
+
+/// Throws gc::InvalidInput naming "recording" when `refusal` holds one: `source`, the warning,
+/// and what to do (fix the header or --columns; --force-scale runs anyway).
+void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal);
 
 /// Degrees under a _rad header make the misalignment 57.3 times too large; radians under _deg,
 /// 57.3 times too small. A warning when the largest misalignment of the recording, times or

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/input_names.h"
 #include "codec/count_field.h"
 #include "codec/validation_messages.h"
 #include "core/model_error.h"
@@ -62,6 +63,10 @@ void require_compared_samples(std::string_view source, std::string_view model_na
     why = fmt::format("all {} rows were excluded as malformed", rows);
   } else {
     why = fmt::format("the model refused all {} samples read (first: {})", refused, first_refusal);
+    if (refuses_negative_torque("operating_point.torque_nm", first_refusal)) {
+      why += negative_torque_hint("for a dyno that logs the drive torque negative, read the "
+                                  "column with --negate torque");
+    }
   }
   throw InvalidInput("recording", fmt::format("{}: {} compared no sample: {}; an RMSE of no "
                                               "samples is no fit", source, model_name, why));
@@ -95,6 +100,7 @@ RecordingCheck check_recording(const CouplingModel& model, std::string_view mode
     }
   }
   check.warnings = scale.warnings(model_name);
+  check.refusal = scale.refusal(model_name);
   if (auto warning = misalignment_scale_warning(largest_misalignment_rad,
                                                 model.geometry().jam_angle().angle_rad)) {
     check.warnings.push_back(*warning);

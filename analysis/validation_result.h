@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,7 @@ struct RecordingCheck {
   std::size_t compared = 0;
   std::string first_refusal;          ///< "field: message" of the first refused sample
   std::vector<std::string> warnings;
+  std::optional<std::string> refusal;   ///< MomentScale::refusal: a channel 1000 times off
 };
 RecordingCheck check_recording(const CouplingModel& model, std::string_view model_name,
                                const std::vector<RecordedSample>& samples);

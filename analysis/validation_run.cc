@@ -62,7 +62,7 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options) {
-  RecordingReader reader(path, RecordingOptions{{}, options.renames});
+  RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated});
   std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0;

@@ -37,6 +37,7 @@ struct ValidationRunOptions {
   int threads = 1;
   std::size_t chunk_samples = 1u << 15;
   std::vector<ColumnRename> renames = {};   ///< --columns
+  std::vector<Quantity> negated = {};       ///< --negate
 };
 
 /// Compares every model of `runs` with the recording at `path`. Samples a model refuses are

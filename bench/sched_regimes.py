@@ -3,8 +3,8 @@
 
 With one CPU hog per core, a blocking round trip (three threads woken in turn: the caller, the
 client's receive thread, the server's receive thread) is fast while the scheduler keeps the
-three on one core and slow while it splits them over both (docs/benchmarks.md, "fourth
-round"). This reads `perf sched timehist` output and, for each 100 ms window, says on which CPU
+three on one core and slow while it splits them over both (docs/architecture.md, "Few
+wake-ups besides the round trip's own"). This reads `perf sched timehist` output and, for each 100 ms window, says on which CPU
 each of the three threads mostly ran and how many times the least frequent of them ran (about
 one run per round trip), then sums up the windows where all three shared a CPU ("together")
 and the others ("split").

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Wake-ups per second of every thread of the service and of a client making blocking calls,
 # beside ddsperf's pong and ping (waitset mode, the same three wake-ups per round trip), on the
-# loopback configuration (docs/benchmarks.md, "fourth round"). On a busy host every wake-up
+# loopback configuration (docs/benchmarks.md, "Wake-ups and CPU per round trip"). On a busy host every wake-up
 # besides the round trip's own is a chance for the scheduler to split the round trip's threads
 # over the cores, so this counts them: from the third field of /proc/PID/task/TID/schedstat
 # (the number of times the thread was scheduled in; the first, its time on a CPU, gives the CPU

@@ -7,18 +7,11 @@
 
 #include "codec/bundled_data.h"
 #include "codec/coupling_file.h"
+#include "codec/file_input_error.h"
 #include "core/model_error.h"
 
 namespace gc::codec {
 namespace {
-
-// The message of `error` without its leading "field: " or "field ", which InvalidInput adds.
-std::string message_after_field(const InvalidInput& error) {
-  std::string_view what = error.what();
-  if (what.starts_with(error.field())) what.remove_prefix(error.field().size());
-  if (what.starts_with(": ")) what.remove_prefix(2);
-  return std::string(what);
-}
 
 // The core names angles in radians; the file states them in degrees under a _deg name.
 std::string file_units_note(const std::string& field) {
@@ -52,9 +45,11 @@ CouplingGeometry load_coupling_geometry(const std::filesystem::path& file) {
     return CouplingGeometry(std::move(definition));
   } catch (const InvalidInput& error) {
     // The core names the field; the user also needs the file it came from.
+    // The core's message whole ("coupling.x = 1 is out of range: ..."): cutting the field off
+    // and letting InvalidInput put it back as "field: " left "coupling.x:  = 1".
     const std::string where =
         " (in " + file.filename().string() + file_units_note(error.field()) + ")";
-    throw InvalidInput(error.field(), message_after_field(error) + where);
+    throw FileInputError(error.field(), error.what() + where);
   }
 }
 

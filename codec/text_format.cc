@@ -1,7 +1,8 @@
 #include "codec/text_format.h"
 
-#include <fstream>
-#include <sstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
@@ -81,11 +82,21 @@ std::string text_format_from_json(std::string_view json, std::string_view source
 }
 
 std::string read_text_file(const std::filesystem::path& path, const std::string& root) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput(root, "cannot read " + root + " file " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  // fopen, not ifstream: it sets errno, so the message can say why (no such file, permission).
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  const auto cannot_read = [&](int error) {
+    return InvalidInput(root, "cannot read " + root + " file " + path.string() + ": " +
+                                  std::strerror(error));
+  };
+  if (file == nullptr) throw cannot_read(errno);
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, n);
+  const int error = std::ferror(file) ? errno : 0;
+  std::fclose(file);
+  if (error != 0) throw cannot_read(error);   // e.g. a directory: "Is a directory"
+  return text;
 }
 
 }  // namespace gc::codec

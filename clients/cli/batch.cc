@@ -208,7 +208,8 @@ const Subcommand& batch_subcommand() {
       "batch",
       "CSV of load cases through contact and moments (eqs 5-48), on all cores, streaming.\n"
       "Writes one CSV row per input row, in input order.\n"
-      "Input header: torque_nm,misalignment_deg,direction_deg,mu[,coupling] (any order;\n"
+      "Input header: torque_<nm|knm|mnm>,misalignment_<rad|deg|mrad>,mu[,direction_<rad|deg|mrad>]\n"
+      "[,coupling] (any order, units in any case, as a recording's; direction 0 when absent;\n"
       "coupling per row defaults to --coupling). Output: line,coupling,q,teeth_in_contact,\n"
       "max_tooth_load_n,moment_y_nm,moment_z_nm,sensor_moment_y_nm,sensor_moment_z_nm,\n"
       "magnitude_nm,contact_stress_pa,bending_stress_pa,contact_safety_factor,\n"

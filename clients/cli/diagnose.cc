@@ -7,6 +7,7 @@
 #include "analysis/diagnosis_summary.h"
 #include "analysis/model_diagnosis.h"
 #include "analysis/recording_csv.h"
+#include "analysis/scale_check.h"
 #include "analysis/validation_result.h"
 #include "clients/cli/jobs_flag.h"
 #include "clients/cli/model_flags.h"
@@ -27,6 +28,8 @@ std::vector<FlagSpec> diagnose_flags() {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
       columns_flag(),
+      negate_flag(),
+      force_scale_flag(),
       {"write-model", "FILE", "also write the model with the effects found (text format)", ""},
       jobs_flag(),
   };
@@ -45,11 +48,12 @@ void write_model(const std::string& path, const codec::ModelFile& file, const Di
 
 int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
-  const Recording recording = read_recording(flags.text("data"), analysis::RecordingOptions{{}, column_renames(flags)});
+  const Recording recording = read_recording(flags.text("data"), analysis::RecordingOptions{{}, column_renames(flags), negated_quantities(flags)});
   const analysis::RecordingCheck check = analysis::check_recording(model.model, model.name, recording.samples);
   print_recording_notes("diagnose", recording.ignored_columns, check.warnings);
   analysis::require_compared_samples(flags.text("data"), model.name, check.compared, recording.rows_read,
                                      recording.excluded_rows, recording.samples.size(), check.first_refusal);
+  if (!flags.enabled("force-scale")) analysis::refuse_unit_slip(flags.text("data"), check.refusal);
   const Diagnosis diagnosis =
       diagnose(model.model, recording.samples, thread_parallel_for(jobs_from(flags)));
   gearcoupling::v1::DiagnosisResult result =

@@ -57,7 +57,12 @@ std::string subcommand_names() {
 std::string describe(const InvalidInput& error, const Flags& flags) {
   const std::string_view flag = flag_for_field(error.field());
   if (flag.empty() || !flags.has(flag)) return error.what();
-  return describe_input_error(error, "--" + std::string(flag), flags.text(flag));
+  std::string text = describe_input_error(error, "--" + std::string(flag), flags.text(flag));
+  if (analysis::refuses_negative_torque(error)) {
+    text += analysis::negative_torque_hint("for a dyno that logs the drive torque negative, give "
+                                           "--torque-nm its magnitude");
+  }
+  return text;
 }
 
 int run(const Subcommand& subcommand, const Flags& flags) {

@@ -11,6 +11,26 @@ FlagSpec columns_flag() {
           "read the file's column HEADER as NAME of docs/recordings.md, e.g. msy_knm=Ch3_kNm", ""};
 }
 
+FlagSpec negate_flag() {
+  return {"negate", "QUANTITY,...",
+          "read these quantities with their sign flipped, e.g. torque for a dyno that logs the "
+          "drive torque negative",
+          ""};
+}
+
+std::vector<analysis::Quantity> negated_quantities(const Flags& flags) {
+  const std::string& text = flags.text("negate");
+  if (text.empty()) return {};
+  return analysis::parse_negated_quantities(text);
+}
+
+FlagSpec force_scale_flag() {
+  return {"force-scale", "",
+          "run even when a moment channel is 1000 times the model's (kN·m under _nm?), "
+          "which is refused otherwise",
+          std::nullopt, true};
+}
+
 std::vector<analysis::ColumnRename> column_renames(const Flags& flags) {
   const std::string& text = flags.text("columns");
   if (text.empty()) return {};

@@ -14,6 +14,15 @@ namespace gc::cli {
 /// --columns NAME=HEADER,...: the file's columns under other names (docs/recordings.md).
 FlagSpec columns_flag();
 
+/// --negate QUANTITY,...: read these columns with their sign flipped (docs/recordings.md).
+FlagSpec negate_flag();
+/// The quantities --negate gives. Throws analysis::FormatError naming one that is no quantity.
+std::vector<analysis::Quantity> negated_quantities(const Flags& flags);
+
+/// --force-scale: run validate or diagnose on a recording whose moments are 1000 times the
+/// model's (refused otherwise, analysis/scale_check.h).
+FlagSpec force_scale_flag();
+
 /// The renames --columns gives. Throws analysis::FormatError naming a malformed item.
 std::vector<analysis::ColumnRename> column_renames(const Flags& flags);
 

@@ -19,6 +19,7 @@ std::vector<FlagSpec> replay_flags() {
       {"readers", "N", "matched readers (monitor, record, ...) to wait for before the first sample", "1"},
       {"wait-s", "s", "seconds to wait for them at most", "10", false, '\0', {"wait"}},
       columns_flag(),
+      negate_flag(),
       live_domain_flag(),
       catalogue_flag(),   // every subcommand has one (make_calculator); not read here
   };
@@ -38,6 +39,7 @@ int run_replay(const Flags& flags, const Calculator&, std::FILE* out) {
   options.wait_s = flags.number("wait-s");
   options.wait_for_readers = static_cast<std::uint32_t>(flags.integer("readers", 0, 1000));
   options.recording.renames = column_renames(flags);
+  options.recording.negated = negated_quantities(flags);
   const protocol::Entity participant = live::make_participant(domain_from(flags));
   const live::ReplayResult result = live::replay_recording(participant.get(), flags.text("in"), options);
   fmt::print(out, "replayed {} samples of {} as test cell {} in {:.3f} s (run {:016x})\n",

@@ -6,6 +6,7 @@
 
 #include "analysis/before_after_summary.h"
 #include "analysis/model_validation.h"
+#include "analysis/scale_check.h"
 #include "analysis/validation_report_html.h"
 #include "analysis/validation_result.h"
 #include "analysis/validation_run.h"
@@ -29,6 +30,8 @@ std::vector<FlagSpec> validate_flags() {
       {"data", "FILE", "the recording (CSV, docs/recordings.md)", std::nullopt},
       model_flag(),
       columns_flag(),
+      negate_flag(),
+      force_scale_flag(),
       {"reference-torque-nm", "N·m", "T_ref: errors are also given in % of it", "1.5e6", false,
        '\0', {"reference-torque"}},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
@@ -46,13 +49,16 @@ int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
   const auto validation = analysis::validate_model(
       flags.text("data"), model, flags.text("add"), flags.number("reference-torque-nm"),
-      {jobs_from(flags), 1u << 15, column_renames(flags)});
+      {jobs_from(flags), 1u << 15, column_renames(flags), negated_quantities(flags)});
   if (!validation->note.empty()) fmt::print(stderr, "gearcoupling validate: note: {}\n", validation->note);
   const v1::ValidationResult& result = validation->result;
   const std::vector<ModelRun>& runs = validation->runs;
   print_recording_notes("validate", {result.ignored_columns().begin(), result.ignored_columns().end()},
                         {result.warnings().begin(), result.warnings().end()});
   analysis::require_compared_samples(result);
+  if (!flags.enabled("force-scale")) {
+    analysis::refuse_unit_slip(flags.text("data"), runs.front().scale.refusal(runs.front().name));
+  }
   if (!flags.text("html").empty()) {
     analysis::write_validation_report(flags.text("html"), analysis::validation_report(result, runs));
   }

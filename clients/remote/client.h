@@ -1,9 +1,23 @@
 // The C++ client of gearcoupling-service (docs/protocol.md, docs/architecture.md).
+// Example (compiled by tests/docs/doc_snippets.py, ctest docs.snippets):
 //
-//   gc::client::Client client({.domain = 7});
-//   gc::JamAngle jam = client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
-//   auto future = client.call_async<Calculation::kInducedMoments>(request);  // many in flight
-//   client.call_then<Calculation::kJamAngle>(request, [](auto outcome) { ... });  // a callback
+//   #include <cstdio>
+//   #include "clients/remote/client.h"
+//
+//   using gc::protocol::Calculation;
+//   gc::client::Client client({.domain = 7, .timeout = std::chrono::seconds(5)});
+//   const gc::protocol::JamAngleRequest jam_request{gc::protocol::CatalogueName{"nrel_upwind"}};
+//   gc::protocol::JamAngleResult jam = client.call<Calculation::kJamAngle>(jam_request);
+//   const gc::protocol::InducedMomentsRequest moments_request{
+//       gc::protocol::CatalogueName{"nrel_upwind"}, {1.5e6, jam.jam.angle_rad / 2, 0.0, 0.1}, {}};
+//   std::future<gc::InducedMoments> future =   // many in flight
+//       client.call_async<Calculation::kInducedMoments>(moments_request);
+//   client.call_then<Calculation::kJamAngle>(   // a callback, in Cyclone's receive thread
+//       jam_request, [](gc::client::Outcome<gc::protocol::JamAngleResult> outcome) {
+//         if (outcome.error) return;   // an exception_ptr: Timeout, InvalidInput, ...
+//         std::printf("jam angle %g rad\n", outcome.result->jam.angle_rad);
+//       });
+//   gc::InducedMoments moments = future.get();   // or throws the error
 //
 // Discovery is handled: instances are found through the status topic, and no request is
 // written to an instance before this client's request writer has matched the instance's

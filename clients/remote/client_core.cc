@@ -46,7 +46,7 @@ constexpr std::chrono::milliseconds kDisposedResendDelay{500};
 constexpr std::chrono::milliseconds kTick{10};
 /// Longest the receive loop sleeps when nothing is due: otherwise it wakes only for a request's
 /// deadline, a status sample or the guard condition. A thread woken a hundred times a second
-/// for nothing costs round trips on a busy host (docs/benchmarks.md, "fourth round").
+/// for nothing costs round trips on a busy host (docs/architecture.md, "Few wake-ups besides the round trip's own").
 constexpr std::chrono::seconds kIdleWake{1};
 /// How soon the receive loop tries again a write deferred by a reply callback (a full window).
 constexpr std::chrono::microseconds kWindowRetry{200};

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/model_error.h"
+
 #include "analysis/scale_check.h"
 
 namespace gc::analysis {
@@ -57,6 +59,27 @@ TEST(MomentScale, DoesNotJudgeAChannelTheModelHoldsNearZero) {
   MomentScale scale;
   for (int i = 1; i <= 100; ++i) scale.add({1e4 * i, 2e3}, {1e4 * i, 200.0});
   EXPECT_TRUE(scale.warnings("paper").empty());
+}
+
+// 1000 is a kilo prefix slipped, refused by validate and diagnose; 10, 100 and 57.3 a model can
+// be that wrong: warnings only.
+TEST(MomentScale, RefusesOnlyAThousandfoldSlipEitherWay) {
+  for (const double factor : {1000.0, 1.0 / 1000.0}) {
+    MomentScale scale;
+    for (int i = 1; i <= 100; ++i) scale.add({factor * 1e4 * i, 5e3}, {1e4 * i, 5e3});
+    const auto refusal = scale.refusal("paper");
+    ASSERT_TRUE(refusal) << factor;
+    EXPECT_NE(refusal->find("M_sy'"), std::string::npos) << *refusal;
+    EXPECT_NE(refusal->find("by about 1000"), std::string::npos) << *refusal;
+    EXPECT_THROW(refuse_unit_slip("rec.csv", refusal), InvalidInput);
+  }
+  for (const double factor : {10.0, 100.0, 57.29577951308232}) {
+    MomentScale scale;
+    for (int i = 1; i <= 100; ++i) scale.add({factor * 1e4 * i, 5e3}, {1e4 * i, 5e3});
+    EXPECT_EQ(scale.warnings("paper").size(), 1u) << factor;
+    EXPECT_FALSE(scale.refusal("paper")) << factor;
+  }
+  EXPECT_NO_THROW(refuse_unit_slip("rec.csv", std::nullopt));
 }
 
 // Jam angle 0.0131 rad (the paper's upwind coupling); the bundled recordings reach 30-60 % of it.

@@ -183,7 +183,62 @@ TEST(CliBatch, BadHeaderExitsTwoNamingTheColumn) {
   write_file(in, "torque_nm,misalignment_deg,direction_deg\n1e6,0.1,0\n");
   const ProcessResult missing = run_gearcoupling({"batch", "--in", in});
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.err.find("required column 'mu' missing"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("required column missing (one of: mu)"), std::string::npos) << missing.err;
+}
+
+// The recordings' unit rules (analysis/recording_csv.h): any unit a recording accepts, in any
+// case, and direction optional (0). Each row must equal the same load case in SI and degrees.
+TEST(CliBatch, ReadsAnyUnitARecordingAcceptsAndDirectionIsOptional) {
+  const std::string in = temp_path("gc_batch_units");
+  write_file(in, "torque_kNm,misalignment_mrad,mu\n1500,3.5,0.1\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> rows = lines_of(run.out);
+  ASSERT_EQ(rows.size(), 2u) << run.out;
+  expect_row_equals_core(rows[1], 2, "nrel_upwind", {1500 * 1e3, 3.5 * 1e-3, 0.0, 0.1});
+
+  write_file(in, "torque_mnm,misalignment_rad,direction_deg,mu\n1.5,0.0035,90,0.1\n");
+  const ProcessResult radians = run_gearcoupling({"batch", "--in", in});
+  ASSERT_EQ(radians.exit_code, 0) << radians.err;
+  expect_row_equals_core(lines_of(radians.out).at(1), 2, "nrel_upwind", {1.5 * 1e6, 0.0035, 90 * kDegree, 0.1});
+}
+
+TEST(CliBatch, UnknownUnitAndRepeatedQuantityNameTheColumns) {
+  const std::string in = temp_path("gc_batch_bad_unit");
+  write_file(in, "torque_lbft,misalignment_deg,mu\n1e6,0.1,0.1\n");
+  const ProcessResult unit = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(unit.exit_code, 2);
+  EXPECT_NE(unit.err.find("input header: unknown unit 'lbft' in column 'torque_lbft' (accepted, in "
+                          "any case: torque_nm, torque_knm, torque_mnm)"),
+            std::string::npos) << unit.err;
+  write_file(in, "torque_nm,torque_knm,misalignment_deg,mu\n1e6,1e3,0.1,0.1\n");
+  const ProcessResult twice = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("input header: column 'torque_knm' repeats 'torque_nm'"), std::string::npos)
+      << twice.err;
+}
+
+TEST(CliBatch, NegativeTorqueSaysTheModelTakesItsMagnitude) {
+  const std::string in = temp_path("gc_batch_negative");
+  write_file(in, "torque_knm,misalignment_deg,mu\n-1500,0.2,0.1\n");
+  const ProcessResult run = run_gearcoupling({"batch", "--in", in});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("line 2: torque_knm -1500: operating_point.torque_nm = -1500000 is out of "
+                         "range: allowed (0, 1e12] N·m; the model takes the torque as a magnitude "
+                         "(T > 0): for a dyno that logs the drive torque negative, write the "
+                         "torque_knm column's magnitude"),
+            std::string::npos) << run.err;
+}
+
+TEST(CliMoments, NegativeTorqueFlagSaysTheModelTakesItsMagnitude) {
+  const ProcessResult run = run_gearcoupling(
+      {"moments", "--torque-nm", "-1.5e6", "--misalignment-deg", "0.3", "--mu", "0.1"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--torque-nm -1.5e6: operating_point.torque_nm = -1500000 is out of range: "
+                         "allowed (0, 1e12] N·m; the model takes the torque as a magnitude (T > 0): "
+                         "for a dyno that logs the drive torque negative, give --torque-nm its "
+                         "magnitude"),
+            std::string::npos) << run.err;
 }
 
 TEST(CliBatch, RefusesToOverwriteItsInput) {

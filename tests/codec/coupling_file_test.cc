@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/coupling_geometry.h"
 #include "core/model_error.h"
 
 namespace gc::codec {
@@ -150,6 +151,95 @@ TEST(CouplingFile, RequiresExactlyTheFieldsTheSchemaDoesNotMarkOptionalUse) {
 
 TEST(CouplingFile, UnreadableFileIsAnError) {
   EXPECT_THROW(load_coupling_file("/nonexistent/none.textproto"), InvalidInput);
+}
+
+// The whole message of the InvalidInput `parse` throws (caught by reference: the codec's
+// FileInputError writes its own), or "" when it throws none.
+template <typename Parse>
+std::string message_of(Parse parse) {
+  try {
+    parse();
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// The bundled upwind text with the line that starts with `field` replaced by `field: value`.
+std::string upwind_with(const std::string& field, const std::string& value) {
+  return without_line_of(bundled_text("nrel_upwind"), field + ":") + field + ": " + value + "\n";
+}
+
+TEST(CouplingFile, MissingFileSaysWhyWithTheOperatingSystemsReason) {
+  const std::string message = message_of([] { load_coupling_file("/nonexistent/none.textproto"); });
+  EXPECT_EQ(message, "coupling: cannot read coupling file /nonexistent/none.textproto: "
+                     "No such file or directory");
+  EXPECT_NE(message_of([] { load_coupling_file("/"); }).find("Is a directory"), std::string::npos);
+}
+
+TEST(CouplingFile, ModuleTypoNamesEveryFieldOfTheConsistencyCheckInTheFilesUnits) {
+  // The case: module_m 0.1016 for 0.01016 blamed pitch_diameter_m alone, with a double
+  // space and no unit. 100 teeth * 0.1016 m = 10.16 m against a 1.016 m pitch diameter.
+  EXPECT_EQ(message_of([] { parse_coupling_text(upwind_with("module_m", "0.1016"), "typo.textproto"); }),
+            "coupling.pitch_diameter_m = 1.016 m and coupling.teeth * coupling.module_m = "
+            "100 * 0.1016 m = 10.16 m disagree: the pitch diameter is N * module within 0.5 %; "
+            "one of the three is wrong (in typo.textproto)");
+}
+
+TEST(CouplingFile, BaseDiameterCheckNamesPitchDiameterAndPressureAngleInDegrees) {
+  const std::string message = message_of(
+      [] { parse_coupling_text(upwind_with("base_diameter_m", "0.9"), "base.textproto"); });
+  // 1.016 m * cos(20 deg) = 0.954728 m (Table 1 rounds it to 0.95473).
+  EXPECT_EQ(message, "coupling.base_diameter_m = 0.9 m and coupling.pitch_diameter_m * "
+                     "cos(coupling.pressure_angle_deg) = 1.016 m * cos(20 deg) = 0.954728 m "
+                     "disagree: the base diameter is D cos(phi) within 0.5 %; one of the three is "
+                     "wrong (in base.textproto)");
+}
+
+TEST(CouplingFile, DegreeFieldOutOfRangeIsReportedInDegreesWithTheUnit) {
+  try {
+    parse_coupling_text(upwind_with("pressure_angle_deg", "50"), "steep.textproto");
+    FAIL() << "50 deg accepted";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "coupling.pressure_angle_deg");
+    EXPECT_STREQ(error.what(), "coupling.pressure_angle_deg = 50 is out of range: allowed "
+                               "[5.002, 45] deg (in steep.textproto)");
+  }
+  EXPECT_EQ(message_of([] { parse_coupling_text(upwind_with("tilt_deg", "-91"), "t.textproto"); }),
+            "coupling.tilt_deg = -91 is out of range: allowed [-90, 90] deg (in t.textproto)");
+  EXPECT_EQ(message_of([] {
+              parse_coupling_text(upwind_with("design_misalignment_deg", "12"), "d.textproto");
+            }),
+            "coupling.design_misalignment_deg = 12 is out of range: allowed [0, 9.998] deg "
+            "(in d.textproto)");
+}
+
+TEST(CouplingFile, DegreeRangesPrintedAreAcceptedByTheCore) {
+  // The printed bounds are the core's radians converted and rounded inwards: a file at each
+  // printed edge passes the codec and the core alike; just outside, the codec refuses in degrees
+  // (so the core's message in radians is never what a file's author reads).
+  const struct {
+    const char* field;
+    const char* inside;
+    const char* outside;
+  } edges[] = {{"pressure_angle_deg", "5.002", "5.0015"},  {"pressure_angle_deg", "45", "45.001"},
+               {"design_misalignment_deg", "0", "-0.001"}, {"design_misalignment_deg", "9.998", "9.999"},
+               {"tilt_deg", "-90", "-90.001"},             {"tilt_deg", "90", "90.001"}};
+  // At another pressure angle the base diameter D cos(phi) follows.
+  const auto file_with = [](const std::string& field, const std::string& value) {
+    if (field != "pressure_angle_deg") return upwind_with(field, value);
+    const std::string base = std::to_string(1.016 * std::cos(std::stod(value) * M_PI / 180.0));
+    return without_line_of(upwind_with(field, value), "base_diameter_m:") + "base_diameter_m: " + base + "\n";
+  };
+  for (const auto& edge : edges) {
+    const CouplingDefinition d = parse_coupling_text(file_with(edge.field, edge.inside), "edge.textproto");
+    EXPECT_NO_THROW(CouplingGeometry{d}) << edge.field << " = " << edge.inside;
+    EXPECT_NE(message_of([&] {
+                parse_coupling_text(file_with(edge.field, edge.outside), "edge.textproto");
+              }).find(std::string("coupling.") + edge.field + " = " + edge.outside + " is out of range"),
+              std::string::npos)
+        << edge.field << " = " << edge.outside;
+  }
 }
 
 }  // namespace

@@ -103,7 +103,7 @@ TEST(ServiceConfig, BundledDeployFileParses) {
 
 // Every Cyclone configuration shipped in deploy/ starts reliable writers at their full window, so
 // that a stream of requests or replies does not ask for an acknowledgement every few ms
-// (docs/protocol.md, "QoS"; docs/benchmarks.md, "fourth round"). A configuration added without it
+// (docs/protocol.md, "QoS"; docs/architecture.md, "Few wake-ups besides the round trip's own"). A configuration added without it
 // would bring back 200-380 wake-ups a second per process.
 TEST(CycloneConfig, EveryShippedConfigurationStartsWritersAtTheirFullWindow) {
   const std::regex window(

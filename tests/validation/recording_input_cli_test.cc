@@ -41,10 +41,95 @@ v1::ValidationResult validate_json(const std::vector<std::string>& extra, Proces
   return result;
 }
 
-TEST(RecordingInputCli, NewtonMetresUnderAKnmHeaderAreWarnedOnStderrAndInTheJson) {
+TEST(RecordingInputCli, NewtonMetresUnderAKnmHeaderAreRefusedWithTheWarningsAdvice) {
+  // 1000 times the model: an R² of -3e7 and a gain at its bound were printed as results before.
+  const std::string slipped =
+      with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy_knm,msz_knm");
+  for (const std::string subcommand : {"validate", "diagnose"}) {
+    const ProcessResult run =
+        run_gearcoupling({subcommand, "--data", slipped, "--model", "paper"});
+    EXPECT_EQ(run.exit_code, 2) << subcommand << run.out << run.err;
+    EXPECT_EQ(run.out, "") << subcommand;
+    EXPECT_NE(run.err.find("gearcoupling " + subcommand + ": warning: M_sy'"), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("gearcoupling " + subcommand + ": error: recording: " + slipped + ": M_sy' measured RMS"),
+              std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("check the unit of the msy column (N·m under _knm? kN·m under _nm?); "
+                           "a fit to moments 1000 times off says nothing: give the column its unit "
+                           "(rename it in the file, or --columns msy_knm=HEADER), or --force-scale "
+                           "to run anyway"),
+              std::string::npos) << run.err;
+  }
+}
+
+TEST(RecordingInputCli, KilonewtonMetresUnderAnNmHeaderAreRefusedToo) {
+  // The case, the other way round: kN·m numbers under _nm, 1000 times too small.
+  std::ifstream in(kSweep);
+  std::string line, text = "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm\n";
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    for (std::size_t i = 4; i < 6; ++i) fields[i] = std::to_string(std::stod(fields[i]) / 1000.0);
+    text += fields[0] + "," + fields[1] + "," + fields[2] + "," + fields[3] + "," + fields[4] + "," +
+            fields[5] + "\n";
+  }
+  const std::string path = temp_path("gc_knm_under_nm") + ".csv";
+  write_file(path, text);
+  const ProcessResult run = run_gearcoupling({"validate", "--data", path, "--model", "paper"});
+  EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
+  EXPECT_NE(run.err.find("too small by about 1000"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--force-scale to run anyway"), std::string::npos) << run.err;
+}
+
+// A dyno that logs the drive torque negative: refused with what to do, and --negate torque reads
+// the same recording as the positive one.
+TEST(RecordingInputCli, NegativeTorqueIsRefusedWithTheHintAndNegateTorqueReadsIt) {
+  std::ifstream in(kSweep);
+  std::string line, text;
+  std::getline(in, line);
+  text = line + "\n";
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find(','), second = line.find(',', first + 1);
+    text += line.substr(0, first + 1) + "-" + line.substr(first + 1, second - first - 1) +
+            line.substr(second) + "\n";
+  }
+  const std::string negative = temp_path("gc_negative_torque") + ".csv";
+  write_file(negative, text);
+  const ProcessResult refused = run_gearcoupling({"validate", "--data", negative, "--model", "paper"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("the model refused all 1000 samples read (first: operating_point.torque_nm"),
+            std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("; the model takes the torque as a magnitude (T > 0): for a dyno that "
+                             "logs the drive torque negative, read the column with --negate torque"),
+            std::string::npos) << refused.err;
+
+  ProcessResult negated, plain;
+  const v1::ValidationResult flipped = validate_json({"--data", negative, "--negate", "torque"}, negated);
+  const v1::ValidationResult original = validate_json({"--data", kSweep}, plain);
+  ASSERT_EQ(negated.exit_code, 0) << negated.err;
+  ASSERT_EQ(flipped.models_size(), 1);
+  EXPECT_EQ(flipped.models(0).compared_samples(), 1000u);
+  EXPECT_EQ(flipped.models(0).SerializeAsString(), original.models(0).SerializeAsString());
+
+  const ProcessResult unknown =
+      run_gearcoupling({"validate", "--data", negative, "--model", "paper", "--negate", "torq"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--negate 'torq': 'torq' is no quantity of docs/recordings.md"),
+            std::string::npos) << unknown.err;
+  const ProcessResult absent =
+      run_gearcoupling({"validate", "--data", negative, "--model", "paper", "--negate", "speed"});
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_NE(absent.err.find("--negate speed: the header has no speed column"), std::string::npos)
+      << absent.err;
+}
+
+TEST(RecordingInputCli, ForceScaleRunsAnywayAndTheJsonKeepsTheWarning) {
   ProcessResult run;
   const v1::ValidationResult result = validate_json(
-      {"--data", with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy_knm,msz_knm")}, run);
+      {"--data", with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy_knm,msz_knm"),
+       "--force-scale"}, run);
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_GE(result.warnings_size(), 1) << run.out;
   EXPECT_NE(result.warnings(0).find("M_sy'"), std::string::npos) << result.warnings(0);
