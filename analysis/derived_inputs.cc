@@ -4,6 +4,7 @@ namespace gc::analysis {
 
 void DerivedInputs::next(MeasurementSample& sample) {
   sample.loading_direction = loading_.next(sample.time_s, sample.misalignment_rad);
+  sample.travel_direction = loading_.last_travel();
   sample.misalignment_rate_rad_s = misalignment_rate_.next(sample.time_s, sample.misalignment_rad);
   sample.torque_rate_nm_s = torque_rate_.next(sample.time_s, sample.torque_nm);
   // Every kept row of a recording with a speed column has a speed (an empty cell excludes the

@@ -84,6 +84,8 @@ v1::RoundRecord to_message(const DiagnosisRound& round) {
   if (round.formula) *r.mutable_formula() = to_message(*round.formula);
   r.set_formula_chosen(round.formula_chosen);
   for (const std::string& d : round.dropped) r.add_dropped(d);
+  for (const std::string& t : round.time_terms) r.add_time_terms(t);
+  r.set_formula_on_dense_rows(round.formula_on_dense_rows);
   return r;
 }
 

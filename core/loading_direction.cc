@@ -28,6 +28,7 @@ int LoadingDirectionTracker::next(double time_s, double misalignment_rad) {
   } else if (time_s - anchor_time_s_ > still_after_s_) {
     direction_ = 0;
   }
+  if (direction_ != 0) last_travel_ = direction_;
   return direction_;
 }
 
@@ -37,7 +38,10 @@ void derive_loading_directions(std::span<MeasurementSample> samples,
   std::transform(samples.begin(), samples.end(), amplitudes.begin(),
                  [](const MeasurementSample& s) { return s.misalignment_rad; });
   LoadingDirectionTracker tracker(loading_dead_band_rad(amplitudes, options), options.still_after_s);
-  for (MeasurementSample& s : samples) s.loading_direction = tracker.next(s.time_s, s.misalignment_rad);
+  for (MeasurementSample& s : samples) {
+    s.loading_direction = tracker.next(s.time_s, s.misalignment_rad);
+    s.travel_direction = tracker.last_travel();
+  }
 }
 
 }  // namespace gc

@@ -38,6 +38,8 @@ class LoadingDirectionTracker {
 
   /// The direction at this sample: +1 rising, -1 falling, 0 still or unknown (the first).
   int next(double time_s, double misalignment_rad);
+  /// The last non-zero direction returned by next (held through still stretches), 0 before any.
+  int last_travel() const { return last_travel_; }
 
  private:
   double dead_band_rad_;
@@ -46,6 +48,7 @@ class LoadingDirectionTracker {
   double anchor_rad_ = 0.0;
   double anchor_time_s_ = 0.0;
   int direction_ = 0;
+  int last_travel_ = 0;
 };
 
 /// Sets loading_direction on every sample of a whole recording, in time order: the dead band

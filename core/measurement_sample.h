@@ -14,6 +14,10 @@ struct MeasurementSample {
   /// +1 while the misalignment amplitude rises, -1 while it falls, 0 when unknown or still.
   /// Derived from the sequence by the recording reader, so effects need no per-call state.
   int loading_direction = 0;
+  /// The last direction of travel, +1 or -1, held through still stretches (0 before the first
+  /// move): the side the spline's friction stays locked on after a move. Derived with
+  /// loading_direction.
+  int travel_direction = 0;
   std::optional<double> speed_rpm;            ///< [rpm]
   std::optional<double> temperature_c;        ///< [deg C]
   /// Shaft rotation angle, integrated from speed over time by whoever reads the recording

@@ -1,6 +1,6 @@
 // The time of a step in the residual: a bridge re-zeroed or re-balanced mid-test, a gauge or an
-// amplifier replaced, a bolt that slipped. Each channel's residual, less what the inputs explain
-// (nuisance), is scanned by the CUSUM statistic of a single change in mean,
+// amplifier replaced, a bolt that slipped. Each channel's residual, centred, is scanned by the
+// CUSUM statistic of a single change in mean,
 //   C(k) = |S_k - (k / n) S_n| / sqrt(k (n - k) / n),   S_k the sum of the first k values,
 // the likelihood-ratio statistic for one change point under white noise (Page 1954; Hinkley 1970),
 // over changes that leave at least a twentieth of the rows on either side. The maximum over both
@@ -8,7 +8,8 @@
 // step terms at that time on each channel (core/effects/expression_terms.h); whether a step stays is
 // for its held-out test and the drift rule (a step must predict whole fifths of the recording it
 // was not fitted on), which judge it against the coloured noise that CUSUM alone would take for
-// steps.
+// steps. The residual is only centred, not regressed on the inputs: a test programme changes its
+// inputs by phases, and such a regression takes a step's share at a phase boundary near it.
 #pragma once
 
 #include <optional>

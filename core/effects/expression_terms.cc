@@ -51,10 +51,15 @@ const Scalar kScalars[] = {
      "friction coefficient or mesh stiffness different from the model's, or a misalignment scale error",
      [](const MeasurementSample& s) { return std::optional(s.torque_nm * s.misalignment_rad); }},
     {"travel_sign", "sign(dzeta/dt)", "N·m", "-", 1e7,
-     "a moment whose sign follows the direction of travel of the misalignment: Coulomb friction in the "
-     "loading mechanism or the spline, or hysteresis (a lag of the coupling behind the measured "
-     "misalignment)",
-     [](const MeasurementSample& s) { return std::optional<double>(s.loading_direction); }},
+     "a moment whose sign follows the direction of travel of the misalignment, and holds it when the "
+     "misalignment stops: Coulomb friction in the loading mechanism or the spline (locked on the side "
+     "of the last move), or hysteresis (a lag of the coupling behind the measured misalignment)",
+     [](const MeasurementSample& s) { return std::optional<double>(s.travel_direction); }},
+    {"torque_travel_sign", "T sign(dzeta/dt)", "N·m/N·m", "1/(N·m)", 1.0,
+     "a moment that flips with the direction of travel of the misalignment and grows with torque: Coulomb "
+     "friction between the spline's teeth (mu times the tooth forces, which torque sets), a hysteresis of "
+     "the coupling that grows with load",
+     [](const MeasurementSample& s) { return std::optional<double>(s.torque_nm * s.travel_direction); }},
     {"time", "t", "N·m/s", "1/s", 1e4,
      "a moment that changes with time alone: zero drift of the strain-gauge bridge (its temperature), or "
      "a slow change of the rig during the test",

@@ -47,6 +47,7 @@ TEST(ExpressionEffect, AddsItsTermsToTheModelsMomentsAfterEveryOtherEffect) {
   s.misalignment_rad = 0.004;
   s.direction_rad = 0.3;
   s.loading_direction = -1;
+  s.travel_direction = -1;
   s.speed_rpm = 14.0;
   const SensorMoments m = plain.predict(s).moments;
   const SensorMoments f = with.predict(s).moments;

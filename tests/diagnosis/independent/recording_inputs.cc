@@ -36,6 +36,7 @@ std::vector<MeasurementSample> recording_inputs(LoadSequenceKind kind) {
     s.rotation_phase_rad = phase_rad;
     s.temperature_c = 35.0 + 20.0 * s.time_s / end_s + 1.5 * std::sin(2.0 * pi * s.time_s / 31.0);
     s.loading_direction = loading.next(s.time_s, s.misalignment_rad);
+    s.travel_direction = loading.last_travel();  // as the recording reader derives it
   }
   return samples;
 }
