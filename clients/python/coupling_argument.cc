@@ -6,7 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "clients/cli/coupling_reference.h"
+#include "calculators/coupling_reference.h"
 #include "clients/python/bindings.h"
 #include "codec/coupling_catalog.h"
 #include "codec/coupling_file.h"
@@ -68,7 +68,7 @@ std::shared_ptr<const Coupling> coupling_argument(py::handle argument) {
   }
   if (py::isinstance<py::str>(argument)) {
     const std::string text = argument.cast<std::string>();
-    if (cli::is_file_reference(text)) return from_definition(codec::load_coupling_file(text));
+    if (calculators::is_file_reference(text)) return from_definition(codec::load_coupling_file(text));
     return from_catalogue(text);
   }
   throw py::type_error("coupling: a gearcoupling.Coupling, a catalogue name, a coupling file or a dict, not " +
@@ -76,7 +76,7 @@ std::shared_ptr<const Coupling> coupling_argument(py::handle argument) {
 }
 
 RemoteCoupling remote_coupling_argument(py::handle argument) {
-  if (py::isinstance<py::str>(argument) && !cli::is_file_reference(argument.cast<std::string>())) {
+  if (py::isinstance<py::str>(argument) && !calculators::is_file_reference(argument.cast<std::string>())) {
     const std::string name = argument.cast<std::string>();
     return {name, nullptr, name};
   }

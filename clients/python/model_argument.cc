@@ -7,7 +7,7 @@
 
 #include "analysis/atomic_file.h"
 #include "analysis/effect_spec.h"
-#include "clients/cli/coupling_reference.h"
+#include "calculators/coupling_reference.h"
 #include "clients/python/bindings.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
@@ -35,7 +35,7 @@ Model model_argument(py::handle argument) {
         codec::parse_model_json(json, "model dict", catalog, std::filesystem::current_path()))};
   }
   std::filesystem::path path;
-  if (py::isinstance<py::str>(argument) && !cli::is_file_reference(argument.cast<std::string>())) {
+  if (py::isinstance<py::str>(argument) && !calculators::is_file_reference(argument.cast<std::string>())) {
     path = codec::default_models_dir() / (argument.cast<std::string>() + ".textproto");
   } else {
     path = argument.cast<std::filesystem::path>();
