@@ -8,6 +8,7 @@
 
 #include "calculators/coupling_reference.h"
 #include "clients/python/bindings.h"
+#include "clients/python/typed_objects.h"
 #include "codec/coupling_catalog.h"
 #include "codec/coupling_file.h"
 #include "core/model_error.h"
@@ -92,7 +93,7 @@ void bind_couplings(py::module_& m) {
       m, "Coupling",
       "A validated coupling: from the catalogue by name, from a coupling file, or from a dict with "
       "the coupling file's fields (idl/coupling.proto; angles in degrees as in the files).")
-      .def(py::init([](py::object argument) {
+      .def(py::init([](const CouplingArgument& argument) {
              return std::const_pointer_cast<Coupling>(coupling_argument(argument));
            }),
            py::arg("source"),
@@ -100,9 +101,9 @@ void bind_couplings(py::module_& m) {
       .def_property_readonly("name", [](const Coupling& c) { return c.geometry->name(); },
                              "The coupling's name (its definition's).")
       .def_property_readonly("catalogue_name",
-                             [](const Coupling& c) -> py::object {
-                               if (c.catalogue_name.empty()) return py::none();
-                               return py::str(c.catalogue_name);
+                             [](const Coupling& c) -> std::optional<std::string> {
+                               if (c.catalogue_name.empty()) return std::nullopt;
+                               return c.catalogue_name;
                              },
                              "The catalogue name it was loaded by; None for a file or a dict.")
       .def_property_readonly("teeth", [](const Coupling& c) { return c.geometry->teeth(); },
