@@ -120,12 +120,8 @@ TEST(RemoteCli, TimeoutBoundsAWholeBatchOnAStoppedService) {
   // Found and answering first, so the stop comes after discovery.
   ASSERT_EQ(run_gearcoupling(remote({"jam-angle"})).exit_code, 0);
   const std::string in = cli::testing::temp_path("stopped_batch_in");
-  cli::testing::write_file(in, "torque_nm,misalignment_deg,direction_deg,mu
-"
-                               "1.5e6,0.3,0,0.1
-2.0e6,0.2,0,0.1
-2.5e6,0.1,0,0.1
-");
+  cli::testing::write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n"
+                               "1.5e6,0.3,0,0.1\n2.0e6,0.2,0,0.1\n2.5e6,0.1,0,0.1\n");
   service.signal(SIGSTOP);
   const TimedRun run = run_timed(remote({"batch", "--in", in, "-j", "1", "--timeout-s", "2"}));
   service.signal(SIGCONT);
