@@ -21,7 +21,7 @@
 
 #include "analysis/recording_csv.h"
 #include "gearcoupling.h"
-#include "live/health_subscriber.h"
+#include "clients/status/cell_board.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "live/measurement_publisher.h"
@@ -117,7 +117,10 @@ int main(int argc, char** argv) {
   dds_qset_reliability(qos.get(), DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
   dds_qset_history(qos.get(), DDS_HISTORY_KEEP_ALL, 0);
   gc::protocol::Entity reader(dds_create_reader(subscriber.get(), topic.get(), qos.get(), nullptr));
-  gc::live::HealthSubscriber health(participant.get());
+  gc::status::CellBoardOptions health_options;
+  health_options.read_residuals = false;  // read below, sample by sample
+  health_options.max_cells = 4096;
+  gc::status::CellBoard health(participant.get(), health_options);
 
   const auto count = static_cast<std::uint64_t>(rate_hz * seconds);
   std::vector<Cell> cell_list(static_cast<std::size_t>(cells));
@@ -197,7 +200,7 @@ int main(int argc, char** argv) {
   }
   std::uint64_t taken = 0, evaluated = 0, lost = 0;
   for (const Cell& cell : cell_list) {
-    const auto h = health.wait_for(cell.name, [&](const gc::live::HealthView& v) { return v.taken >= count; },
+    const auto h = health.wait_for(cell.name, [&](const gc::status::HealthView& v) { return v.taken >= count; },
                                    std::chrono::seconds(5));
     if (h) {
       taken += h->taken;

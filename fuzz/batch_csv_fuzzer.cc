@@ -18,14 +18,14 @@
 #include "analysis/batch_csv.h"
 #include "analysis/csv_fields.h"
 #include "analysis/format_error.h"
-#include "clients/cli/coupling_reference.h"
-#include "clients/cli/in_process_calculator.h"
+#include "calculators/coupling_reference.h"
+#include "calculators/in_process_calculator.h"
 #include "fuzz/fuzz_checks.h"
 
 namespace {
 
-const gc::cli::InProcessCalculator& calculator() {
-  static const gc::cli::InProcessCalculator in_process(GC_FUZZ_CATALOG_DIR);
+const gc::calculators::InProcessCalculator& calculator() {
+  static const gc::calculators::InProcessCalculator in_process(GC_FUZZ_CATALOG_DIR);
   return in_process;
 }
 
@@ -43,7 +43,7 @@ void evaluate_row(std::string_view line, long number, const gc::analysis::BatchC
     gc::analysis::append_error_row(out, number, row.coupling, *reason);
     return;
   }
-  if (gc::cli::is_file_reference(row.coupling)) return;
+  if (gc::calculators::is_file_reference(row.coupling)) return;
   try {
     const gc::analysis::LoadCase result = calculator().load_case(row.coupling, row.point, {});
     gc::fuzz::check(result.contact, static_cast<int>(result.contact.teeth.size()));

@@ -1,6 +1,6 @@
 #include <fmt/format.h>
 
-#include "clients/cli/client_id_prefix_flag.h"
+#include "calculators/client_id_prefix.h"
 #include "clients/cli/subcommand.h"
 #include "codec/coupling_catalog.h"
 #include "codec/result_json.h"
@@ -35,10 +35,10 @@ std::vector<FlagSpec> calculator_flags(bool json) {
       {"remote", "", "compute on gearcoupling-service over DDS (CYCLONEDDS_URI) instead of here",
        std::nullopt, true},
       domain_flag("DDS domain of the service, with --remote"),
-      {"timeout-s", "s", "seconds to wait for each reply, with --remote, (0, 3600]", "10", false,
+      {"timeout-s", "s", "with --remote, seconds the whole command may take, discovery and every request included, (0, 3600]", "10", false,
        '\0', {"timeout"}},
-      {"client-id-prefix", "HEX8", std::string("with --remote, ") + kClientIdPrefixHelp,
-       client_id_prefix_from_environment()},
+      {"client-id-prefix", "HEX8", std::string("with --remote, ") + calculators::kClientIdPrefixHelp,
+       calculators::client_id_prefix_from_environment()},
   };
   if (json) flags.push_back(json_flag());
   return flags;

@@ -12,10 +12,14 @@
 
 #include <google/protobuf/message.h>
 
-#include "clients/cli/calculator.h"
+#include "calculators/calculator.h"
 #include "clients/cli/command_line.h"
 
 namespace gc::cli {
+
+using analysis::LoadCase;
+using calculators::Calculator;
+using calculators::JamAngleReport;
 
 struct Subcommand {
   std::string_view name;

@@ -7,7 +7,7 @@
 
 #include "clients/cli/model_flags.h"
 #include "clients/cli/subcommand.h"
-#include "live/health_subscriber.h"
+#include "clients/status/cell_board.h"
 #include "live/live_topics.h"
 #include "live/model_swap_publisher.h"
 
@@ -40,16 +40,19 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
   const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait-s") * 1e3));
   const protocol::Entity participant = live::make_participant(domain_from(flags));
   live::ModelSwapPublisher swaps(participant.get());
-  live::HealthSubscriber health(participant.get());
+  status::CellBoardOptions board;
+  board.read_residuals = false;  // an operator identity may read the health alone
+  board.only_cell = test_cell;
+  status::CellBoard health(participant.get(), board);
   if (!swaps.wait_for_readers(1, wait)) {
     throw std::runtime_error("no gearcoupling-monitor matched within --wait " + flags.text("wait-s") + " s");
   }
   const std::string previous_refusal = health.wait_for(test_cell, [](const auto&) { return true; },
                                                        std::chrono::milliseconds(500))
-                                           .value_or(live::HealthView{}).last_model_refusal;
+                                           .value_or(status::HealthView{}).last_model_refusal;
   swaps.publish(test_cell, read_text(model_flag_path(flags)),
                 static_cast<std::uint32_t>(flags.integer("decimate", 0, 1000000)));
-  const auto shown = health.wait_for(test_cell, [&](const live::HealthView& h) {
+  const auto shown = health.wait_for(test_cell, [&](const status::HealthView& h) {
     return h.model_name == model.name || h.last_model_refusal != previous_refusal;
   }, wait);
   if (shown && shown->model_name == model.name) {

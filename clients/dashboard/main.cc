@@ -1,13 +1,13 @@
 // gearcoupling-dashboard: flags, logging, signals; DashboardServer does the rest.
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
-#include "clients/cli/client_id_prefix_flag.h"
-#include "clients/cli/command_line.h"
+#include "calculators/client_id_prefix.h"
 #include "clients/dashboard/dashboard_server.h"
 #include "parallel/shutdown_signals.h"
 #include "protocol/domain_id.h"
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   std::string listen = "127.0.0.1:8080";
   int update_hz = 10;
   double query_timeout_s = 5.0;
-  std::string client_id_prefix = gc::cli::client_id_prefix_from_environment();
+  std::string client_id_prefix = gc::calculators::client_id_prefix_from_environment();
   CLI::App app{
       "gearcoupling-dashboard: the service instances, the live test cells and a query panel in "
       "the browser, and /metrics for Prometheus (docs/dashboard.md). Reads DDS; writes only the "
@@ -79,15 +79,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{1}, kMostCells))
       ->capture_default_str();
   app.add_option("--client-id-prefix", client_id_prefix,
-                 std::string("for the query panel, ") + gc::cli::kClientIdPrefixHelp);
+                 std::string("for the query panel, ") + gc::calculators::kClientIdPrefixHelp);
   try {
     app.parse(argc, argv);
     parse_listen(listen, options);
-    options.client_id_prefix = gc::cli::parse_client_id_prefix(client_id_prefix);
+    options.client_id_prefix = gc::calculators::parse_client_id_prefix(client_id_prefix);
   } catch (const CLI::ParseError& error) {
     // --help exits 0; bad flags exit 2, as the other programs' bad input does.
     return app.exit(error) == 0 ? 0 : kBadInput;
-  } catch (const gc::cli::UsageError& error) {
+  } catch (const std::invalid_argument& error) {
     std::fprintf(stderr, "gearcoupling-dashboard: %s\n", error.what());
     return kBadInput;
   }

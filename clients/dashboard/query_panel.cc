@@ -51,7 +51,7 @@ bool refused_by_security(const protocol::DdsError& error) {
 
 QueryPanel::QueryPanel(client::ClientOptions options) {
   try {
-    calculator_ = std::make_unique<cli::RemoteCalculator>(options);
+    calculator_ = std::make_unique<calculators::RemoteCalculator>(options);
   } catch (const protocol::DdsError& error) {
     if (!refused_by_security(error)) throw;
     refusal_ = refusal_message(error.what());
@@ -91,8 +91,8 @@ JsonAnswer QueryPanel::compute(const std::map<std::string, std::string>& paramet
         .direction_rad = codec::radians_from_degrees(number(parameters, "direction_deg", 0.0)),
         .friction_coefficient = number(parameters, "friction_coefficient", 0.0)};
     const std::string& name = coupling->second;
-    const cli::JamAngleReport jam = calculator_->jam_angle(name);
-    const cli::LoadCase load_case = calculator_->load_case(name, point, ContactOptions{});
+    const calculators::JamAngleReport jam = calculator_->jam_angle(name);
+    const analysis::LoadCase load_case = calculator_->load_case(name, point, ContactOptions{});
     const std::string coupling_name = calculator_->coupling_name(name);
     return {200, fmt::format(
                      "{{\"jam_angle\":{},\"moments\":{},\"contact\":{}}}",

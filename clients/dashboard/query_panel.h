@@ -1,5 +1,5 @@
 // The dashboard's query panel: jam angle, tooth contact and induced moments of a coupling at an
-// operating point, answered by gearcoupling-service through the CLI's RemoteCalculator, so the
+// operating point, answered by gearcoupling-service through gc_calculators' RemoteCalculator, so the
 // numbers are exactly `gearcoupling jam-angle|moments|contact --remote --json`'s. The only part
 // of the dashboard that writes to DDS (requests).
 #pragma once
@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "clients/cli/remote_calculator.h"
+#include "calculators/remote_calculator.h"
 
 namespace gc::dashboard {
 
@@ -42,7 +42,7 @@ class QueryPanel {
  private:
   JsonAnswer compute(const std::map<std::string, std::string>& parameters) const;
 
-  std::unique_ptr<cli::RemoteCalculator> calculator_;  ///< null when security refused it
+  std::unique_ptr<calculators::RemoteCalculator> calculator_;  ///< null when security refused it
   std::string refusal_;                                ///< why, when it did
 };
 

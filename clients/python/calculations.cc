@@ -20,14 +20,14 @@ struct LoadCaseArguments {
   ContactOptions options;
 };
 
-LoadCaseArguments load_case_arguments(py::handle coupling, double torque_nm, double misalignment_rad,
+LoadCaseArguments load_case_arguments(const CouplingArgument& coupling, double torque_nm, double misalignment_rad,
                                       double direction_rad, double mu, int slices, double tolerance,
                                       int max_iterations) {
   return {coupling_argument(coupling), {torque_nm, misalignment_rad, direction_rad, mu},
           contact_options(slices, tolerance, max_iterations)};
 }
 
-py::object tooth_contact(py::handle coupling, double torque_nm, double misalignment_rad,
+ToothContactResultObject tooth_contact(const CouplingArgument& coupling, double torque_nm, double misalignment_rad,
                          double direction_rad, double mu, int slices, double tolerance,
                          int max_iterations) {
   const LoadCaseArguments a = load_case_arguments(coupling, torque_nm, misalignment_rad, direction_rad,
@@ -40,7 +40,7 @@ py::object tooth_contact(py::handle coupling, double torque_nm, double misalignm
   return tooth_contact_result(a.coupling->geometry->name(), a.point, contact);
 }
 
-py::object induced_moments(py::handle coupling, double torque_nm, double misalignment_rad,
+InducedMomentsResultObject induced_moments(const CouplingArgument& coupling, double torque_nm, double misalignment_rad,
                            double direction_rad, double mu, int slices, double tolerance,
                            int max_iterations) {
   const LoadCaseArguments a = load_case_arguments(coupling, torque_nm, misalignment_rad, direction_rad,
@@ -56,18 +56,18 @@ py::object induced_moments(py::handle coupling, double torque_nm, double misalig
   return induced_moments_result(geometry.name(), a.point, contact, moments);
 }
 
-py::object jam_angle(py::handle coupling) {
+JamAngleResultObject jam_angle(const CouplingArgument& coupling) {
   const auto c = coupling_argument(coupling);
   const CouplingGeometry& g = *c->geometry;
   return jam_angle_result(g.name(), g.jam_angle(), g.crown_radius_m(), g.crown_radius_derived());
 }
 
-py::object restoring_torque(py::handle coupling) {
+RestoringTorqueResultObject restoring_torque(const CouplingArgument& coupling) {
   const auto c = coupling_argument(coupling);
   return restoring_torque_result(c->geometry->name(), gc::restoring_torque(*c->geometry));
 }
 
-py::object estimate_friction(py::handle coupling, double torque_nm, double misalignment_rad,
+FrictionEstimateResultObject estimate_friction(const CouplingArgument& coupling, double torque_nm, double misalignment_rad,
                              double direction_rad, double sensor_moment_y_nm,
                              double sensor_moment_z_nm) {
   const auto c = coupling_argument(coupling);

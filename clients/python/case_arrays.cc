@@ -2,7 +2,9 @@
 // contiguous share (parallel/thread_parallel_for.h), results written straight into numpy arrays.
 #include "clients/python/case_arrays.h"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "clients/python/bindings.h"
 #include "clients/python/coupling_argument.h"
@@ -18,25 +20,68 @@ namespace gc::python {
 
 // ---- inputs -----------------------------------------------------------------------------------
 
-CaseInputs::CaseInputs(const std::vector<const char*>& names, const std::vector<py::handle>& values) {
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values[k]);
-    if (!array || array.ndim() > 1) {
-      throw InvalidInput(names[k], "must be a number or a 1-D array of numbers");
-    }
-    const std::size_t length = array.ndim() == 0 ? 1 : static_cast<std::size_t>(array.shape(0));
-    if (length == 0) throw InvalidInput(names[k], "is empty: no load cases");
-    if (length != 1) {
-      if (size_ != 1 && length != size_) {
-        throw InvalidInput(names[k], "has " + std::to_string(length) + " cases, the other arrays " +
-                                         std::to_string(size_));
-      }
-      size_ = length;
-    }
-    data_.push_back(array.data());
-    lengths_.push_back(length);
-    arrays_.push_back(std::move(array));
+namespace {
+
+std::string shape_text(const std::vector<py::ssize_t>& shape) {
+  std::string text = "(";
+  for (std::size_t d = 0; d < shape.size(); ++d) {
+    text += std::to_string(shape[d]) + (shape.size() == 1 ? "," : d + 1 < shape.size() ? ", " : "");
   }
+  return text + ")";
+}
+
+py::tuple shape_tuple(const std::vector<py::ssize_t>& shape) {
+  py::tuple out(shape.size());
+  for (std::size_t d = 0; d < shape.size(); ++d) out[d] = shape[d];
+  return out;
+}
+
+}  // namespace
+
+CaseInputs::CaseInputs(const std::vector<const char*>& names, const std::vector<py::handle>& values)
+    : names_(names) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  std::vector<Array> given;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    Array array = Array::ensure(values[k]);
+    if (!array) {
+      PyErr_Clear();
+      throw InvalidInput(names[k], "must be a number or an array of numbers");
+    }
+    if (array.size() == 0) throw InvalidInput(names[k], "is empty: no load cases");
+    // numpy's rule: align the last axes; each pair equal, or one of them 1.
+    std::vector<py::ssize_t> shape(array.shape(), array.shape() + array.ndim());
+    std::vector<py::ssize_t> merged(std::max(shape.size(), shape_.size()), 1);
+    for (std::size_t d = 0; d < merged.size(); ++d) {
+      const std::size_t from_end = merged.size() - 1 - d;
+      const py::ssize_t a = from_end < shape_.size() ? shape_[shape_.size() - 1 - from_end] : 1;
+      const py::ssize_t b = from_end < shape.size() ? shape[shape.size() - 1 - from_end] : 1;
+      if (a != b && a != 1 && b != 1) {
+        throw InvalidInput(names[k], "has shape " + shape_text(shape) +
+                                         ", which does not broadcast with the shape " +
+                                         shape_text(shape_) +
+                                         " of the arguments before it (numpy's broadcasting rules)");
+      }
+      merged[d] = a == 1 ? b : a;
+    }
+    shape_ = std::move(merged);
+    given.push_back(std::move(array));
+  }
+  size_ = 1;
+  for (py::ssize_t n : shape_) size_ *= static_cast<std::size_t>(n);
+  // Each input at the full shape, C-contiguous: a view where it already is, else a copy.
+  const py::object broadcast_to = py::module_::import("numpy").attr("broadcast_to");
+  for (Array& array : given) {
+    Array full = Array::ensure(broadcast_to(array, shape_tuple(shape_)));
+    data_.push_back(full.data());
+    arrays_.push_back(std::move(full));
+  }
+}
+
+py::dict CaseInputs::arrays() const {
+  py::dict out;
+  for (std::size_t k = 0; k < arrays_.size(); ++k) out[names_[k]] = arrays_[k];
+  return out;
 }
 
 // ---- columns ----------------------------------------------------------------------------------
@@ -102,14 +147,20 @@ FailedCases failed_cases_argument(const std::string& errors) {
 // ---- outputs ----------------------------------------------------------------------------------
 
 template <typename Result>
-CaseArrays<Result>::CaseArrays(const std::vector<Column<Result>>& columns, std::size_t count)
-    : columns_(columns), errors_(count) {
-  const auto n = static_cast<py::ssize_t>(count);
+CaseArrays<Result>::CaseArrays(const std::vector<Column<Result>>& columns, const CaseInputs& inputs,
+                               FailedCases failed)
+    : columns_(columns), inputs_(inputs), failed_(failed), errors_(inputs.size()) {
+  const std::vector<py::ssize_t>& shape = inputs.shape();
   for (const Column<Result>& column : columns_) {
-    switch (column.kind) {
-      case Kind<Result>::real: arrays_.push_back(py::array_t<double>(n)); break;
-      case Kind<Result>::integer: arrays_.push_back(py::array_t<std::int32_t>(n)); break;
-      case Kind<Result>::flag: arrays_.push_back(py::array_t<bool>(n)); break;
+    // Under "mask" an integer column holds NaN for a failed case, so it is float64.
+    const bool real = column.kind == Kind<Result>::real ||
+                      (column.kind == Kind<Result>::integer && failed_ == FailedCases::mask);
+    if (real) {
+      arrays_.push_back(py::array_t<double>(shape));
+    } else if (column.kind == Kind<Result>::integer) {
+      arrays_.push_back(py::array_t<std::int32_t>(shape));
+    } else {
+      arrays_.push_back(py::array_t<bool>(shape));
     }
     data_.push_back(arrays_.back().mutable_data());
   }
@@ -121,15 +172,21 @@ void CaseArrays<Result>::set(std::size_t i, const Result& result) {
     const double value = columns_[k].value(result);
     switch (columns_[k].kind) {
       case Kind<Result>::real: static_cast<double*>(data_[k])[i] = value; break;
-      case Kind<Result>::integer: static_cast<std::int32_t*>(data_[k])[i] = static_cast<std::int32_t>(value); break;
+      case Kind<Result>::integer:
+        if (failed_ == FailedCases::mask) {
+          static_cast<double*>(data_[k])[i] = value;
+        } else {
+          static_cast<std::int32_t*>(data_[k])[i] = static_cast<std::int32_t>(value);
+        }
+        break;
       case Kind<Result>::flag: static_cast<bool*>(data_[k])[i] = value != 0.0; break;
     }
   }
 }
 
 template <typename Result>
-py::dict CaseArrays<Result>::finish(FailedCases failed) {
-  if (failed == FailedCases::raise) {
+CaseTableObject CaseArrays<Result>::finish() {
+  if (failed_ == FailedCases::raise) {
     for (std::size_t i = 0; i < errors_.size(); ++i) {
       if (errors_[i]) {
         set_python_error(errors_[i], i);
@@ -139,17 +196,20 @@ py::dict CaseArrays<Result>::finish(FailedCases failed) {
   }
   py::dict out;
   for (std::size_t k = 0; k < columns_.size(); ++k) out[columns_[k].name] = arrays_[k];
-  if (failed == FailedCases::mask) {
-    py::array_t<bool> ok(static_cast<py::ssize_t>(errors_.size()));
+  if (failed_ == FailedCases::mask) {
+    py::array_t<bool> ok(inputs_.shape());
     py::list messages;
     bool* flags = ok.mutable_data();
     for (std::size_t i = 0; i < errors_.size(); ++i) {
       flags[i] = !errors_[i];
       std::string message;
       if (errors_[i]) {
-        for (std::size_t k = 0; k < columns_.size(); ++k) {  // zeros, never stale numbers
-          const auto size = static_cast<std::size_t>(arrays_[k].itemsize());
-          std::memset(static_cast<char*>(data_[k]) + i * size, 0, size);
+        for (std::size_t k = 0; k < columns_.size(); ++k) {  // NaN (False for a flag), never stale
+          if (arrays_[k].dtype().kind() == 'b') {
+            static_cast<bool*>(data_[k])[i] = false;
+          } else {
+            static_cast<double*>(data_[k])[i] = std::numeric_limits<double>::quiet_NaN();
+          }
         }
         try {
           std::rethrow_exception(errors_[i]);
@@ -160,9 +220,9 @@ py::dict CaseArrays<Result>::finish(FailedCases failed) {
       messages.append(message);
     }
     out["ok"] = ok;
-    out["error"] = py::array(messages);
+    out["error"] = py::array(messages).attr("reshape")(shape_tuple(inputs_.shape()));
   }
-  return out;
+  return py::module_::import("gearcoupling._results").attr("CaseTable")(out, inputs_.arrays());
 }
 
 template class CaseArrays<ToothContact>;
@@ -176,9 +236,10 @@ namespace {
 // Runs `compute(i)` for every case on `threads` threads (0: all cores) with the GIL released;
 // a case that throws is recorded as failed, the others still run.
 template <typename Result, typename Compute>
-py::dict run_cases(const std::vector<Column<Result>>& columns, std::size_t count, unsigned threads,
-                   FailedCases failed, const Compute& compute) {
-  CaseArrays<Result> arrays(columns, count);
+CaseTableObject run_cases(const std::vector<Column<Result>>& columns, const CaseInputs& inputs,
+                          unsigned threads, FailedCases failed, const Compute& compute) {
+  CaseArrays<Result> arrays(columns, inputs, failed);
+  const std::size_t count = inputs.size();
   {
     py::gil_scoped_release release;
     thread_parallel_for(threads)(count, [&](std::size_t begin, std::size_t end) {
@@ -191,30 +252,33 @@ py::dict run_cases(const std::vector<Column<Result>>& columns, std::size_t count
       }
     });
   }
-  return arrays.finish(failed);
+  return arrays.finish();
 }
 
-py::dict tooth_contact_many(py::handle coupling, py::handle torque_nm, py::handle misalignment_rad,
-                            py::handle direction_rad, int slices, double tolerance,
+CaseTableObject tooth_contact_many(const CouplingArgument& coupling, const ArrayArgument& torque_nm,
+                                   const ArrayArgument& misalignment_rad,
+                                   const ArrayArgument& direction_rad, int slices, double tolerance,
                             int max_iterations, unsigned threads, const std::string& errors) {
   const auto c = coupling_argument(coupling);
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad"},
                       {torque_nm, misalignment_rad, direction_rad});
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
-  return run_cases(tooth_contact_columns(), in.size(), threads, failed_cases_argument(errors),
+  return run_cases(tooth_contact_columns(), in, threads, failed_cases_argument(errors),
                    [&](std::size_t i) {
                      return gc::tooth_contact(*c->geometry, {in(0, i), in(1, i), in(2, i), 0.0}, options);
                    });
 }
 
-py::dict induced_moments_many(py::handle coupling, py::handle torque_nm, py::handle misalignment_rad,
-                              py::handle direction_rad, py::handle mu, int slices, double tolerance,
+CaseTableObject induced_moments_many(const CouplingArgument& coupling, const ArrayArgument& torque_nm,
+                                     const ArrayArgument& misalignment_rad,
+                                     const ArrayArgument& direction_rad, const ArrayArgument& mu,
+                                     int slices, double tolerance,
                               int max_iterations, unsigned threads, const std::string& errors) {
   const auto c = coupling_argument(coupling);
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "mu"},
                       {torque_nm, misalignment_rad, direction_rad, mu});
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
-  return run_cases(load_case_columns(), in.size(), threads, failed_cases_argument(errors),
+  return run_cases(load_case_columns(), in, threads, failed_cases_argument(errors),
                    [&](std::size_t i) {
                      const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
                      LoadCase result{gc::tooth_contact(*c->geometry, point, options), {}};
@@ -223,14 +287,17 @@ py::dict induced_moments_many(py::handle coupling, py::handle torque_nm, py::han
                    });
 }
 
-py::dict estimate_friction_many(py::handle coupling, py::handle torque_nm, py::handle misalignment_rad,
-                                py::handle direction_rad, py::handle sensor_moment_y_nm,
-                                py::handle sensor_moment_z_nm, unsigned threads, const std::string& errors) {
+CaseTableObject estimate_friction_many(const CouplingArgument& coupling,
+                                       const ArrayArgument& torque_nm,
+                                       const ArrayArgument& misalignment_rad,
+                                       const ArrayArgument& direction_rad,
+                                       const ArrayArgument& sensor_moment_y_nm,
+                                       const ArrayArgument& sensor_moment_z_nm, unsigned threads, const std::string& errors) {
   const auto c = coupling_argument(coupling);
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "sensor_moment_y_nm",
                        "sensor_moment_z_nm"},
                       {torque_nm, misalignment_rad, direction_rad, sensor_moment_y_nm, sensor_moment_z_nm});
-  return run_cases(friction_estimate_columns(), in.size(), threads, failed_cases_argument(errors),
+  return run_cases(friction_estimate_columns(), in, threads, failed_cases_argument(errors),
                    [&](std::size_t i) {
                      return gc::estimate_friction(*c->geometry,
                                                   {in(0, i), in(1, i), in(2, i), in(3, i), in(4, i)});
@@ -244,28 +311,31 @@ void bind_case_arrays(py::module_& m) {
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(),
         GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise",
         "tooth_contact over many load cases on all cores (threads=0) with the GIL released. "
-        "torque_nm [N·m], misalignment_rad, direction_rad [rad]: 1-D arrays of one length, or "
-        "scalars for every case. Returns a dict of numpy arrays: q, iterations, teeth_in_contact, "
-        "max_tooth_load_n, total_normal_load_n, offset_alpha_rad, edge_loaded, contact_stress_pa, "
+        "torque_nm [N·m], misalignment_rad, direction_rad [rad]: numbers or numpy arrays of any "
+        "shape, broadcast together as numpy does (a scalar against an array, a column against a "
+        "row for a grid). Returns a CaseTable (a dict of numpy arrays of the broadcast shape; "
+        ".to_frame() for pandas): q, iterations, teeth_in_contact, max_tooth_load_n, "
+        "total_normal_load_n, offset_alpha_rad, edge_loaded, contact_stress_pa, "
         "bending_stress_pa, contact_safety_factor, bending_safety_factor. errors='raise': the "
-        "first failed case's exception, with .index; 'mask': also 'ok' and 'error' columns.");
+        "first failed case's exception, with .index (flat, C order); 'mask': also 'ok' and "
+        "'error' columns, NaN in a failed case's numbers.");
   m.def("induced_moments_many", &induced_moments_many, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
         GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("threads") = 0u, py::arg("errors") = "raise",
         "Contact and induced moments (eqs 5-48) over many load cases on all cores, as "
-        "gearcoupling batch: arrays or scalars of torque_nm [N·m], misalignment_rad, "
-        "direction_rad [rad], mu [-]. Returns a dict of numpy arrays: q, teeth_in_contact, "
-        "max_tooth_load_n, moment_y_dd_nm, moment_z_dd_nm, moment_y_nm, moment_z_nm, "
-        "sensor_moment_y_nm, sensor_moment_z_nm, magnitude_nm, moment_direction_rad, "
-        "contact_stress_pa, bending_stress_pa, contact_safety_factor, bending_safety_factor. "
-        "errors as tooth_contact_many.");
+        "gearcoupling batch: torque_nm [N·m], misalignment_rad, direction_rad [rad], mu [-], "
+        "broadcast together as numpy does. Returns a CaseTable of the broadcast shape: q, "
+        "teeth_in_contact, max_tooth_load_n, moment_y_dd_nm, moment_z_dd_nm, moment_y_nm, "
+        "moment_z_nm, sensor_moment_y_nm, sensor_moment_z_nm, magnitude_nm, "
+        "moment_direction_rad, contact_stress_pa, bending_stress_pa, contact_safety_factor, "
+        "bending_safety_factor. errors as tooth_contact_many.");
   m.def("estimate_friction_many", &estimate_friction_many, py::arg("coupling"), py::arg("torque_nm"),
         py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
         py::arg("sensor_moment_z_nm"), py::kw_only(), py::arg("threads") = 0u,
         py::arg("errors") = "raise",
-        "estimate_friction over many measurements on all cores: arrays or scalars. Returns a dict "
-        "of numpy arrays friction_coefficient [-] and moment_z_dd_nm [N·m]; errors as "
-        "tooth_contact_many.");
+        "estimate_friction over many measurements on all cores, the arguments broadcast together "
+        "as numpy does. Returns a CaseTable: friction_coefficient [-] and moment_z_dd_nm [N·m]; "
+        "errors as tooth_contact_many.");
 }
 
 }  // namespace gc::python

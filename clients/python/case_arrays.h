@@ -1,6 +1,6 @@
-// Vectorised calls: load cases as numpy arrays in, one numpy array per result column out (a dict
-// of column name -> array, names with their units as in the batch CSV, ready for
-// pandas.DataFrame). Shared by the in-process calls (case_arrays.cc) and the remote ones
+// Vectorised calls: load cases as numpy arrays in (broadcast together), one numpy array per
+// result column out, of the inputs' broadcast shape (a CaseTable: a dict of column name -> array,
+// names with their units as in the batch CSV, .to_frame() for pandas). Shared by the in-process calls (case_arrays.cc) and the remote ones
 // (remote_client.cc).
 #pragma once
 
@@ -14,27 +14,34 @@
 #include <pybind11/pybind11.h>
 
 #include "analysis/load_case.h"
+#include "clients/python/typed_objects.h"
 #include "core/friction_estimate.h"
 #include "core/tooth_contact.h"
 
 namespace gc::python {
 
-/// The inputs of a vectorised call: each a 1-D array or a scalar (used for every case); the
-/// arrays must have one length, the number of cases. Throws InvalidInput naming the argument.
+/// The inputs of a vectorised call, broadcast together by numpy's rules: each a number or an
+/// array of any shape; the shapes, aligned on their last axes, must agree where neither is 1.
+/// The cases are the broadcast shape's elements in C order. Throws InvalidInput naming the
+/// argument that does not broadcast, is empty, or is not numbers.
 class CaseInputs {
  public:
   /// `names` and `values` in the same order. Needs the GIL.
   CaseInputs(const std::vector<const char*>& names, const std::vector<pybind11::handle>& values);
+  /// Cases: the product of shape() (1 for numbers alone).
   std::size_t size() const { return size_; }
+  /// The broadcast shape: () for numbers alone, as numpy gives for scalars.
+  const std::vector<pybind11::ssize_t>& shape() const { return shape_; }
   /// Input `k` of case `i` (no GIL needed).
-  double operator()(std::size_t k, std::size_t i) const {
-    return lengths_[k] == 1 ? data_[k][0] : data_[k][i];
-  }
+  double operator()(std::size_t k, std::size_t i) const { return data_[k][i]; }
+  /// Every input broadcast to shape(), by name: the CaseTable's inputs. Needs the GIL.
+  pybind11::dict arrays() const;
 
  private:
+  std::vector<const char*> names_;
   std::vector<pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>> arrays_;
   std::vector<const double*> data_;
-  std::vector<std::size_t> lengths_;
+  std::vector<pybind11::ssize_t> shape_;
   std::size_t size_ = 1;
 };
 
@@ -56,24 +63,28 @@ const std::vector<Column<FrictionEstimate>>& friction_estimate_columns();
 
 /// What a vectorised call does with the cases that fail: "raise" the first (by case index) as
 /// its gearcoupling exception with .index, or "mask": return every case, with the columns
-/// "ok" (bool) and "error" (the message, "" where ok), and zeros in the failed cases' numbers.
+/// "ok" (bool) and "error" (the message, "" where ok), and NaN in the failed cases' numbers
+/// (integer columns are then float64, as pandas makes an integer column with missing values;
+/// flags are False where a case failed).
 enum class FailedCases { raise, mask };
 FailedCases failed_cases_argument(const std::string& errors);
 
-/// The output arrays of `count` cases, allocated with the GIL held and filled without it (each
-/// case by one thread), then handed to Python.
+/// The output arrays of the cases of `inputs` (its broadcast shape), allocated with the GIL
+/// held and filled without it (each case by one thread), then handed to Python as a CaseTable.
 template <typename Result>
 class CaseArrays {
  public:
-  CaseArrays(const std::vector<Column<Result>>& columns, std::size_t count);
+  CaseArrays(const std::vector<Column<Result>>& columns, const CaseInputs& inputs, FailedCases failed);
   void set(std::size_t i, const Result& result);
   void fail(std::size_t i, std::exception_ptr error) { errors_[i] = std::move(error); }
-  /// The dict of arrays; with FailedCases::raise, raises the first failed case's error instead.
-  /// Needs the GIL.
-  pybind11::dict finish(FailedCases failed);
+  /// gearcoupling.CaseTable: the columns as arrays of the inputs' shape, with the inputs; under
+  /// FailedCases::raise, raises the first failed case's error instead. Needs the GIL.
+  CaseTableObject finish();
 
  private:
   const std::vector<Column<Result>>& columns_;
+  const CaseInputs& inputs_;
+  FailedCases failed_;
   std::vector<pybind11::array> arrays_;
   std::vector<void*> data_;
   std::vector<std::exception_ptr> errors_;

@@ -6,8 +6,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "clients/cli/coupling_reference.h"
+#include "calculators/coupling_reference.h"
 #include "clients/python/bindings.h"
+#include "clients/python/typed_objects.h"
 #include "codec/coupling_catalog.h"
 #include "codec/coupling_file.h"
 #include "core/model_error.h"
@@ -68,7 +69,7 @@ std::shared_ptr<const Coupling> coupling_argument(py::handle argument) {
   }
   if (py::isinstance<py::str>(argument)) {
     const std::string text = argument.cast<std::string>();
-    if (cli::is_file_reference(text)) return from_definition(codec::load_coupling_file(text));
+    if (calculators::is_file_reference(text)) return from_definition(codec::load_coupling_file(text));
     return from_catalogue(text);
   }
   throw py::type_error("coupling: a gearcoupling.Coupling, a catalogue name, a coupling file or a dict, not " +
@@ -76,7 +77,7 @@ std::shared_ptr<const Coupling> coupling_argument(py::handle argument) {
 }
 
 RemoteCoupling remote_coupling_argument(py::handle argument) {
-  if (py::isinstance<py::str>(argument) && !cli::is_file_reference(argument.cast<std::string>())) {
+  if (py::isinstance<py::str>(argument) && !calculators::is_file_reference(argument.cast<std::string>())) {
     const std::string name = argument.cast<std::string>();
     return {name, nullptr, name};
   }
@@ -92,7 +93,7 @@ void bind_couplings(py::module_& m) {
       m, "Coupling",
       "A validated coupling: from the catalogue by name, from a coupling file, or from a dict with "
       "the coupling file's fields (idl/coupling.proto; angles in degrees as in the files).")
-      .def(py::init([](py::object argument) {
+      .def(py::init([](const CouplingArgument& argument) {
              return std::const_pointer_cast<Coupling>(coupling_argument(argument));
            }),
            py::arg("source"),
@@ -100,9 +101,9 @@ void bind_couplings(py::module_& m) {
       .def_property_readonly("name", [](const Coupling& c) { return c.geometry->name(); },
                              "The coupling's name (its definition's).")
       .def_property_readonly("catalogue_name",
-                             [](const Coupling& c) -> py::object {
-                               if (c.catalogue_name.empty()) return py::none();
-                               return py::str(c.catalogue_name);
+                             [](const Coupling& c) -> std::optional<std::string> {
+                               if (c.catalogue_name.empty()) return std::nullopt;
+                               return c.catalogue_name;
                              },
                              "The catalogue name it was loaded by; None for a file or a dict.")
       .def_property_readonly("teeth", [](const Coupling& c) { return c.geometry->teeth(); },

@@ -15,7 +15,9 @@
 #include "analysis/validation_report_html.h"
 #include "analysis/validation_result.h"
 #include "clients/python/bindings.h"
+#include "clients/python/typed_objects.h"
 #include "clients/python/model_argument.h"
+#include "clients/python/predictions.h"
 #include "clients/python/recording_argument.h"
 #include "clients/python/result_object.h"
 #include "codec/bundled_data.h"
@@ -30,7 +32,8 @@ unsigned threads_argument(unsigned threads) {
   return threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
 }
 
-py::object validate(py::handle recording_argument, py::handle model_argument_, const std::string& add,
+ValidationResultObject validate(const RecordingArgument& recording_argument,
+                                const ModelArgument& model_argument_, const std::string& add,
                     double reference_torque_nm, unsigned threads,
                     const std::optional<std::string>& columns,
                     const std::optional<std::filesystem::path>& html) {
@@ -48,10 +51,17 @@ py::object validate(py::handle recording_argument, py::handle model_argument_, c
       analysis::write_validation_report(*html, analysis::validation_report(validation->result, validation->runs));
     }
   }
-  return result_object("ValidationResult", validation->result);
+  py::object out = result_object("ValidationResult", validation->result);
+  // For samples(): the recording as given (read again, whole, when asked) and the models.
+  py::list models;
+  models.append(py::cast(model));
+  if (!add.empty()) models.append(py::cast(with_effect(model, add)));
+  out.attr("_sample_sources") = py::make_tuple(recording_argument, columns, models);
+  return out;
 }
 
-py::object diagnose(py::handle recording_argument, py::handle model_argument_,
+DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
+                               const ModelArgument& model_argument_,
                     const std::optional<std::filesystem::path>& write_model, unsigned threads,
                     const std::optional<std::string>& columns) {
   const Recording recording = read_recording(recording_argument, columns);
@@ -75,7 +85,12 @@ py::object diagnose(py::handle recording_argument, py::handle model_argument_,
     }
   }
   py::object out = result_object("DiagnosisResult", result);
-  out.attr("model") = Model{std::make_shared<const codec::ModelFile>(std::move(*diagnosed))};
+  const Model found{std::make_shared<const codec::ModelFile>(std::move(*diagnosed))};
+  out.attr("model") = found;
+  py::list models;
+  models.append(py::cast(model));
+  models.append(py::cast(found));
+  out.attr("_sample_sources") = py::make_tuple(py::cast(recording), py::none(), models);
   return out;
 }
 
@@ -91,12 +106,15 @@ void bind_measurement(py::module_& m) {
         py::arg("columns") = py::none(), py::arg("html") = py::none(),
         "gearcoupling validate: the recording (a file, a DataFrame or a Recording) against the model "
         "(a Model, a name, a file or a dict); with add, also the model with that effect. Returns a "
-        "ValidationResult (.to_dict() is validate --json). html: also write the HTML report there.");
+        "ValidationResult (.to_dict() is validate --json; .samples(model=0) the per-sample "
+        "predictions and residuals as a DataFrame, model 1 the one with the effect added). html: "
+        "also write the HTML report there.");
   m.def("diagnose", &diagnose, py::arg("recording"), py::arg("model"), py::kw_only(),
         py::arg("write_model") = py::none(), py::arg("threads") = 0u, py::arg("columns") = py::none(),
         "gearcoupling diagnose: which effects the model lacks. Returns a DiagnosisResult "
-        "(.to_dict() is diagnose --json) whose .model is the model with the effects found; "
-        "write_model: also write that model file there.");
+        "(.to_dict() is diagnose --json) whose .model is the model with the effects found and "
+        ".samples(model=0) the per-sample predictions and residuals as a DataFrame (model 0 the "
+        "model given, 1 the model found); write_model: also write that model file there.");
 }
 
 }  // namespace gc::python

@@ -21,6 +21,9 @@ struct Model {
 /// Throws gc::InvalidInput naming the field.
 Model model_argument(pybind11::handle argument);
 
+/// This model with one more effect (or that effect replaced): a spec as validate --add takes it.
+Model with_effect(const Model& model, const std::string& spec);
+
 /// The model as a model file that reads back to the same model.
 std::string model_text(const codec::ModelFile& file);
 

@@ -10,6 +10,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "clients/python/bindings.h"
+#include "clients/python/typed_objects.h"
 
 namespace py = pybind11;
 
@@ -120,7 +121,11 @@ void bind_recordings(py::module_& m) {
            "loading_direction (+1 rising, -1 falling, 0 still), msy_nm, msz_nm.")
       .def("__len__", [](const Recording& r) { return r.data->samples.size(); });
 
-  m.def("read_recording", &read_recording, py::arg("source"), py::kw_only(),
+  m.def("read_recording",
+        [](const RecordingArgument& source, const std::optional<std::string>& columns) {
+          return read_recording(source, columns);
+        },
+        py::arg("source"), py::kw_only(),
         py::arg("columns") = py::none(),
         "Reads a recording: a CSV file (docs/recordings.md) or a pandas DataFrame with its columns "
         "(<quantity>_<unit>, e.g. torque_nm, misalignment_deg, msy_knm). columns: renames as "

@@ -50,7 +50,7 @@ auto call(const Client& self, const typename protocol::CalculationTypes<kCalcula
 
 // ---- one case ---------------------------------------------------------------------------------
 
-py::object tooth_contact(const Client& self, py::handle coupling, double torque_nm,
+ToothContactResultObject tooth_contact(const Client& self, const CouplingArgument& coupling, double torque_nm,
                          double misalignment_rad, double direction_rad, double mu, int slices,
                          double tolerance, int max_iterations) {
   const RemoteCoupling c = remote_coupling_argument(coupling);
@@ -64,12 +64,14 @@ py::object tooth_contact(const Client& self, py::handle coupling, double torque_
 // from the same contact.
 analysis::LoadCase load_case(client::Client& client, const protocol::CouplingRef& ref,
                              const OperatingPoint& point, const ContactOptions& options) {
-  auto contact = client.call_async<Calculation::kToothContact>({ref, point, options});
-  auto moments = client.call_async<Calculation::kInducedMoments>({ref, point, options});
+  // One deadline for both: the second does not wait for a service again after the first gave up.
+  const auto deadline = client::Client::Clock::now() + client.options().timeout;
+  auto contact = client.call_async<Calculation::kToothContact>({ref, point, options}, deadline);
+  auto moments = client.call_async<Calculation::kInducedMoments>({ref, point, options}, deadline);
   return {contact.get(), moments.get()};
 }
 
-py::object induced_moments(const Client& self, py::handle coupling, double torque_nm,
+InducedMomentsResultObject induced_moments(const Client& self, const CouplingArgument& coupling, double torque_nm,
                            double misalignment_rad, double direction_rad, double mu, int slices,
                            double tolerance, int max_iterations) {
   const RemoteCoupling c = remote_coupling_argument(coupling);
@@ -83,18 +85,18 @@ py::object induced_moments(const Client& self, py::handle coupling, double torqu
   return induced_moments_result(c.name, point, result.contact, result.moments);
 }
 
-py::object jam_angle(const Client& self, py::handle coupling) {
+JamAngleResultObject jam_angle(const Client& self, const CouplingArgument& coupling) {
   const RemoteCoupling c = remote_coupling_argument(coupling);
   const protocol::JamAngleResult result = call<Calculation::kJamAngle>(self, {coupling_ref(c)});
   return jam_angle_result(c.name, result.jam, result.crown_radius_m, result.crown_radius_derived);
 }
 
-py::object restoring_torque(const Client& self, py::handle coupling) {
+RestoringTorqueResultObject restoring_torque(const Client& self, const CouplingArgument& coupling) {
   const RemoteCoupling c = remote_coupling_argument(coupling);
   return restoring_torque_result(c.name, call<Calculation::kRestoringTorque>(self, {coupling_ref(c)}));
 }
 
-py::object estimate_friction(const Client& self, py::handle coupling, double torque_nm,
+FrictionEstimateResultObject estimate_friction(const Client& self, const CouplingArgument& coupling, double torque_nm,
                              double misalignment_rad, double direction_rad,
                              double sensor_moment_y_nm, double sensor_moment_z_nm) {
   const RemoteCoupling c = remote_coupling_argument(coupling);
@@ -112,13 +114,14 @@ py::object estimate_friction(const Client& self, py::handle coupling, double tor
 // further case would wait the whole timeout too; the cases not sent fail with that Timeout. So
 // does every case when no instance takes `calculation` within the timeout to begin with.
 template <typename Result, typename Send>
-py::dict run_remote_cases(client::Client& client, Calculation calculation,
-                          const std::vector<Column<Result>>& columns, std::size_t count,
-                          std::size_t in_flight, FailedCases failed, const Send& send) {
+CaseTableObject run_remote_cases(client::Client& client, Calculation calculation,
+                                 const std::vector<Column<Result>>& columns, const CaseInputs& inputs,
+                                 std::size_t in_flight, FailedCases failed, const Send& send) {
   if (in_flight < 1 || in_flight > 100000) {
     throw InvalidInput("in_flight", static_cast<double>(in_flight), "[1, 100000]");
   }
-  CaseArrays<Result> arrays(columns, count);
+  CaseArrays<Result> arrays(columns, inputs, failed);
+  const std::size_t count = inputs.size();
   {
     py::gil_scoped_release release;
     using Pending = decltype(send(std::size_t{0}));
@@ -161,7 +164,7 @@ py::dict run_remote_cases(client::Client& client, Calculation calculation,
     while (!window.empty()) collect_oldest();
     for (; i < count; ++i) arrays.fail(i, timeout);
   }
-  return arrays.finish(failed);
+  return arrays.finish();
 }
 
 // A future's result, called once.
@@ -170,8 +173,10 @@ auto getter(std::future<T> future) {
   return [f = std::make_shared<std::future<T>>(std::move(future))] { return f->get(); };
 }
 
-py::dict tooth_contact_many(const Client& self, py::handle coupling, py::handle torque_nm,
-                            py::handle misalignment_rad, py::handle direction_rad, int slices,
+CaseTableObject tooth_contact_many(const Client& self, const CouplingArgument& coupling,
+                                   const ArrayArgument& torque_nm,
+                                   const ArrayArgument& misalignment_rad,
+                                   const ArrayArgument& direction_rad, int slices,
                             double tolerance, int max_iterations, std::size_t in_flight,
                             const std::string& errors) {
   const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
@@ -179,7 +184,7 @@ py::dict tooth_contact_many(const Client& self, py::handle coupling, py::handle 
                       {torque_nm, misalignment_rad, direction_rad});
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
   client::Client& client = *self.client;
-  return run_remote_cases(client, Calculation::kToothContact, tooth_contact_columns(), in.size(),
+  return run_remote_cases(client, Calculation::kToothContact, tooth_contact_columns(), in,
                           in_flight, failed_cases_argument(errors),
                           [&](std::size_t i) {
                             const OperatingPoint point{in(0, i), in(1, i), in(2, i), 0.0};
@@ -187,9 +192,11 @@ py::dict tooth_contact_many(const Client& self, py::handle coupling, py::handle 
                           });
 }
 
-py::dict induced_moments_many(const Client& self, py::handle coupling, py::handle torque_nm,
-                              py::handle misalignment_rad, py::handle direction_rad, py::handle mu,
-                              int slices, double tolerance, int max_iterations, std::size_t in_flight,
+CaseTableObject induced_moments_many(const Client& self, const CouplingArgument& coupling,
+                                     const ArrayArgument& torque_nm,
+                                     const ArrayArgument& misalignment_rad,
+                                     const ArrayArgument& direction_rad, const ArrayArgument& mu,
+                                     int slices, double tolerance, int max_iterations, std::size_t in_flight,
                               const std::string& errors) {
   const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "mu"},
@@ -197,7 +204,7 @@ py::dict induced_moments_many(const Client& self, py::handle coupling, py::handl
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
   client::Client& client = *self.client;
   return run_remote_cases(
-      client, Calculation::kInducedMoments, load_case_columns(), in.size(), in_flight,
+      client, Calculation::kInducedMoments, load_case_columns(), in, in_flight,
       failed_cases_argument(errors), [&](std::size_t i) {
         const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
         auto contact = getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
@@ -206,9 +213,12 @@ py::dict induced_moments_many(const Client& self, py::handle coupling, py::handl
       });
 }
 
-py::dict estimate_friction_many(const Client& self, py::handle coupling, py::handle torque_nm,
-                                py::handle misalignment_rad, py::handle direction_rad,
-                                py::handle sensor_moment_y_nm, py::handle sensor_moment_z_nm,
+CaseTableObject estimate_friction_many(const Client& self, const CouplingArgument& coupling,
+                                       const ArrayArgument& torque_nm,
+                                       const ArrayArgument& misalignment_rad,
+                                       const ArrayArgument& direction_rad,
+                                       const ArrayArgument& sensor_moment_y_nm,
+                                       const ArrayArgument& sensor_moment_z_nm,
                                 std::size_t in_flight, const std::string& errors) {
   const protocol::CouplingRef ref = coupling_ref(remote_coupling_argument(coupling));
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "sensor_moment_y_nm",
@@ -216,7 +226,7 @@ py::dict estimate_friction_many(const Client& self, py::handle coupling, py::han
                       {torque_nm, misalignment_rad, direction_rad, sensor_moment_y_nm, sensor_moment_z_nm});
   client::Client& client = *self.client;
   return run_remote_cases(client, Calculation::kFrictionEstimate, friction_estimate_columns(),
-                          in.size(), in_flight,
+                          in, in_flight,
                           failed_cases_argument(errors), [&](std::size_t i) {
                             const FrictionMeasurement m{in(0, i), in(1, i), in(2, i), in(3, i), in(4, i)};
                             return getter(client.call_async<Calculation::kFrictionEstimate>({ref, m}));

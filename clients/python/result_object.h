@@ -8,6 +8,8 @@
 #include <google/protobuf/message.h>
 #include <pybind11/pybind11.h>
 
+#include "clients/python/typed_objects.h"
+
 #include "core/friction_estimate.h"
 #include "core/induced_moments.h"
 #include "core/jam_angle.h"
@@ -16,20 +18,28 @@
 
 namespace gc::python {
 
-/// gearcoupling._results.<type_name>(codec::to_json(message)). Needs the GIL.
-pybind11::object result_object(const char* type_name, const google::protobuf::Message& message);
+/// gearcoupling._results.<type_name>(codec::to_json(message), radians). Needs the GIL.
+/// `radians`: the exact radians of the message's `_deg` fields, as a dict shaped like the
+/// message (`{"direction_rad": ..., "operating_point": {"misalignment_rad": ...}, "teeth":
+/// [{"angle_rad": ...}, ...]}`): each `X_deg` field then has an attribute `X_rad` with the value
+/// the core computed or was given, not one converted back from degrees.
+pybind11::object result_object(const char* type_name, const google::protobuf::Message& message,
+                               pybind11::dict radians = {});
 
 // One calculation's result object, from the core's result (in process or from the service).
-pybind11::object tooth_contact_result(const std::string& coupling, const OperatingPoint& point,
-                                      const ToothContact& contact);
-pybind11::object induced_moments_result(const std::string& coupling, const OperatingPoint& point,
-                                        const ToothContact& contact, const InducedMoments& moments);
-pybind11::object jam_angle_result(const std::string& coupling, const JamAngle& jam,
-                                  double crown_radius_m, bool crown_radius_derived);
-pybind11::object restoring_torque_result(const std::string& coupling, const RestoringTorque& torque);
-pybind11::object friction_estimate_result(const std::string& coupling,
-                                          const FrictionMeasurement& measurement,
-                                          const FrictionEstimate& estimate);
+ToothContactResultObject tooth_contact_result(const std::string& coupling, const OperatingPoint& point,
+                                              const ToothContact& contact);
+InducedMomentsResultObject induced_moments_result(const std::string& coupling,
+                                                  const OperatingPoint& point,
+                                                  const ToothContact& contact,
+                                                  const InducedMoments& moments);
+JamAngleResultObject jam_angle_result(const std::string& coupling, const JamAngle& jam,
+                                      double crown_radius_m, bool crown_radius_derived);
+RestoringTorqueResultObject restoring_torque_result(const std::string& coupling,
+                                                    const RestoringTorque& torque);
+FrictionEstimateResultObject friction_estimate_result(const std::string& coupling,
+                                                      const FrictionMeasurement& measurement,
+                                                      const FrictionEstimate& estimate);
 
 /// The contact options of every calculation that solves the tooth contact, from the keyword
 /// arguments (defaults: ContactOptions{}); the core checks their ranges and names the field.

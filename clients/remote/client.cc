@@ -11,20 +11,21 @@ Client::Client(ClientOptions options) : core_(std::make_unique<ClientCore>(std::
 Client::~Client() = default;
 
 template <Calculation kCalculation>
-void Client::call_then(const Request<kCalculation>& request, Callback<kCalculation> done) {
-  core_->call_then<kCalculation>(request, std::move(done));
+void Client::call_then(const Request<kCalculation>& request, Callback<kCalculation> done,
+                       Clock::time_point deadline) {
+  core_->call_then<kCalculation>(request, std::move(done), deadline);
 }
 
 template void Client::call_then<Calculation::kToothContact>(
-    const Request<Calculation::kToothContact>&, Callback<Calculation::kToothContact>);
+    const Request<Calculation::kToothContact>&, Callback<Calculation::kToothContact>, Clock::time_point);
 template void Client::call_then<Calculation::kJamAngle>(const Request<Calculation::kJamAngle>&,
-                                                        Callback<Calculation::kJamAngle>);
+                                                        Callback<Calculation::kJamAngle>, Clock::time_point);
 template void Client::call_then<Calculation::kInducedMoments>(
-    const Request<Calculation::kInducedMoments>&, Callback<Calculation::kInducedMoments>);
+    const Request<Calculation::kInducedMoments>&, Callback<Calculation::kInducedMoments>, Clock::time_point);
 template void Client::call_then<Calculation::kRestoringTorque>(
-    const Request<Calculation::kRestoringTorque>&, Callback<Calculation::kRestoringTorque>);
+    const Request<Calculation::kRestoringTorque>&, Callback<Calculation::kRestoringTorque>, Clock::time_point);
 template void Client::call_then<Calculation::kFrictionEstimate>(
-    const Request<Calculation::kFrictionEstimate>&, Callback<Calculation::kFrictionEstimate>);
+    const Request<Calculation::kFrictionEstimate>&, Callback<Calculation::kFrictionEstimate>, Clock::time_point);
 
 bool Client::wait_for_service(Calculation calculation, std::chrono::milliseconds timeout) {
   return core_->wait_for_service(calculation, timeout);

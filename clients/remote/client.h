@@ -83,11 +83,24 @@ class Client {
   /// been answered (an instance is ready, so that send does not wait for discovery).
   /// Defined in client.cc for the five calculations.
   template <protocol::Calculation kCalculation>
-  void call_then(const Request<kCalculation>& request, Callback<kCalculation> done);
+  void call_then(const Request<kCalculation>& request, Callback<kCalculation> done) {
+    call_then<kCalculation>(request, std::move(done), Clock::now() + options().timeout);
+  }
+  /// call_then with a deadline of the caller's instead of now + ClientOptions::timeout: several
+  /// calls that must all be answered by one time (a command's whole timeout) share it.
+  template <protocol::Calculation kCalculation>
+  void call_then(const Request<kCalculation>& request, Callback<kCalculation> done,
+                 Clock::time_point deadline);
 
   /// Sends `request` and returns at once; the future holds the result or the error.
   template <protocol::Calculation kCalculation>
   std::future<Result<kCalculation>> call_async(const Request<kCalculation>& request) {
+    return call_async<kCalculation>(request, Clock::now() + options().timeout);
+  }
+  /// call_async, failing with Timeout at `deadline`.
+  template <protocol::Calculation kCalculation>
+  std::future<Result<kCalculation>> call_async(const Request<kCalculation>& request,
+                                               Clock::time_point deadline) {
     auto promise = std::make_shared<std::promise<Result<kCalculation>>>();
     std::future<Result<kCalculation>> future = promise->get_future();
     call_then<kCalculation>(request, [promise](Outcome<Result<kCalculation>> outcome) {
@@ -96,7 +109,7 @@ class Client {
       } else {
         promise->set_value(std::move(*outcome.result));
       }
-    });
+    }, deadline);
     return future;
   }
 
@@ -106,6 +119,11 @@ class Client {
   template <protocol::Calculation kCalculation>
   Result<kCalculation> call(const Request<kCalculation>& request) {
     return call_async<kCalculation>(request).get();
+  }
+  /// call, failing with Timeout at `deadline`.
+  template <protocol::Calculation kCalculation>
+  Result<kCalculation> call(const Request<kCalculation>& request, Clock::time_point deadline) {
+    return call_async<kCalculation>(request, deadline).get();
   }
 
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.

@@ -307,11 +307,11 @@ void ClientCore::send(std::uint64_t sequence, Pending pending) {
           room ? fmt::format("{} request {}: no gearcoupling-service instance ready on domain {} "
                              "within {} ms ({} instance(s) discovered)",
                              protocol::to_string(pending.calculation), sequence, options_.domain,
-                             options_.timeout.count(), known)
+                             pending.timeout.count(), known)
                : fmt::format("{} request {}: not sent within {} ms: {} requests of this client "
                              "were in flight all that time, none answered",
                              protocol::to_string(pending.calculation), sequence,
-                             options_.timeout.count(), kMaxInFlight))));
+                             pending.timeout.count(), kMaxInFlight))));
       return;
     }
     // Woken by status samples, matching events (matching_changed()) and answers (room).
@@ -452,7 +452,7 @@ ClientCore::Clock::time_point ClientCore::maintain() {
             "{} request {} (client {}) to instance {}: no reply within {} ms",
             protocol::to_string(pending.calculation), it->first, protocol::hex_id(client_id_),
             pending.instance != 0 ? protocol::hex_id(pending.instance) : "(none left)",
-            options_.timeout.count());
+            pending.timeout.count());
         release_locked(pending);
         expired.emplace_back(std::move(pending), std::move(message));
         it = pending_.erase(it);

@@ -2,6 +2,7 @@
 // documentation): DDS entities, discovery, pending requests. Not installed.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -47,9 +48,10 @@ class ClientCore {
   /// timeout or ClientClosed, or before call_then returns when no instance was ready in time.
   /// It must not block or throw. It may send the next request of a calculation that has just
   /// been answered (an instance is ready, so that send does not wait for discovery).
+  /// `deadline`: when the call fails with Timeout if no reply has come (discovery included).
   template <protocol::Calculation kCalculation>
   void call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
-                 Callback<kCalculation> done);
+                 Callback<kCalculation> done, Clock::time_point deadline);
 
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.
   bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
@@ -136,6 +138,7 @@ struct ClientCore::Pending {
   protocol::Calculation calculation{};
   std::uint64_t instance = 0;  ///< where it was sent; 0 while waiting to be (re)sent
   Clock::time_point deadline;
+  std::chrono::milliseconds timeout{0};  ///< deadline - the call, for the Timeout's message
   Clock::time_point resend_at;  ///< when instance == 0: not before this
   bool deferred = false;        ///< not written yet: its last write found the window full
   std::function<dds_return_t(dds_entity_t writer)> write;
@@ -145,7 +148,7 @@ struct ClientCore::Pending {
 
 template <protocol::Calculation kCalculation>
 void ClientCore::call_then(const typename protocol::CalculationTraits<kCalculation>::Request& request,
-                       Callback<kCalculation> done) {
+                       Callback<kCalculation> done, Clock::time_point deadline) {
   using T = protocol::CalculationTraits<kCalculation>;
   using Result = typename T::Result;
   auto sample = std::make_shared<protocol::OwnedSample<typename T::WireRequest>>(T::request_type());
@@ -157,7 +160,9 @@ void ClientCore::call_then(const typename protocol::CalculationTraits<kCalculati
   auto callback = std::make_shared<Callback<kCalculation>>(std::move(done));
   Pending pending;
   pending.calculation = kCalculation;
-  pending.deadline = Clock::now() + options_.timeout;
+  pending.deadline = deadline;
+  pending.timeout = std::max(std::chrono::milliseconds(0),
+                             std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()));
   pending.write = [sample](dds_entity_t writer) { return dds_write(writer, &sample->get()); };
   pending.deliver = [callback](const void* wire) {
     const auto& reply = *static_cast<const typename T::WireReply*>(wire);

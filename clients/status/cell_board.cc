@@ -84,16 +84,18 @@ v1::Envelope CellBoard::Accumulator::envelope(std::uint64_t count) const {
 CellBoard::CellBoard(dds_entity_t participant, CellBoardOptions options)
     : options_(options),
       health_topic_(live::make_health_topic(participant)),
-      residual_topic_(live::make_residual_topic(participant)),
       subscriber_(live::make_live_subscriber(participant)) {
   health_reader_ = make_listening_reader<&CellBoard::take_health>(
       subscriber_.get(), health_topic_.get(), live::health_reader_qos(), this,
       "dds_create_reader(health)");
-  residual_reader_ = make_listening_reader<&CellBoard::take_residuals>(
-      subscriber_.get(), residual_topic_.get(), live::residual_qos(), this,
-      "dds_create_reader(residual)");
   take_health();
-  take_residuals();
+  if (options_.read_residuals) {
+    residual_topic_ = live::make_residual_topic(participant);
+    residual_reader_ = make_listening_reader<&CellBoard::take_residuals>(
+        subscriber_.get(), residual_topic_.get(), live::residual_qos(), this,
+        "dds_create_reader(residual)");
+    take_residuals();
+  }
 }
 
 void CellBoard::take_health() {
@@ -126,6 +128,7 @@ void CellBoard::take_health() {
       if (info.instance_state != DDS_IST_ALIVE) entry.last_heard = now;
     }
   });
+  health_arrived_.notify_all();
 }
 
 void CellBoard::take_residuals() {
@@ -166,6 +169,7 @@ const char* CellBoard::state_of(const Entry& entry, Clock::time_point now) const
 }
 
 CellBoard::Entry* CellBoard::admit(const std::string& cell, Clock::time_point now) {
+  if (!options_.only_cell.empty() && cell != options_.only_cell) return nullptr;
   const auto found = entries_.find(cell);
   if (found != entries_.end()) return &found->second;
   if (entries_.size() >= options_.max_cells) {
@@ -203,6 +207,39 @@ std::uint64_t CellBoard::refused() {
 std::size_t CellBoard::size() {
   std::lock_guard lock(mutex_);
   return entries_.size();
+}
+
+std::optional<v1::TestCellRecord> CellBoard::health_record_locked(const std::string& cell,
+                                                                 Clock::time_point now) const {
+  const auto found = entries_.find(cell);
+  if (found == entries_.end() || !found->second.has_health) return std::nullopt;
+  v1::TestCellRecord record = found->second.record;
+  record.set_state(state_of(found->second, now));
+  record.set_health_age_s(std::chrono::duration<double>(now - found->second.health_received).count());
+  return record;
+}
+
+std::optional<HealthView> CellBoard::latest(const std::string& test_cell) {
+  std::lock_guard lock(mutex_);
+  const auto record = health_record_locked(test_cell, Clock::now());
+  if (!record) return std::nullopt;
+  return health_view(*record);
+}
+
+std::optional<HealthView> CellBoard::wait_for(const std::string& test_cell,
+                                              const std::function<bool(const HealthView&)>& ready,
+                                              std::chrono::milliseconds timeout) {
+  const Clock::time_point deadline = Clock::now() + timeout;
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    const Clock::time_point now = Clock::now();
+    const auto record = health_record_locked(test_cell, now);
+    std::optional<HealthView> health;
+    if (record) health = health_view(*record);
+    if ((health && ready(*health)) || now >= deadline) return health;
+    // A state turns stale with time alone, so look again at least every 100 ms.
+    health_arrived_.wait_until(lock, std::min(deadline, now + std::chrono::milliseconds(100)));
+  }
 }
 
 std::vector<v1::TestCellRecord> CellBoard::snapshot() { return collect(false); }

@@ -1,19 +1,24 @@
 // The test cells of a domain as the live monitor reports them (gearcoupling/live/health and
 // .../residual, docs/protocol.md "The live test cell"): each cell's latest health with its
 // liveness, and its residuals aggregated per interval (min/max/mean per channel), never kept
-// sample by sample. What the dashboard, its /metrics and `gearcoupling status` read. Read-only.
+// sample by sample. The one reader of the health topic: what the dashboard, its /metrics,
+// `gearcoupling status` and `swap-model`, the live tests and benchmarks read (latest() and
+// wait_for() give one cell's health as a HealthView). Read-only.
 #pragma once
 
 #include <dds/dds.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "clients/status/health_view.h"
 #include "idl/live_status.pb.h"
 #include "protocol/dds_entity.h"
 
@@ -33,6 +38,13 @@ struct CellBoardOptions {
   /// cut at kMaxTextBytes, its aggregate, Cyclone's instances), ~650 B of each update's JSON and
   /// 1 to 1.8 kB of /metrics (docs/dashboard.md, "Bounds"): 64, a test hall, keep all small.
   std::size_t max_cells = 64;
+  /// Read the residual topic too (the aggregates of drain()). Off for a reader of the health
+  /// alone (swap-model under an operator identity, whose permissions grant the health topic
+  /// but not the residuals).
+  bool read_residuals = true;
+  /// Follow this test cell only, ignoring (not counting) every other; "": every cell. What a
+  /// reader of one cell's health sets, so that max_cells other cells cannot crowd it out.
+  std::string only_cell;
 };
 
 /// The longest text (model name, worst region, refusal) a cell keeps from a health sample [bytes];
@@ -59,6 +71,15 @@ class CellBoard {
   std::uint64_t refused();
   /// Cells on the board now.
   std::size_t size();
+
+  /// `test_cell`'s latest health with its state; nullopt before its first health sample.
+  std::optional<HealthView> latest(const std::string& test_cell);
+  /// Waits, woken by each health sample, until `ready` holds for test_cell's latest health or
+  /// `timeout` passes; returns the latest health either way (nullopt: none came). `ready` runs
+  /// under the board's lock: keep it to a test of the view.
+  std::optional<HealthView> wait_for(const std::string& test_cell,
+                                     const std::function<bool(const HealthView&)>& ready,
+                                     std::chrono::milliseconds timeout);
 
  private:
   /// Running min/max/sum of one quantity.
@@ -89,6 +110,9 @@ class CellBoard {
   void take_health();
   void take_residuals();
   std::vector<v1::TestCellRecord> collect(bool drain);
+  /// The record of `cell` as snapshot() gives it, if it has health. Call with mutex_ held.
+  std::optional<v1::TestCellRecord> health_record_locked(const std::string& cell,
+                                                         Clock::time_point now) const;
   /// "alive", "stale" or "gone".
   const char* state_of(const Entry& entry, Clock::time_point now) const;
   /// `cell`'s entry, made when new if there is room (or a gone or stale cell to drop for it);
@@ -99,6 +123,7 @@ class CellBoard {
 
   CellBoardOptions options_;
   std::mutex mutex_;
+  std::condition_variable health_arrived_;  // notified after each batch of health samples
   std::map<std::string, Entry> entries_;
   std::map<dds_instance_handle_t, std::string> health_handles_;   // of the cells on the board
   std::uint64_t refused_ = 0;

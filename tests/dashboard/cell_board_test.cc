@@ -142,5 +142,79 @@ TEST_F(CellBoardTest, HealthIsCopiedAndAStaleCellShowsStale) {
   EXPECT_FALSE(cell.has_previous_model());
 }
 
+/// A health sample of `cell` as the monitor writes it, `taken` samples so far.
+void write_health(dds_entity_t writer, const char* cell, std::uint64_t taken, const char* model) {
+  gearcoupling_CellHealth health{};
+  std::strncpy(health.test_cell, cell, 64);
+  health.model.model_name = const_cast<char*>(model);
+  health.worst_region = const_cast<char*>("");
+  health.last_refusal = const_cast<char*>("");
+  health.last_model_refusal = const_cast<char*>("");
+  health.counts.taken = taken;
+  ASSERT_EQ(dds_write(writer, &health), DDS_RETCODE_OK);
+}
+
+// Issue 24: the one reader of the health topic also serves swap-model and the live tests, which
+// wait for one cell's health to reach a state.
+TEST_F(CellBoardTest, WaitForReturnsOnceTheCellsHealthIsReady) {
+  CellBoard board(participant_.get());
+  wait_matched(health_writer_.get());
+  EXPECT_FALSE(board.latest("dyno-w").has_value());
+  std::thread writer([this] {
+    for (std::uint64_t taken = 100; taken <= 500; taken += 100) {
+      write_health(health_writer_.get(), "dyno-w", taken, "paper");
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  });
+  const auto start = Clock::now();
+  const auto health = board.wait_for(
+      "dyno-w", [](const HealthView& h) { return h.taken >= 300; }, std::chrono::seconds(10));
+  writer.join();
+  ASSERT_TRUE(health.has_value());
+  EXPECT_GE(health->taken, 300u);
+  EXPECT_EQ(health->model_name, "paper");
+  EXPECT_FALSE(health->stale);
+  EXPECT_FALSE(health->disposed);
+  EXPECT_LT(Clock::now() - start, std::chrono::seconds(5));
+  EXPECT_EQ(board.latest("dyno-w")->taken, 500u);
+}
+
+TEST_F(CellBoardTest, WaitForGivesUpAtItsTimeoutWithTheLatestHealth) {
+  CellBoard board(participant_.get());
+  wait_matched(health_writer_.get());
+  write_health(health_writer_.get(), "dyno-t", 7, "paper");
+  const auto start = Clock::now();
+  const auto health = board.wait_for(
+      "dyno-t", [](const HealthView& h) { return h.taken > 1000; }, std::chrono::milliseconds(400));
+  const auto waited = Clock::now() - start;
+  ASSERT_TRUE(health.has_value());
+  EXPECT_EQ(health->taken, 7u);
+  EXPECT_GE(waited, std::chrono::milliseconds(390));
+  EXPECT_LT(waited, std::chrono::seconds(2));
+}
+
+TEST_F(CellBoardTest, AReaderOfOneCellIgnoresTheOthersAndReadsNoResiduals) {
+  CellBoardOptions options;
+  options.only_cell = "mine";
+  options.max_cells = 1;
+  options.read_residuals = false;
+  CellBoard board(participant_.get(), options);
+  wait_matched(health_writer_.get());
+  write_health(health_writer_.get(), "other", 1, "paper");  // would take the only place
+  write_health(health_writer_.get(), "mine", 2, "paper");
+  const auto mine = board.wait_for("mine", [](const HealthView&) { return true; }, std::chrono::seconds(10));
+  ASSERT_TRUE(mine.has_value());
+  EXPECT_EQ(mine->taken, 2u);
+  EXPECT_FALSE(board.latest("other").has_value());
+  EXPECT_EQ(board.refused(), 0u);  // ignored, not refused
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  dds_publication_matched_status_t residual_readers{};
+  dds_get_publication_matched_status(residual_writer_.get(), &residual_readers);
+  EXPECT_EQ(residual_readers.current_count, 0u);  // no residual reader (an operator may not have one)
+  write_residuals("mine", {gearcoupling_Residual{}});
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  for (const auto& record : board.drain()) EXPECT_EQ(record.residuals_size(), 0);
+}
+
 }  // namespace
 }  // namespace gc::status

@@ -38,7 +38,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
 
   // 2. The health: every sample counted once, the error above the noise, at validate's region.
   const auto before = health_.wait_for(
-      cell, [](const live::HealthView& h) { return h.taken >= kRecordingSamples; }, 20s);
+      cell, [](const status::HealthView& h) { return h.taken >= kRecordingSamples; }, 20s);
   ASSERT_TRUE(before.has_value());
   EXPECT_EQ(before->taken, kRecordingSamples);
   EXPECT_EQ(before->evaluated, kRecordingSamples);
@@ -71,7 +71,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
   const auto swapped = health_.wait_for(
-      cell, [](const live::HealthView& h) { return h.model_name == "paper_diagnosed"; }, 10s);
+      cell, [](const status::HealthView& h) { return h.model_name == "paper_diagnosed"; }, 10s);
   ASSERT_TRUE(swapped.has_value());
   ASSERT_EQ(swapped->model_name, "paper_diagnosed") << swapped->last_model_refusal;
   ASSERT_TRUE(swapped->previous_model_name.has_value());
@@ -83,7 +83,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
       {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait-s", "20"}));
   ASSERT_EQ(again.exit_code, 0) << again.err;
   const auto after = health_.wait_for(
-      cell, [](const live::HealthView& h) { return h.taken >= 2 * kRecordingSamples; }, 20s);
+      cell, [](const status::HealthView& h) { return h.taken >= 2 * kRecordingSamples; }, 20s);
   ASSERT_TRUE(after.has_value());
   EXPECT_EQ(after->taken, 2 * kRecordingSamples);
   EXPECT_EQ(after->evaluated, 2 * kRecordingSamples);
@@ -108,7 +108,7 @@ TEST_F(LiveTest, SwapModelRefusesABadModelWithTheReasonAndKeepsTheModelInForce) 
   live::MeasurementPublisher publisher(participant_.get(), cell);
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   publish_stream(publisher, paper_samples(), 1, 1000.0);
-  ASSERT_TRUE(health_.wait_for(cell, [](const live::HealthView& h) { return h.taken == 1; }, 10s));
+  ASSERT_TRUE(health_.wait_for(cell, [](const status::HealthView& h) { return h.taken == 1; }, 10s));
   // Out of the effect's bounds: the monitor checks the text as validate --model checks a file.
   const std::string bad = temp_path("bad") + ".textproto";
   cli::testing::write_file(bad, "name: \"bad\" coupling: \"nrel_upwind\" effects { name: \"friction\" "

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "live/health_subscriber.h"
+#include "clients/status/cell_board.h"
 #include "live/live_topics.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/service_process.h"
@@ -40,7 +40,7 @@ inline std::vector<std::string> on_test_domain(std::vector<std::string> args) {
 class LiveTest : public ::testing::Test {
  protected:
   protocol::Entity participant_ = live::make_participant(test_domain());
-  live::HealthSubscriber health_{participant_.get()};
+  status::CellBoard health_{participant_.get()};
 };
 
 }  // namespace gc::test

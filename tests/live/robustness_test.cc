@@ -19,7 +19,7 @@ namespace {
 
 using namespace std::chrono_literals;
 using cli::testing::read_file;
-using live::HealthView;
+using status::HealthView;
 
 const std::string kPaperText = read_file(GC_SOURCE_DIR "/data/models/paper.textproto");
 

@@ -1,5 +1,8 @@
 // gearcoupling --remote prints exactly what gearcoupling prints in process, for every
 // subcommand, in tables and JSON, and for batch with N requests in flight.
+#include <csignal>
+#include <chrono>
+
 #include <gtest/gtest.h>
 
 #include "tests/cli/run_process.h"
@@ -9,6 +12,25 @@ namespace gc {
 namespace {
 
 using cli::testing::run_gearcoupling;
+
+/// The command's result and how long it took, start of the process to its exit [s].
+struct TimedRun {
+  cli::testing::ProcessResult result;
+  double seconds = 0.0;
+};
+
+TimedRun run_timed(const std::vector<std::string>& args) {
+  const auto start = std::chrono::steady_clock::now();
+  TimedRun run{run_gearcoupling(args)};
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+/// What a command may take beyond its --timeout-s: the process's start and DDS set-up and
+/// leaving the domain (0.1-0.3 s here), with room for a loaded host; less than one more
+/// timeout, which is what a second request waiting afresh costs.
+constexpr double kTimeoutMarginS = 1.2;
+constexpr double kTimeoutS = 2.0;
 
 std::vector<std::string> remote(std::vector<std::string> args) {
   args.insert(args.end(), {"--remote", "--domain", std::to_string(test::test_domain())});
@@ -68,6 +90,45 @@ TEST(RemoteCli, BatchWithRequestsInFlightPrintsWhatItPrintsInProcess) {
   EXPECT_EQ(over_dds.out, local.out);
   EXPECT_EQ(over_dds.err, local.err);
   EXPECT_GT(local.out.size(), 400u * 50u);
+}
+
+// Issue 24: `moments --remote --timeout-s 2` with no service took 4.0 s: its two requests each
+// waited 2 s for an instance. The timeout is the command's deadline.
+TEST(RemoteCli, TimeoutBoundsTheWholeCommandWhenNoServiceRuns) {
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"moments", "--torque-nm", "1.5e6", "--misalignment-deg", "0.3",
+                                 "--mu", "0.1"},
+        std::vector<std::string>{"jam-angle"}}) {
+    std::vector<std::string> args = remote(command);
+    args.insert(args.end(), {"--timeout-s", "2"});
+    const TimedRun run = run_timed(args);
+    SCOPED_TRACE(command.front());
+    EXPECT_EQ(run.result.exit_code, 1) << run.result.err;
+    EXPECT_NE(run.result.err.find("no gearcoupling-service instance ready"), std::string::npos)
+        << run.result.err;
+    EXPECT_NE(run.result.err.find("within 2000 ms"), std::string::npos) << run.result.err;
+    EXPECT_GE(run.seconds, kTimeoutS - 0.05);
+    EXPECT_LT(run.seconds, kTimeoutS + kTimeoutMarginS);
+  }
+}
+
+// A service that was found and then stops answering (SIGSTOP: alive to the OS, silent on DDS):
+// batch -j 1 sends its rows one after the other, two requests a row; every row after the
+// deadline fails at once instead of waiting a timeout of its own (before: 3 rows x 2 s).
+TEST(RemoteCli, TimeoutBoundsAWholeBatchOnAStoppedService) {
+  test::ServiceProcess service;
+  // Found and answering first, so the stop comes after discovery.
+  ASSERT_EQ(run_gearcoupling(remote({"jam-angle"})).exit_code, 0);
+  const std::string in = cli::testing::temp_path("stopped_batch_in");
+  cli::testing::write_file(in, "torque_nm,misalignment_deg,direction_deg,mu\n"
+                               "1.5e6,0.3,0,0.1\n2.0e6,0.2,0,0.1\n2.5e6,0.1,0,0.1\n");
+  service.signal(SIGSTOP);
+  const TimedRun run = run_timed(remote({"batch", "--in", in, "-j", "1", "--timeout-s", "2"}));
+  service.signal(SIGCONT);
+  EXPECT_EQ(run.result.exit_code, 1) << run.result.err;
+  EXPECT_NE(run.result.err.find("line 2:"), std::string::npos) << run.result.err;
+  EXPECT_NE(run.result.err.find("line 4:"), std::string::npos) << run.result.err;
+  EXPECT_LT(run.seconds, kTimeoutS + kTimeoutMarginS) << run.result.err;
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "live/health_subscriber.h"
+#include "clients/status/cell_board.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "live/model_swap_publisher.h"
@@ -35,6 +35,13 @@ constexpr const char* kRecording = GC_SOURCE_DIR "/data/recordings/hidden_eccent
 constexpr std::uint64_t kRecordingSamples = 1000;  // rows of that recording
 
 using TopicMaker = Entity (*)(dds_entity_t);
+
+/// A board of the health topic alone: what an operator identity may read.
+status::CellBoardOptions health_only() {
+  status::CellBoardOptions options;
+  options.read_residuals = false;
+  return options;
+}
 
 /// What creating a writer (or reader) of a live topic on `participant` gives: a positive handle
 /// when its permissions allow it, else Cyclone's refusal (DDS_RETCODE_NOT_ALLOWED_BY_SECURITY,
@@ -70,7 +77,7 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
   const auto monitor = start_monitor();
   const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
   const Entity dashboard = dashboard_domain.participant();
-  live::HealthSubscriber health(dashboard.get());
+  status::CellBoard health(dashboard.get(), health_only());
 
   const test::LocalDomain cell_domain(kCellDomain, cell_->uri("cell-c"));
   const Entity cell = cell_domain.participant();
@@ -82,7 +89,7 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
   EXPECT_EQ(replayed.published, kRecordingSamples);
 
   const auto seen = health.wait_for(
-      "secure-cell", [](const live::HealthView& h) { return h.taken >= kRecordingSamples; }, 30s);
+      "secure-cell", [](const status::HealthView& h) { return h.taken >= kRecordingSamples; }, 30s);
   ASSERT_TRUE(seen.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
   EXPECT_EQ(seen->taken, kRecordingSamples);
   EXPECT_EQ(seen->model_name, "paper");
@@ -91,12 +98,12 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
   const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
   const Entity op = operator_domain.participant();
   live::ModelSwapPublisher swaps(op.get());
-  live::HealthSubscriber operator_view(op.get());
+  status::CellBoard operator_view(op.get(), health_only());
   ASSERT_TRUE(swaps.wait_for_readers(1, 30s));
   swaps.publish("secure-cell", cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper.textproto"));
   EXPECT_TRUE(operator_view
                   .wait_for("secure-cell",
-                            [](const live::HealthView& h) { return h.previous_model_name.has_value(); },
+                            [](const status::HealthView& h) { return h.previous_model_name.has_value(); },
                             30s)
                   .has_value());
 }

@@ -20,13 +20,10 @@ def main(out_path: str) -> None:
     # Up to 90 % of the jam angle: beyond it the coupling jams (InvalidInput).
     misalignment_rad = np.linspace(0.0, 0.9 * coupling.jam_angle_rad, 12)
     direction_rad = np.radians([0.0, 45.0, 90.0])
-    grid = np.meshgrid(torque_nm, misalignment_rad, direction_rad, indexing="ij")
-    cases = pd.DataFrame({"torque_nm": grid[0].ravel(), "misalignment_rad": grid[1].ravel(),
-                          "direction_rad": grid[2].ravel(), "mu": 0.1})
-    results = gc.induced_moments_many(coupling, cases.torque_nm.to_numpy(),
-                                      cases.misalignment_rad.to_numpy(),
-                                      cases.direction_rad.to_numpy(), mu=cases.mu.to_numpy())
-    table = pd.concat([cases, pd.DataFrame(results)], axis=1)
+    # Broadcast as numpy does: torque down axis 0, misalignment along 1, direction along 2.
+    results = gc.induced_moments_many(coupling, torque_nm[:, None, None],
+                                      misalignment_rad[None, :, None], direction_rad, mu=0.1)
+    table = results.to_frame()  # one row per case: the inputs, then the results
     table.to_csv(out_path, index=False)
     worst = table.loc[table.magnitude_nm.idxmax()]
     print(f"{len(table)} load cases -> {out_path}")

@@ -29,6 +29,7 @@ from gearcoupling._gearcoupling import (  # noqa: F401
     validate,
 )
 from gearcoupling._results import (  # noqa: F401
+    CaseTable,
     DiagnosisResult,
     FrictionEstimateResult,
     InducedMomentsResult,
@@ -44,7 +45,7 @@ __all__ = [
     "tooth_contact", "induced_moments", "jam_angle", "restoring_torque", "estimate_friction",
     "tooth_contact_many", "induced_moments_many", "estimate_friction_many",
     "Model", "Recording", "bundled_data_dir", "read_recording", "validate", "diagnose",
-    "Result", "ToothContactResult", "InducedMomentsResult", "JamAngleResult",
+    "Result", "CaseTable", "ToothContactResult", "InducedMomentsResult", "JamAngleResult",
     "RestoringTorqueResult", "FrictionEstimateResult", "ValidationResult", "DiagnosisResult",
 ]
 

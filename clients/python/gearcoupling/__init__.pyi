@@ -1,5 +1,6 @@
 # Type stubs of the gearcoupling module (docs/python.md). SI units everywhere: N, m, N·m, rad,
-# Pa; the unit ends each name (_deg only in results, as the CLI's JSON prints them).
+# Pa; the unit ends each name (_deg in results as the CLI's JSON prints them, each with its _rad
+# attribute beside it).
 import os
 from typing import Any, Literal, Mapping, Sequence, Union
 
@@ -46,16 +47,31 @@ class Coupling:
     def jam_angle_rad(self) -> float: ...
 
 CouplingSource = Union[Coupling, str, os.PathLike[str], Mapping[str, Any]]
-ArrayLike = Union[float, Sequence[float], npt.NDArray[np.float64]]
+ArrayLike = Union[float, Sequence[float], Sequence[Sequence[float]], npt.NDArray[np.float64]]
 Errors = Literal["raise", "mask"]
-CaseArrays = dict[str, np.ndarray]
+
+class CaseTable(dict[str, np.ndarray]):
+    """A vectorised call's columns, each an array of the inputs' broadcast shape."""
+    inputs: dict[str, np.ndarray]
+    def __init__(self, columns: Mapping[str, np.ndarray],
+                 inputs: Mapping[str, np.ndarray] | None = None) -> None: ...
+    @property
+    def shape(self) -> tuple[int, ...]: ...
+    def to_frame(self) -> Any:  # pandas.DataFrame
+        """One row per case (C order): the inputs, then the columns."""
+
+CaseArrays = CaseTable
 
 class Result:
-    """A result message: fields as attributes (units in the names), .to_dict(), .to_json()."""
+    """A result message: fields as attributes (units in the names; X_rad beside every X_deg),
+    .to_dict(), .to_json(), .to_frame()."""
     def __getattr__(self, name: str) -> Any: ...
     def fields(self) -> list[str]: ...
     def to_dict(self) -> dict[str, Any]: ...
     def to_json(self) -> str: ...
+    def to_row(self) -> dict[str, Any]: ...
+    def to_frame(self, field: str | None = None) -> Any:  # pandas.DataFrame
+        ...
 
 class ToothContactResult(Result):
     coupling: str
@@ -65,6 +81,7 @@ class ToothContactResult(Result):
     elastic_deformation_m: float
     max_separation_m: float
     offset_alpha_deg: float
+    offset_alpha_rad: float
     max_contact_offset_m: float
     teeth_in_contact: int
     max_load_tooth: int
@@ -86,6 +103,7 @@ class InducedMomentsResult(Result):
     self_weight_moment_nm: float
     magnitude_nm: float
     direction_deg: float
+    direction_rad: float
     teeth_summed: int
 
 class JamAngleResult(Result):
@@ -94,7 +112,9 @@ class JamAngleResult(Result):
     angle_rad: float
     governing: str
     facewidth_deg: float
+    facewidth_rad: float
     radial_deg: float
+    radial_rad: float
     crown_radius_m: float
     crown_radius_derived: bool
 
@@ -109,11 +129,15 @@ class FrictionEstimateResult(Result):
 
 class ValidationResult(Result):
     recording: str
+    def samples(self, model: int | str = 0, threads: int = 0) -> Any:  # pandas.DataFrame
+        """Per sample: inputs, measured, predicted, residual (Model.predict's columns)."""
 
 class DiagnosisResult(Result):
     recording: str
     model: Model  # the model with the effects found (the JSON's "model" is its name)
     summary: str
+    def samples(self, model: int | str = 0, threads: int = 0) -> Any:  # pandas.DataFrame
+        """Per sample: inputs, measured, predicted, residual; model 0 given, 1 found."""
 
 def catalogue() -> list[str]:
     """The catalogue's coupling names ($GEARCOUPLING_CATALOG, else the bundled ones)."""
@@ -145,19 +169,19 @@ def estimate_friction(coupling: CouplingSource, torque_nm: float, misalignment_r
 def tooth_contact_many(coupling: CouplingSource, torque_nm: ArrayLike, misalignment_rad: ArrayLike,
                        direction_rad: ArrayLike = 0.0, *, slices: int = 20, tolerance: float = 1e-9,
                        max_iterations: int = 100, threads: int = 0,
-                       errors: Errors = "raise") -> CaseArrays:
+                       errors: Errors = "raise") -> CaseTable:
     """tooth_contact over many cases on all cores: a dict of numpy arrays."""
 
 def induced_moments_many(coupling: CouplingSource, torque_nm: ArrayLike, misalignment_rad: ArrayLike,
                          direction_rad: ArrayLike = 0.0, *, mu: ArrayLike, slices: int = 20,
                          tolerance: float = 1e-9, max_iterations: int = 100, threads: int = 0,
-                         errors: Errors = "raise") -> CaseArrays:
+                         errors: Errors = "raise") -> CaseTable:
     """Contact and moments (eqs 5-48) over many cases on all cores, as gearcoupling batch."""
 
 def estimate_friction_many(coupling: CouplingSource, torque_nm: ArrayLike, misalignment_rad: ArrayLike,
                            direction_rad: ArrayLike, sensor_moment_y_nm: ArrayLike,
                            sensor_moment_z_nm: ArrayLike, *, threads: int = 0,
-                           errors: Errors = "raise") -> CaseArrays:
+                           errors: Errors = "raise") -> CaseTable:
     """estimate_friction over many measurements on all cores."""
 
 class Model:
@@ -173,6 +197,9 @@ class Model:
     def effects(self) -> list[str]: ...
     def effect_parameters(self, name: str) -> dict[str, float]: ...
     def with_effect(self, spec: str) -> Model: ...
+    def predict(self, recording: RecordingSource, *, columns: str | None = None,
+                threads: int = 0) -> CaseTable:
+        """Every sample's prediction and residual (predicted - measured) [N·m]."""
     def to_text(self) -> str: ...
     def write(self, path: Union[str, os.PathLike[str]]) -> None: ...
 
@@ -220,15 +247,15 @@ class Client:
     def tooth_contact_many(self, coupling: CouplingSource, torque_nm: ArrayLike,
                            misalignment_rad: ArrayLike, direction_rad: ArrayLike = 0.0, *,
                            slices: int = 20, tolerance: float = 1e-9, max_iterations: int = 100,
-                           in_flight: int = 256, errors: Errors = "raise") -> CaseArrays: ...
+                           in_flight: int = 256, errors: Errors = "raise") -> CaseTable: ...
     def induced_moments_many(self, coupling: CouplingSource, torque_nm: ArrayLike,
                              misalignment_rad: ArrayLike, direction_rad: ArrayLike = 0.0, *,
                              mu: ArrayLike, slices: int = 20, tolerance: float = 1e-9,
                              max_iterations: int = 100, in_flight: int = 256,
-                             errors: Errors = "raise") -> CaseArrays: ...
+                             errors: Errors = "raise") -> CaseTable: ...
     def estimate_friction_many(self, coupling: CouplingSource, torque_nm: ArrayLike,
                                misalignment_rad: ArrayLike, direction_rad: ArrayLike,
                                sensor_moment_y_nm: ArrayLike, sensor_moment_z_nm: ArrayLike, *,
-                               in_flight: int = 256, errors: Errors = "raise") -> CaseArrays: ...
+                               in_flight: int = 256, errors: Errors = "raise") -> CaseTable: ...
     def wait_for_service(self, timeout: float) -> bool: ...
     def counters(self) -> dict[str, int]: ...

@@ -66,8 +66,8 @@ def test_vectorised_argument_errors():
     with pytest.raises(gc.InvalidInput) as error:
         gc.induced_moments_many("nrel_upwind", np.ones(3) * 1e6, np.zeros(4), mu=0.1)
     assert error.value.field == "misalignment_rad"
-    with pytest.raises(gc.InvalidInput) as error:
-        gc.induced_moments_many("nrel_upwind", np.ones((2, 2)), 0.0, mu=0.1)
+    with pytest.raises(gc.InvalidInput) as error:  # 2-D arrays broadcast (test_numpy_pandas.py)
+        gc.induced_moments_many("nrel_upwind", np.array(["a", "b"]), 0.0, mu=0.1)
     assert error.value.field == "torque_nm"
     with pytest.raises(gc.InvalidInput) as error:
         gc.induced_moments_many("nrel_upwind", 1e6, 0.0, mu=0.1, errors="ignore")

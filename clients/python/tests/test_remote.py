@@ -76,6 +76,18 @@ def test_many_equal_in_process(client):
         np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
 
 
+def test_many_broadcast_and_mask_as_in_process(client):
+    torque = np.linspace(3e5, 2.4e6, 4)[:, None]
+    zeta = np.array([rad(0.1), rad(0.3), rad(5.0)])  # the last beyond the jam angle
+    remote = client.induced_moments_many("nrel_upwind", torque, zeta, 0.0, mu=0.1, errors="mask")
+    local = gc.induced_moments_many("nrel_upwind", torque, zeta, 0.0, mu=0.1, errors="mask")
+    assert remote["q"].shape == (4, 3)
+    assert np.isnan(remote["magnitude_nm"][:, 2]).all()
+    for column in local:
+        np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
+    assert remote.to_frame().equals(local.to_frame())
+
+
 def test_remote_errors_are_the_core_errors(client):
     with pytest.raises(gc.InvalidInput) as error:
         client.induced_moments("nrel_upwind", 1e6, rad(5.0), mu=0.1)

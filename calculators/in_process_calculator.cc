@@ -1,10 +1,10 @@
-#include "clients/cli/in_process_calculator.h"
+#include "calculators/in_process_calculator.h"
 
-#include "clients/cli/coupling_reference.h"
+#include "calculators/coupling_reference.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 
-namespace gc::cli {
+namespace gc::calculators {
 namespace {
 
 template <typename Catalog>
@@ -78,4 +78,4 @@ FrictionEstimate InProcessCalculator::estimate_friction(
   return gc::estimate_friction(geometry(coupling), measurement);
 }
 
-}  // namespace gc::cli
+}  // namespace gc::calculators

@@ -8,10 +8,10 @@
 #include <mutex>
 #include <optional>
 
-#include "clients/cli/calculator.h"
+#include "calculators/calculator.h"
 #include "core/coupling_geometry.h"
 
-namespace gc::cli {
+namespace gc::calculators {
 
 class InProcessCalculator final : public Calculator {
  public:
@@ -40,4 +40,4 @@ class InProcessCalculator final : public Calculator {
   mutable Couplings files_;
 };
 
-}  // namespace gc::cli
+}  // namespace gc::calculators

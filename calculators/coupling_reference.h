@@ -4,10 +4,10 @@
 
 #include <string_view>
 
-namespace gc::cli {
+namespace gc::calculators {
 
 inline bool is_file_reference(std::string_view coupling) {
   return coupling.find('/') != std::string_view::npos || coupling.ends_with(".textproto");
 }
 
-}  // namespace gc::cli
+}  // namespace gc::calculators

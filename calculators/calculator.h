@@ -13,7 +13,7 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 
-namespace gc::cli {
+namespace gc::calculators {
 
 using analysis::LoadCase;
 
@@ -47,4 +47,4 @@ class Calculator {
                                              const FrictionMeasurement& measurement) const = 0;
 };
 
-}  // namespace gc::cli
+}  // namespace gc::calculators

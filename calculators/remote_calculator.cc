@@ -1,13 +1,25 @@
-#include "clients/cli/remote_calculator.h"
+#include "calculators/remote_calculator.h"
 
-#include "clients/cli/coupling_reference.h"
+#include <algorithm>
+
+#include "calculators/coupling_reference.h"
 #include "codec/coupling_file.h"
 
-namespace gc::cli {
+namespace gc::calculators {
 
 using protocol::Calculation;
 
-RemoteCalculator::RemoteCalculator(client::ClientOptions options) : client_(options) {}
+RemoteCalculator::RemoteCalculator(client::ClientOptions options, bool timeout_is_deadline)
+    : client_(options) {
+  // From here, not from before joining the domain: the first call then gets the whole timeout,
+  // and its Timeout says so.
+  if (timeout_is_deadline) command_deadline_ = Clock::now() + client_.options().timeout;
+}
+
+RemoteCalculator::Clock::time_point RemoteCalculator::call_deadline() const {
+  const Clock::time_point own = Clock::now() + client_.options().timeout;
+  return command_deadline_ ? std::min(own, *command_deadline_) : own;
+}
 
 protocol::CouplingRef RemoteCalculator::reference(std::string_view coupling) const {
   if (!is_file_reference(coupling)) return protocol::CatalogueName{std::string(coupling)};
@@ -29,31 +41,35 @@ std::string RemoteCalculator::coupling_name(std::string_view coupling) const {
 
 ToothContact RemoteCalculator::tooth_contact(std::string_view coupling, const OperatingPoint& point,
                                              const ContactOptions& options) const {
-  return client_.call<Calculation::kToothContact>({reference(coupling), point, options});
+  return client_.call<Calculation::kToothContact>({reference(coupling), point, options},
+                                                 call_deadline());
 }
 
 LoadCase RemoteCalculator::load_case(std::string_view coupling, const OperatingPoint& point,
                                      const ContactOptions& options) const {
   const protocol::CouplingRef ref = reference(coupling);
-  // Both requests in flight at once; the service computes the moments from the same contact.
-  auto contact = client_.call_async<Calculation::kToothContact>({ref, point, options});
-  auto moments = client_.call_async<Calculation::kInducedMoments>({ref, point, options});
+  // Both requests in flight at once, one deadline for both: the second does not wait for a
+  // service again after the first gave up.
+  const Clock::time_point deadline = call_deadline();
+  auto contact = client_.call_async<Calculation::kToothContact>({ref, point, options}, deadline);
+  auto moments = client_.call_async<Calculation::kInducedMoments>({ref, point, options}, deadline);
   return {contact.get(), moments.get()};
 }
 
 JamAngleReport RemoteCalculator::jam_angle(std::string_view coupling) const {
   const protocol::JamAngleResult result =
-      client_.call<Calculation::kJamAngle>({reference(coupling)});
+      client_.call<Calculation::kJamAngle>({reference(coupling)}, call_deadline());
   return {result.jam, result.crown_radius_m, result.crown_radius_derived};
 }
 
 RestoringTorque RemoteCalculator::restoring_torque(std::string_view coupling) const {
-  return client_.call<Calculation::kRestoringTorque>({reference(coupling)});
+  return client_.call<Calculation::kRestoringTorque>({reference(coupling)}, call_deadline());
 }
 
 FrictionEstimate RemoteCalculator::estimate_friction(
     std::string_view coupling, const FrictionMeasurement& measurement) const {
-  return client_.call<Calculation::kFrictionEstimate>({reference(coupling), measurement});
+  return client_.call<Calculation::kFrictionEstimate>({reference(coupling), measurement},
+                                                     call_deadline());
 }
 
-}  // namespace gc::cli
+}  // namespace gc::calculators

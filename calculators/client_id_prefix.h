@@ -1,12 +1,12 @@
 // --client-id-prefix HEX8 (or $GC_CLIENT_ID_PREFIX): under DDS Security, the client_id_prefix of
-// the process's client identity (docs/security.md). Shared by gearcoupling --remote and
-// gearcoupling-dashboard's query panel.
+// the process's client identity (docs/security.md). What a RemoteCalculator's client needs;
+// shared by gearcoupling --remote and gearcoupling-dashboard's query panel.
 #pragma once
 
 #include <cstdint>
 #include <string>
 
-namespace gc::cli {
+namespace gc::calculators {
 
 /// The environment variable that gives --client-id-prefix its default.
 inline constexpr const char* kClientIdPrefixEnv = "GC_CLIENT_ID_PREFIX";
@@ -19,8 +19,8 @@ inline constexpr const char* kClientIdPrefixHelp =
 /// $GC_CLIENT_ID_PREFIX, or "" when it is not set.
 std::string client_id_prefix_from_environment();
 
-/// "" (no security: 0) or 8 hexadecimal digits other than 00000000; UsageError naming the flag,
-/// the value and what is allowed otherwise.
+/// "" (no security: 0) or 8 hexadecimal digits other than 00000000; std::invalid_argument naming
+/// the flag, the value and what is allowed otherwise.
 std::uint32_t parse_client_id_prefix(const std::string& text);
 
-}  // namespace gc::cli
+}  // namespace gc::calculators
