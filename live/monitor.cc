@@ -59,7 +59,9 @@ Monitor::Monitor(const MonitorOptions& options)
       dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
       "dds_create_participant"));
   const dds_entity_t participant = participant_.get();
-  subscriber_ = make_live_subscriber(participant);
+  // Measurements and swaps: every test cell's own partition, and the shared one of older
+  // publishers (docs/protocol.md, "The live test cell").
+  subscriber_ = make_subscriber_in(participant, {kLivePartition, kEveryCellPartition});
   publisher_ = make_live_publisher(participant);
   measurement_topic_ = make_measurement_topic(participant);
   residual_topic_ = make_residual_topic(participant);
@@ -155,6 +157,25 @@ void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
   refusals_logged_at_ = now;
 }
 
+bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
+                                 const std::string& test_cell, const char* what) {
+  auto found = writer_partitions_.find(publication);
+  if (found == writer_partitions_.end()) {
+    if (writer_partitions_.size() >= 4096) writer_partitions_.clear();
+    found = writer_partitions_.emplace(publication, writer_partitions(reader, publication)).first;
+  }
+  if (partitions_speak_for(found->second, test_cell)) return true;
+  std::string partitions;
+  for (const std::string& p : found->second) partitions += (partitions.empty() ? "" : ", ") + p;
+  // Every refusal of a writer is logged once: its handle's entry stays until the map is emptied.
+  if (refused_foreign_++ < 10 || refused_foreign_ % 1000 == 0) {
+    spdlog::warn("{} for test cell {} refused ({} so far): its writer publishes in partition(s) "
+                 "[{}], not {}{} (a test cell's data comes only from its own partition)",
+                 what, test_cell, refused_foreign_, partitions, kCellPartitionPrefix, test_cell);
+  }
+  return false;
+}
+
 template <typename Map>
 bool Monitor::make_room(Map& kept, const std::string& test_cell) {
   if (kept.count(test_cell) > 0 || options_.cell_models.count(test_cell) > 0) return true;
@@ -202,6 +223,10 @@ void Monitor::take_models() {
         spdlog::warn("model swap refused: {}", error.what());
         continue;
       }
+      if (!from_own_partition(model_reader_.get(), swaps.info(i).publication_handle, test_cell,
+                              "model swap")) {
+        continue;
+      }
       if (!make_room(decimations_, test_cell) || !make_room(models_, test_cell) ||
           !make_room(model_refusals_, test_cell)) {
         continue;
@@ -241,6 +266,10 @@ void Monitor::take_measurements() {
       } catch (const InvalidInput& error) {
         spdlog::warn("measurement batch of {} samples refused: {}", batch.samples._length,
                      error.what());
+        continue;
+      }
+      if (!from_own_partition(measurement_reader_.get(), batches.info(i).publication_handle,
+                              test_cell, "measurement batch")) {
         continue;
       }
       Cell* followed = cell(test_cell);
