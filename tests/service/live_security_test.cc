@@ -2,7 +2,12 @@
 // gearcoupling-monitor with a monitor identity, a cell identity replaying measurements, an
 // operator identity swapping the model, a dashboard identity reading the health, and each
 // role refused what it does not need. Certificates made at test time by make-security.sh.
+#include <signal.h>
+
 #include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <thread>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -243,6 +248,76 @@ TEST_F(LiveRoles, ACellCannotPublishAnotherCellsMeasurementsNorAnOperatorSwapAnU
       },
       std::chrono::steady_clock::now() + 30s))
       << cli::testing::read_file(cell_->dir() + "/monitor.log");
+}
+
+// Issue 23, finding 5, for the monitor: a cell identity revoked while the monitor runs is cut off
+// by SIGHUP (a new participant reads the new CRL); a valid cell's measurements are taken again
+// after the interruption.
+TEST_F(LiveRoles, ARevokedCellIsCutOffBySighupToTheMonitorWhileAValidCellIsFollowedAgain) {
+  using Clock = std::chrono::steady_clock;
+  const auto monitor = start_monitor();
+  const test::LocalDomain c_domain(kCellDomain, cell_->uri("cell-c"));
+  const test::LocalDomain d_domain(227, cell_->uri("cell-d"));
+  const Entity c_participant = c_domain.participant();
+  const Entity d_participant = d_domain.participant();
+  const auto raw_writer = [](dds_entity_t participant, const std::string& test_cell,
+                             std::vector<Entity>& keep) {
+    keep.push_back(live::make_measurement_topic(participant));
+    const dds_entity_t topic = keep.back().get();
+    keep.push_back(live::make_cell_publisher(participant, test_cell));
+    const protocol::Qos qos = live::measurement_writer_qos();
+    keep.emplace_back(protocol::check_dds(
+        dds_create_writer(keep.back().get(), topic, qos.get(), nullptr), "writer"));
+    return keep.back().get();
+  };
+  std::vector<Entity> c_entities, d_entities;
+  const dds_entity_t c_writer = raw_writer(c_participant.get(), "c", c_entities);
+  const dds_entity_t d_writer = raw_writer(d_participant.get(), "d", d_entities);
+  ASSERT_TRUE(live::wait_for_readers(c_writer, 1, 30s));
+  ASSERT_TRUE(live::wait_for_readers(d_writer, 1, 30s));
+  std::uint64_t run = 100;
+  write_one_sample(c_writer, "c", ++run);
+  write_one_sample(d_writer, "d", ++run);
+  {
+    const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+    const Entity dashboard = dashboard_domain.participant();
+    live::HealthSubscriber health(dashboard.get());
+    const auto any = [](const live::HealthView&) { return true; };
+    ASSERT_TRUE(health.wait_for("c", any, 30s).has_value());
+    ASSERT_TRUE(health.wait_for("d", any, 30s).has_value());  // d is followed before
+  }
+
+  cell_->rerun("--revoke cell-d");
+  const Clock::time_point hup = Clock::now();
+  monitor->signal(SIGHUP);
+  // The old monitor's reader goes (bounded), then both cells keep publishing.
+  EXPECT_TRUE(protocol::wait_until([&] { return protocol::matched_reader_count(c_writer) == 0; },
+                                   hup + 10s));
+  std::atomic<bool> publishing{true};
+  std::thread publisher([&] {
+    for (int k = 0; k < 1500 && publishing; ++k) {  // 30 s at most
+      write_one_sample(c_writer, "c", 1000 + 2 * static_cast<std::uint64_t>(k));
+      write_one_sample(d_writer, "d", 1001 + 2 * static_cast<std::uint64_t>(k));
+      std::this_thread::sleep_for(20ms);
+    }
+  });
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  live::HealthSubscriber health(dashboard.get());
+  const auto taken = [](const live::HealthView& h) { return h.taken >= 1; };
+  const auto c_again = health.wait_for("c", taken, 30s);
+  const double interruption_s = std::chrono::duration<double>(Clock::now() - hup).count();
+  const auto d_again = health.wait_for("d", taken, 3s);
+  const std::uint32_t d_readers = protocol::matched_reader_count(d_writer);
+  publishing = false;
+  publisher.join();
+  std::printf("monitor SIGHUP: test cell c's health back after %.3f s; revoked cell-d: %s, its "
+              "writer matched by %u readers\n",
+              interruption_s, d_again ? "FOLLOWED" : "not followed", d_readers);
+  EXPECT_TRUE(c_again.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_FALSE(d_again.has_value()) << "the new monitor follows the revoked cell-d";
+  EXPECT_EQ(d_readers, 0u);
+  EXPECT_TRUE(monitor->running());
 }
 
 }  // namespace
