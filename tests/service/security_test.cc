@@ -324,6 +324,29 @@ TEST_F(SecurityScript, ABadArgumentIsRefusedNamingItsValueAndTheAllowedForm) {
             std::string::npos) << bad_days.output;
 }
 
+TEST_F(SecurityScript, AnOperatorNeedsItsTestCellsAndEachMustBeATestCellName) {
+  const std::string script = GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir();
+  const auto no_cells = test::run_shell(script + " --operator o");
+  EXPECT_EQ(no_cells.exit_code, 1);
+  EXPECT_NE(no_cells.output.find("--operator o: needs --cells CELL[,CELL]... after it"),
+            std::string::npos) << no_cells.output;
+  const auto pattern = test::run_shell(script + " --operator o --cells 'a,b*'");
+  EXPECT_EQ(pattern.exit_code, 1);
+  EXPECT_NE(pattern.output.find("--cells \"a,b*\": test cell \"b*\" not allowed; allowed "
+                                "CELL[,CELL]..., each 1-64 of A-Z a-z 0-9 . _ -"),
+            std::string::npos) << pattern.output;
+  const auto alone = test::run_shell(script + " --cells a");
+  EXPECT_EQ(alone.exit_code, 1);
+  EXPECT_NE(alone.output.find("--cells \"a\": allowed only after --operator NAME"),
+            std::string::npos) << alone.output;
+  // A good one: the grant names exactly the two cells' partitions.
+  ASSERT_EQ(test::run_shell(script + " --client a --client b --operator o --cells c,dyno.5").exit_code, 0);
+  const std::string grant = cli::testing::read_file(cell_->dir() + "/operator-o/permissions.xml");
+  EXPECT_NE(grant.find("<partition>gearcoupling.live.cell.c</partition>"
+                       "<partition>gearcoupling.live.cell.dyno.5</partition>"),
+            std::string::npos) << grant;
+}
+
 // ---- the secure service -------------------------------------------------------------------
 
 class SecureService : public SecurityScript {
