@@ -159,7 +159,9 @@ int main(int argc, char** argv) {
   std::uint64_t swaps_published = 0;
   std::thread swapper([&] {
     if (!swapping) return;
-    gc::live::ModelSwapPublisher swaps(participant.get());
+    std::vector<std::string> cell_names;
+    for (const Cell& cell : cell_list) cell_names.push_back(cell.name);
+    gc::live::ModelSwapPublisher swaps(participant.get(), cell_names);
     swaps.wait_for_readers(1, std::chrono::seconds(10));
     std::ifstream paper_file(GC_SOURCE_DIR "/data/models/paper.textproto");
     const std::string paper((std::istreambuf_iterator<char>(paper_file)), std::istreambuf_iterator<char>());

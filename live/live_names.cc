@@ -21,4 +21,16 @@ void require_test_cell_name(std::string_view name) {
   }
 }
 
+std::string cell_partition(std::string_view test_cell) {
+  require_test_cell_name(test_cell);
+  return kCellPartitionPrefix + std::string(test_cell);
+}
+
+bool partitions_speak_for(const std::vector<std::string>& writer_partitions,
+                          std::string_view test_cell) {
+  const std::string own = kCellPartitionPrefix + std::string(test_cell);
+  return std::any_of(writer_partitions.begin(), writer_partitions.end(),
+                     [&](const std::string& p) { return p == own || p == kLivePartition; });
+}
+
 }  // namespace gc::live

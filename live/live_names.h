@@ -1,7 +1,9 @@
 // Names of the live test-cell topics (docs/protocol.md, "The live test cell").
 #pragma once
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace gc::live {
 
@@ -9,7 +11,15 @@ inline constexpr const char* kMeasurementTopic = "gearcoupling/live/measurement"
 inline constexpr const char* kResidualTopic = "gearcoupling/live/residual";
 inline constexpr const char* kHealthTopic = "gearcoupling/live/health";
 inline constexpr const char* kModelTopic = "gearcoupling/live/model";
+/// Health and residuals; and measurements and model swaps of publishers older than per-cell
+/// partitions (still read in plain mode; under DDS Security no grant lets anyone publish them here).
 inline constexpr const char* kLivePartition = "gearcoupling.live";
+/// Measurements and model swaps of test cell CELL are published in partition
+/// kCellPartitionPrefix + CELL, so DDS Security can grant a cell identity, or an operator, its
+/// own test cells only (permissions restrict partitions, not key values; docs/security.md).
+inline constexpr const char* kCellPartitionPrefix = "gearcoupling.live.cell.";
+/// What the monitor's readers ask for: every test cell's partition.
+inline constexpr const char* kEveryCellPartition = "gearcoupling.live.cell.*";
 
 /// Most samples in one MeasurementBatch.
 inline constexpr std::size_t kMaxBatchSamples = 4096;
@@ -17,5 +27,14 @@ inline constexpr std::size_t kMaxBatchSamples = 4096;
 /// Throws InvalidInput naming "test_cell" unless `name` is 1 to 64 characters of
 /// [A-Za-z0-9._-] (it names a DDS instance, a file and a dashboard panel).
 void require_test_cell_name(std::string_view name);
+
+/// "gearcoupling.live.cell.<test_cell>" (test_cell checked as require_test_cell_name).
+std::string cell_partition(std::string_view test_cell);
+
+/// Whether a sample for `test_cell` may come from a writer in `writer_partitions`: its own cell's
+/// partition, or the shared kLivePartition of older publishers. A writer in another test cell's
+/// partition may not speak for this one.
+bool partitions_speak_for(const std::vector<std::string>& writer_partitions,
+                          std::string_view test_cell);
 
 }  // namespace gc::live

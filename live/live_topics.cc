@@ -1,5 +1,8 @@
 #include "live/live_topics.h"
 
+#include <string>
+#include <vector>
+
 #include "gearcoupling.h"
 #include "live/live_names.h"
 #include "live/live_qos.h"
@@ -50,6 +53,38 @@ Entity make_live_subscriber(dds_entity_t participant) {
   const protocol::Qos partition = protocol::partition_qos(kLivePartition);
   return Entity(check_dds(dds_create_subscriber(participant, partition.get(), nullptr),
                           "dds_create_subscriber(live)"));
+}
+
+Entity make_cell_publisher(dds_entity_t participant, const std::string& test_cell) {
+  const protocol::Qos partition = protocol::partition_qos(cell_partition(test_cell));
+  return Entity(check_dds(dds_create_publisher(participant, partition.get(), nullptr),
+                          "dds_create_publisher(live, a test cell's partition)"));
+}
+
+Entity make_subscriber_in(dds_entity_t participant, const std::vector<std::string>& partitions) {
+  const protocol::Qos qos;
+  std::vector<const char*> names;
+  for (const std::string& p : partitions) names.push_back(p.c_str());
+  dds_qset_partition(qos.get(), static_cast<uint32_t>(names.size()), names.data());
+  return Entity(check_dds(dds_create_subscriber(participant, qos.get(), nullptr),
+                          "dds_create_subscriber(live)"));
+}
+
+std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_handle_t publication) {
+  std::vector<std::string> out;
+  dds_builtintopic_endpoint_t* endpoint = dds_get_matched_publication_data(reader, publication);
+  if (endpoint == nullptr) return out;
+  uint32_t count = 0;
+  char** names = nullptr;
+  if (endpoint->qos != nullptr && dds_qget_partition(endpoint->qos, &count, &names)) {
+    for (uint32_t i = 0; i < count; ++i) {
+      out.emplace_back(names[i]);
+      dds_free(names[i]);
+    }
+    dds_free(names);
+  }
+  dds_builtintopic_free_endpoint(endpoint);
+  return out;
 }
 
 bool wait_for_readers(dds_entity_t writer, std::uint32_t readers, std::chrono::milliseconds timeout) {

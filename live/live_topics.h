@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "protocol/dds_entity.h"
 
@@ -22,6 +24,16 @@ protocol::Entity make_model_topic(dds_entity_t participant);
 /// A publisher / subscriber in the partition "gearcoupling.live".
 protocol::Entity make_live_publisher(dds_entity_t participant);
 protocol::Entity make_live_subscriber(dds_entity_t participant);
+/// A publisher in test cell `test_cell`'s own partition (cell_partition): its measurements and
+/// model swaps.
+protocol::Entity make_cell_publisher(dds_entity_t participant, const std::string& test_cell);
+/// A subscriber in `partitions` (e.g. kLivePartition and kEveryCellPartition).
+protocol::Entity make_subscriber_in(dds_entity_t participant,
+                                    const std::vector<std::string>& partitions);
+
+/// The partitions of `publication`, a writer matched with `reader` (a sample's
+/// publication_handle); empty when it is no longer matched.
+std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_handle_t publication);
 
 /// Waits until `writer` has at least `readers` matched readers (a sample written before a
 /// reader is matched is lost to it). Returns whether it had them within `timeout`.

@@ -14,7 +14,7 @@ using protocol::check_dds;
 MeasurementPublisher::MeasurementPublisher(dds_entity_t participant, const std::string& test_cell)
     : test_cell_(test_cell), run_id_(protocol::random_id()) {
   require_test_cell_name(test_cell);
-  publisher_ = make_live_publisher(participant);
+  publisher_ = make_cell_publisher(participant, test_cell);
   topic_ = make_measurement_topic(participant);
   const protocol::Qos qos = measurement_writer_qos();
   writer_ = protocol::Entity(check_dds(

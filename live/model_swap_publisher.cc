@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/model_error.h"
 #include "gearcoupling.h"
 #include "live/live_names.h"
 #include "live/live_qos.h"
@@ -9,27 +10,44 @@
 
 namespace gc::live {
 
-ModelSwapPublisher::ModelSwapPublisher(dds_entity_t participant)
-    : publisher_(make_live_publisher(participant)), topic_(make_model_topic(participant)) {
+ModelSwapPublisher::ModelSwapPublisher(dds_entity_t participant,
+                                       const std::vector<std::string>& test_cells)
+    : topic_(make_model_topic(participant)) {
   const protocol::Qos qos = model_qos();
-  writer_ = protocol::Entity(protocol::check_dds(
-      dds_create_writer(publisher_.get(), topic_.get(), qos.get(), nullptr),
-      "dds_create_writer(model)"));
+  for (const std::string& test_cell : test_cells) {
+    if (writers_.count(test_cell) != 0) continue;
+    CellWriter w;
+    w.publisher = make_cell_publisher(participant, test_cell);
+    w.writer = protocol::Entity(protocol::check_dds(
+        dds_create_writer(w.publisher.get(), topic_.get(), qos.get(), nullptr),
+        "dds_create_writer(model)"));
+    writers_.emplace(test_cell, std::move(w));
+  }
 }
 
 void ModelSwapPublisher::publish(const std::string& test_cell, const std::string& model_text,
                                  std::uint32_t residual_decimation) {
   require_test_cell_name(test_cell);
+  const auto found = writers_.find(test_cell);
+  if (found == writers_.end()) {
+    std::string known;
+    for (const auto& [name, w] : writers_) known += (known.empty() ? "" : ", ") + name;
+    throw InvalidInput("test_cell", "'" + test_cell + "' is not one of this publisher's test "
+                                    "cells (" + known + ")");
+  }
   gearcoupling_ModelSwap swap{};
   std::copy_n(test_cell.c_str(), test_cell.size() + 1, swap.test_cell);
   swap.model_text = const_cast<char*>(model_text.c_str());
   swap.residual_decimation = residual_decimation;
-  protocol::check_dds(dds_write(writer_.get(), &swap), "dds_write(model)");
+  protocol::check_dds(dds_write(found->second.writer.get(), &swap), "dds_write(model)");
 }
 
 bool ModelSwapPublisher::wait_for_readers(std::uint32_t readers,
                                           std::chrono::milliseconds timeout) const {
-  return live::wait_for_readers(writer_.get(), readers, timeout);
+  for (const auto& [test_cell, w] : writers_) {
+    if (!live::wait_for_readers(w.writer.get(), readers, timeout)) return false;
+  }
+  return true;
 }
 
 }  // namespace gc::live

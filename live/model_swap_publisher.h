@@ -6,7 +6,9 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "protocol/dds_entity.h"
 
@@ -14,15 +16,25 @@ namespace gc::live {
 
 class ModelSwapPublisher {
  public:
-  explicit ModelSwapPublisher(dds_entity_t participant);
-  /// Publishes `model_text` (empty: only the decimation) for `test_cell`; `residual_decimation`
-  /// 0 keeps the monitor's. Throws InvalidInput naming "test_cell" for a bad name.
+  /// One writer per test cell of `test_cells`, each in that cell's own partition
+  /// (cell_partition): under DDS Security an operator identity may create writers only for the
+  /// cells it is granted (creating another fails, NOT_ALLOWED_BY_SECURITY). Throws InvalidInput
+  /// naming "test_cell" for a bad name.
+  ModelSwapPublisher(dds_entity_t participant, const std::vector<std::string>& test_cells);
+  /// Publishes `model_text` (empty: only the decimation) for `test_cell`, one of the
+  /// constructor's; `residual_decimation` 0 keeps the monitor's. Throws InvalidInput naming
+  /// "test_cell" for a bad name or one not given to the constructor.
   void publish(const std::string& test_cell, const std::string& model_text,
                std::uint32_t residual_decimation = 0);
+  /// Waits until every cell's writer has at least `readers` matched readers.
   bool wait_for_readers(std::uint32_t readers, std::chrono::milliseconds timeout) const;
 
  private:
-  protocol::Entity publisher_, topic_, writer_;
+  struct CellWriter {
+    protocol::Entity publisher, writer;
+  };
+  protocol::Entity topic_;
+  std::map<std::string, CellWriter> writers_;
 };
 
 }  // namespace gc::live

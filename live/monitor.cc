@@ -29,11 +29,6 @@ struct Monitor::Cell {
 
 namespace {
 
-Entity make_reader(dds_entity_t subscriber, dds_entity_t topic, const protocol::Qos& qos,
-                   const char* what) {
-  return Entity(check_dds(dds_create_reader(subscriber, topic, qos.get(), nullptr), what));
-}
-
 Entity make_writer(dds_entity_t publisher, dds_entity_t topic, const protocol::Qos& qos,
                    const char* what) {
   return Entity(check_dds(dds_create_writer(publisher, topic, qos.get(), nullptr), what));
@@ -59,16 +54,31 @@ Monitor::Monitor(const MonitorOptions& options)
       dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
       "dds_create_participant"));
   const dds_entity_t participant = participant_.get();
-  subscriber_ = make_live_subscriber(participant);
+  // Measurements and swaps: every test cell's own partition, and the shared one of older
+  // publishers (docs/protocol.md, "The live test cell").
+  subscriber_ = make_subscriber_in(participant, {kLivePartition, kEveryCellPartition});
   publisher_ = make_live_publisher(participant);
   measurement_topic_ = make_measurement_topic(participant);
   residual_topic_ = make_residual_topic(participant);
   health_topic_ = make_health_topic(participant);
   model_topic_ = make_model_topic(participant);
-  measurement_reader_ = make_reader(subscriber_.get(), measurement_topic_.get(),
-                                    measurement_reader_qos(), "dds_create_reader(measurement)");
-  model_reader_ = make_reader(subscriber_.get(), model_topic_.get(), model_qos(),
-                              "dds_create_reader(model)");
+  // A writer's partitions are learnt as it matches (remember_writer), so the check of every
+  // sample's partition never depends on the writer still being there when the sample is taken.
+  dds_listener_t* listener = dds_create_listener(this);
+  dds_lset_subscription_matched(
+      listener, [](dds_entity_t reader, const dds_subscription_matched_status_t status, void* self) {
+        if (status.current_count_change > 0) {
+          static_cast<Monitor*>(self)->remember_writer(reader, status.last_publication_handle);
+        }
+      });
+  measurement_reader_ = Entity(check_dds(
+      dds_create_reader(subscriber_.get(), measurement_topic_.get(),
+                        measurement_reader_qos().get(), listener),
+      "dds_create_reader(measurement)"));
+  model_reader_ = Entity(check_dds(
+      dds_create_reader(subscriber_.get(), model_topic_.get(), model_qos().get(), listener),
+      "dds_create_reader(model)"));
+  dds_delete_listener(listener);
   residual_writer_ = make_writer(publisher_.get(), residual_topic_.get(), residual_qos(),
                                  "dds_create_writer(residual)");
   health_writer_ = make_writer(publisher_.get(), health_topic_.get(), health_writer_qos(),
@@ -81,6 +91,10 @@ Monitor::Monitor(const MonitorOptions& options)
 }
 
 Monitor::~Monitor() {
+  // No listener may run on members being destroyed (writer_partitions_ goes before the readers).
+  for (dds_entity_t reader : {measurement_reader_.get(), model_reader_.get()}) {
+    dds_set_listener(reader, nullptr);
+  }
   // Gracefully gone: every cell's health disposed, so dashboards drop them at once.
   for (const auto& [test_cell, cell] : cells_) dispose_health(health_writer_.get(), test_cell);
 }
@@ -155,6 +169,42 @@ void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
   refusals_logged_at_ = now;
 }
 
+void Monitor::remember_writer(dds_entity_t reader, dds_instance_handle_t publication) {
+  std::vector<std::string> partitions = writer_partitions(reader, publication);
+  if (partitions.empty()) return;  // gone already: its samples are refused
+  std::lock_guard lock(writer_partitions_mutex_);
+  if (writer_partitions_.size() >= 4096) writer_partitions_.clear();
+  writer_partitions_[publication] = std::move(partitions);
+}
+
+bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
+                                 const std::string& test_cell, const char* what) {
+  std::vector<std::string> partitions;
+  {
+    std::lock_guard lock(writer_partitions_mutex_);
+    const auto found = writer_partitions_.find(publication);
+    if (found != writer_partitions_.end()) partitions = found->second;
+  }
+  // Not learnt at its match (the map was emptied since): ask while it is still matched. A
+  // writer already gone has no known partition, and its sample is refused.
+  if (partitions.empty()) remember_writer(reader, publication);
+  if (partitions.empty()) {
+    std::lock_guard lock(writer_partitions_mutex_);
+    const auto found = writer_partitions_.find(publication);
+    if (found != writer_partitions_.end()) partitions = found->second;
+  }
+  if (partitions_speak_for(partitions, test_cell)) return true;
+  std::string shown;
+  for (const std::string& p : partitions) shown += (shown.empty() ? "" : ", ") + p;
+  // The first 10, then every 1000th: a writer speaking for another cell must not flood the log.
+  if (refused_foreign_++ < 10 || refused_foreign_ % 1000 == 0) {
+    spdlog::warn("{} for test cell {} refused ({} so far): its writer publishes in partition(s) "
+                 "[{}], not {}{} (a test cell's data comes only from its own partition)",
+                 what, test_cell, refused_foreign_, shown, kCellPartitionPrefix, test_cell);
+  }
+  return false;
+}
+
 template <typename Map>
 bool Monitor::make_room(Map& kept, const std::string& test_cell) {
   if (kept.count(test_cell) > 0 || options_.cell_models.count(test_cell) > 0) return true;
@@ -202,6 +252,10 @@ void Monitor::take_models() {
         spdlog::warn("model swap refused: {}", error.what());
         continue;
       }
+      if (!from_own_partition(model_reader_.get(), swaps.info(i).publication_handle, test_cell,
+                              "model swap")) {
+        continue;
+      }
       if (!make_room(decimations_, test_cell) || !make_room(models_, test_cell) ||
           !make_room(model_refusals_, test_cell)) {
         continue;
@@ -241,6 +295,10 @@ void Monitor::take_measurements() {
       } catch (const InvalidInput& error) {
         spdlog::warn("measurement batch of {} samples refused: {}", batch.samples._length,
                      error.what());
+        continue;
+      }
+      if (!from_own_partition(measurement_reader_.get(), batches.info(i).publication_handle,
+                              test_cell, "measurement batch")) {
         continue;
       }
       Cell* followed = cell(test_cell);

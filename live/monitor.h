@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <string>
+#include <vector>
 
 #include "live/cell_monitor.h"
 #include "protocol/dds_entity.h"
@@ -52,6 +54,9 @@ class Monitor {
   std::uint64_t monitor_id() const { return monitor_id_; }
   /// Measurement batches refused because max_cells test cells were followed.
   std::uint64_t refused_batches() const { return refused_batches_; }
+  /// Measurement batches and model swaps refused because their writer's partition is another
+  /// test cell's (a cell identity speaking for a cell it is not granted).
+  std::uint64_t refused_foreign() const { return refused_foreign_; }
 
  private:
   struct Cell;
@@ -62,6 +67,13 @@ class Monitor {
   /// not configured (counted and logged by refuse_cell).
   Cell* cell(const std::string& test_cell);
   void refuse_cell(const std::string& test_cell, std::size_t samples);
+  /// Whether the writer of a sample of `reader` (its publication_handle) may speak for
+  /// `test_cell` (partitions_speak_for); logs and counts a refusal (`what`: "measurement batch").
+  bool from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
+                          const std::string& test_cell, const char* what);
+  /// Subscription-matched listener: learns a writer's partitions while it is surely matched,
+  /// before its first sample is taken (it may be gone by then: a short run).
+  void remember_writer(dds_entity_t reader, dds_instance_handle_t publication);
   /// Makes room in `kept` (what swaps left, by test cell) for `test_cell`: at most
   /// 2 max_cells + the configured cells are kept, so once full what is kept for a cell neither
   /// followed nor configured is dropped (logged once). False only if there is none to drop.
@@ -90,6 +102,12 @@ class Monitor {
   std::atomic<bool> stopping_{false};
   std::uint64_t refused_batches_ = 0, refused_samples_ = 0, dropped_swaps_ = 0;
   std::uint64_t refused_batches_logged_ = 0;
+  std::uint64_t refused_foreign_ = 0;
+  /// Writers' partitions by publication handle (never reused by Cyclone): learnt when a writer
+  /// matches (remember_writer, in Cyclone's thread), so one DDS query per writer; emptied at
+  /// 4096 entries (then asked again while the writer is matched).
+  std::mutex writer_partitions_mutex_;
+  std::map<dds_instance_handle_t, std::vector<std::string>> writer_partitions_;
   std::chrono::steady_clock::time_point refusals_logged_at_{};
 };
 

@@ -19,7 +19,8 @@ using Clock = std::chrono::steady_clock;
 Capture capture_measurements(dds_entity_t participant, const RecordOptions& options) {
   require_test_cell_name(options.test_cell);
   require_in_range("record.seconds", options.seconds, 1e-3, 1e7);
-  protocol::Entity subscriber = make_live_subscriber(participant);
+  protocol::Entity subscriber =
+      make_subscriber_in(participant, {kLivePartition, cell_partition(options.test_cell)});
   protocol::Entity topic = make_measurement_topic(participant);
   const protocol::Qos qos = measurement_reader_qos();
   protocol::Entity reader(check_dds(dds_create_reader(subscriber.get(), topic.get(), qos.get(), nullptr),

@@ -1,5 +1,6 @@
 // gearcoupling-monitor: flags, logging and signals; live::Monitor does the rest
 // (docs/architecture.md, "The live test cell").
+#include <pthread.h>
 #include <signal.h>
 
 #include <CLI/CLI.hpp>
@@ -63,7 +64,10 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
 }  // namespace
 
 int main(int argc, char** argv) {
-  const sigset_t signals = gc::parallel::block_shutdown_signals();
+  sigset_t signals = gc::parallel::block_shutdown_signals();
+  // SIGHUP makes a new participant (a new CRL, docs/security.md); blocked like the others.
+  sigaddset(&signals, SIGHUP);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   spdlog::set_default_logger(spdlog::stderr_color_mt("gearcoupling-monitor"));
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
   spdlog::flush_on(spdlog::level::info);
@@ -79,17 +83,35 @@ int main(int argc, char** argv) {
   }
   spdlog::set_level(spdlog::level::from_str(log_level));
   try {
-    gc::live::Monitor monitor(options);
-    spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s",
-                 monitor.monitor_id(), options.domain, options.default_model, options.cell.window_s);
-    std::thread waiter([&] {
-      int signal = 0;
-      sigwait(&signals, &signal);
-      spdlog::info("signal {}: stopping", signal);
-      monitor.stop();
-    });
-    waiter.detach();
-    monitor.run();
+    // SIGHUP: a new Monitor, so a new participant. Its followed cells start afresh (health
+    // windows restart, as after a restart); model swaps come back from their publishers
+    // (TRANSIENT_LOCAL), models given by --cell and --model stay.
+    for (bool reload = true; reload;) {
+      reload = false;
+      gc::live::Monitor monitor(options);
+      spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s",
+                   monitor.monitor_id(), options.domain, options.default_model,
+                   options.cell.window_s);
+      std::thread waiter([&] {
+        int signal = 0;
+        sigwait(&signals, &signal);
+        if (signal == SIGHUP) {
+          spdlog::info("SIGHUP: making a new participant (the identity, the CRL and the "
+                       "permissions are read again)");
+          reload = true;
+        } else {
+          spdlog::info("signal {}: stopping", signal);
+        }
+        monitor.stop();
+      });
+      // If run() throws, the process ends at once: the waiter must not make that a terminate().
+      struct DetachIfThrown {
+        std::thread& thread;
+        ~DetachIfThrown() { if (thread.joinable()) thread.detach(); }
+      } guard{waiter};
+      monitor.run();
+      waiter.join();
+    }
     return 0;
   } catch (const gc::ModelError& e) {
     spdlog::error("{}", e.what());

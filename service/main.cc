@@ -2,6 +2,8 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -14,11 +16,15 @@
 #include "core/model_error.h"
 #include "parallel/shutdown_signals.h"
 #include "protocol/dds_entity.h"
+#include "protocol/names.h"
 #include "service/service.h"
 #include "service/service_config.h"
 
 int main(int argc, char** argv) {
-  const sigset_t signals = gc::parallel::block_shutdown_signals();
+  sigset_t signals = gc::parallel::block_shutdown_signals();
+  // SIGHUP re-creates the participant (a new CRL); blocked like the shutdown signals.
+  sigaddset(&signals, SIGHUP);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   auto logger = spdlog::stderr_color_mt("gearcoupling-service");
   spdlog::set_default_logger(logger);
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
@@ -62,19 +68,37 @@ int main(int argc, char** argv) {
       spdlog::warn("CYCLONEDDS_URI is not set: Cyclone's defaults apply (every interface, "
                    "multicast); deploy/cyclonedds-loopback.xml keeps DDS on loopback");
     }
-    gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
-    gc::service::Service service(config, std::move(catalogue));
-
-    std::thread signal_waiter([&service, signals] {
-      int signal = 0;
-      sigwait(&signals, &signal);
-      if (signal != SIGUSR1) spdlog::info("received signal {}", signal);
-      service.request_stop();
-    });
-    service.run();
-    // run() returned without a signal only if it failed; wake the waiter either way.
-    pthread_kill(signal_waiter.native_handle(), SIGTERM);
-    signal_waiter.join();
+    const gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
+    // SIGHUP: a new Service, so a new participant (docs/security.md, "Revoking an identity").
+    for (int generation = 0;; ++generation) {
+      const auto made = std::chrono::steady_clock::now();
+      gc::service::Service service(config, catalogue);
+      if (generation > 0) {
+        spdlog::info("reloaded: new participant, instance {} ({:.0f} ms to make it)",
+                     gc::protocol::hex_id(service.instance_id()),
+                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - made)
+                         .count());
+      }
+      std::atomic<bool> reload{false};
+      std::thread signal_waiter([&service, &reload, signals] {
+        int signal = 0;
+        sigwait(&signals, &signal);
+        if (signal == SIGHUP) {
+          spdlog::info("received SIGHUP: making a new participant (the identity, the CRL and the "
+                       "permissions are read again)");
+          reload = true;
+          service.request_reload();
+          return;
+        }
+        if (signal != SIGUSR1) spdlog::info("received signal {}", signal);
+        service.request_stop();
+      });
+      service.run();
+      // run() returned without a signal only if it failed; wake the waiter either way.
+      if (!reload) pthread_kill(signal_waiter.native_handle(), SIGTERM);
+      signal_waiter.join();
+      if (!reload) break;
+    }
   } catch (const gc::ModelError& e) {
     spdlog::error("cannot start: {}", e.what());
     return 1;

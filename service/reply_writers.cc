@@ -1,5 +1,6 @@
 #include "service/reply_writers.h"
 
+#include <cstring>
 #include <set>
 
 #include "protocol/matching.h"
@@ -25,6 +26,13 @@ ReplyWriters::Clock::time_point after(double s) {
 
 }  // namespace
 
+ParticipantKey participant_key_of(const dds_guid_t& guid) {
+  ParticipantKey key{};
+  static_assert(sizeof(guid.v) == sizeof(key));
+  std::memcpy(key.data(), guid.v, key.size());
+  return key;
+}
+
 ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
                            std::string instance_tag, std::size_t max_parked,
                            std::function<void()> on_first_parked)
@@ -34,11 +42,17 @@ ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5>
       max_parked_(max_parked),
       on_first_parked_(std::move(on_first_parked)) {}
 
-void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation) {
+void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation,
+                                   const ParticipantKey& owner) {
   const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
   {
     std::lock_guard lock(mutex_);
     departed_.erase(client_id);
+    held_.erase(held_.lower_bound({client_id, ParticipantKey{}}),
+                held_.upper_bound({client_id, ParticipantKey{
+                    0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+                    0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff}}));
+    owners_[client_id][owner] += 1;
     Writer& entry = writers_[key];
     entry.readers += 1;
     if (entry.writer) return;
@@ -61,9 +75,17 @@ void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculat
   entry.writer = std::move(writer);
 }
 
-void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation) {
+void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation,
+                               const ParticipantKey& owner) {
   Writer gone;  // deleted after mutex_ is released, for the reason given in reader_appeared
   std::lock_guard lock(mutex_);
+  if (const auto owners = owners_.find(client_id); owners != owners_.end()) {
+    if (const auto found = owners->second.find(owner);
+        found != owners->second.end() && --found->second <= 0) {
+      owners->second.erase(found);
+    }
+    if (owners->second.empty()) owners_.erase(owners);
+  }
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
   if (found == writers_.end()) return;
   if (--found->second.readers > 0) return;
@@ -93,6 +115,15 @@ bool ReplyWriters::departed_locked(std::uint64_t client_id, Clock::time_point no
   return false;
 }
 
+bool ReplyWriters::held_locked(std::uint64_t client_id, const ParticipantKey& requester,
+                               Clock::time_point now) {
+  const auto held = held_.find({client_id, requester});
+  if (held == held_.end()) return false;
+  if (now < held->second) return true;
+  held_.erase(held);
+  return false;
+}
+
 bool ReplyWriters::matched_locked(const Key& key) {
   const auto found = writers_.find(key);
   if (found == writers_.end()) return false;
@@ -103,12 +134,21 @@ bool ReplyWriters::matched_locked(const Key& key) {
 }
 
 ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation calculation,
-                                            std::uint64_t sequence_number, Job& job,
-                                            Clock::time_point park_until) {
+                                            std::uint64_t sequence_number,
+                                            const std::optional<ParticipantKey>& requester,
+                                            Job& job, Clock::time_point park_until) {
   bool first = false;
+  const ParticipantKey from = requester.value_or(ParticipantKey{});
   {
     std::lock_guard lock(mutex_);
-    if (departed_locked(client_id, Clock::now())) {
+    // Someone else's id: the client's readers are known and none is the requester's. Checked
+    // before any hold, so a forger is neither parked nor able to spend the client's holds.
+    if (const auto owners = owners_.find(client_id);
+        owners != owners_.end() && (!requester || owners->second.count(*requester) == 0)) {
+      return Admission::kForged;
+    }
+    const Clock::time_point now = Clock::now();
+    if (departed_locked(client_id, now) || held_locked(client_id, from, now)) {
       drops_.departed += 1;
       return Admission::kDropped;
     }
@@ -118,7 +158,7 @@ ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation
       drops_.parked_full += 1;
       return Admission::kDropped;
     }
-    parked_[key].push_back({sequence_number, park_until, std::move(job)});
+    parked_[key].push_back({sequence_number, from, park_until, std::move(job)});
     first = parked_count_++ == 0;
   }
   if (first && on_first_parked_) on_first_parked_();
@@ -139,7 +179,8 @@ std::vector<ReplyWriters::Job> ReplyWriters::release(Clock::time_point now, doub
         expired.push_back({it->first.first, queue.front().sequence_number,
                            protocol::kAllCalculations[it->first.second]});
         drops_.unmatched += 1;
-        mark_departed_locked(it->first.first, after(hold_s));
+        auto& held = held_[{it->first.first, queue.front().requester}];
+        held = std::max(held, after(hold_s));
       }
       queue.pop_front();
       parked_count_ -= 1;
@@ -150,6 +191,9 @@ std::vector<ReplyWriters::Job> ReplyWriters::release(Clock::time_point now, doub
     std::erase_if(departed_, [now](const auto& entry) {
       return entry.second != Clock::time_point::max() && entry.second <= now;
     });
+  }
+  if (held_.size() >= kDepartedPruneSize) {
+    std::erase_if(held_, [now](const auto& entry) { return entry.second <= now; });
   }
   return ready;
 }

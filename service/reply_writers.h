@@ -10,6 +10,13 @@
 // matched. Until then the request is parked here, outside the workers, for a bounded time and in
 // a bounded number; release() hands over those whose reader appeared and drops the expired.
 // Nothing here blocks.
+//
+// A client_id is not a capability (issue 23): what a request can do to a client (park, put it on
+// hold) is bound to the participant that wrote the request. A client's reply readers name their
+// participants (discovery); a request from another participant for a client that has readers is
+// refused at once as forged, and the hold after an unmatched request expires covers only
+// (client_id, the requesting participant). So a request carrying someone else's id costs that
+// client nothing. Under DDS Security the participant is authenticated (docs/security.md).
 #pragma once
 
 #include <array>
@@ -19,9 +26,12 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <dds/dds.h>
 
 #include "protocol/calculation.h"
 #include "protocol/dds_entity.h"
@@ -33,7 +43,12 @@ struct AdmissionDrops {
   std::uint64_t unmatched = 0;    ///< parked until their deadline, no reply reader appeared
   std::uint64_t parked_full = 0;  ///< arrived while the parked requests were at their limit
   std::uint64_t departed = 0;     ///< from a client whose readers went or stopped acknowledging
+                                  ///< (or from a participant held for that client's id)
 };
+
+/// A participant's GUID (dds_builtintopic_endpoint_t::participant_key), comparable.
+using ParticipantKey = std::array<unsigned char, 16>;
+ParticipantKey participant_key_of(const dds_guid_t& guid);
 
 /// A parked request given up on, for the log.
 struct UnmatchedRequest {
@@ -46,7 +61,7 @@ class ReplyWriters {
  public:
   using Clock = std::chrono::steady_clock;
   using Job = std::function<void()>;
-  enum class Admission { kRun, kParked, kDropped };
+  enum class Admission { kRun, kParked, kDropped, kForged };
 
   /// `reply_topics[index_of(c)]` is calculation c's reply topic on `participant`. At most
   /// `max_parked` requests wait for their client's reader at once. `on_first_parked` is called
@@ -56,19 +71,28 @@ class ReplyWriters {
                std::string instance_tag, std::size_t max_parked,
                std::function<void()> on_first_parked);
 
-  /// A reader of `calculation`'s replies appeared in `client_id`'s partition: make its writer.
-  void reader_appeared(std::uint64_t client_id, protocol::Calculation calculation);
+  /// A reader of `calculation`'s replies, of participant `owner`, appeared in `client_id`'s
+  /// partition: make its writer.
+  void reader_appeared(std::uint64_t client_id, protocol::Calculation calculation,
+                       const ParticipantKey& owner);
   /// That reader went (the client left): delete the writer once no reader of it remains.
-  void reader_gone(std::uint64_t client_id, protocol::Calculation calculation);
+  void reader_gone(std::uint64_t client_id, protocol::Calculation calculation,
+                   const ParticipantKey& owner);
 
-  /// Without blocking: kRun when (client, calculation)'s writer is matched (the caller runs
-  /// `job`); kParked when it is not (yet): `job` is kept until `park_until`; kDropped when the
-  /// client has departed or the parked requests are at their limit (`job` is left as it was).
+  /// Without blocking, for a request of `client_id` written by participant `requester` (nullopt
+  /// when its writer is no longer known): kForged when `client_id` has reply readers and none is
+  /// `requester`'s (the request names someone else's id; nothing is kept); kRun when (client,
+  /// calculation)'s writer is matched (the caller runs `job`); kParked when it is not (yet):
+  /// `job` is kept until `park_until`; kDropped when the client has departed, `requester` is
+  /// held for this id, or the parked requests are at their limit (`job` is left as it was).
   Admission admit(std::uint64_t client_id, protocol::Calculation calculation,
-                  std::uint64_t sequence_number, Job& job, Clock::time_point park_until);
+                  std::uint64_t sequence_number, const std::optional<ParticipantKey>& requester,
+                  Job& job, Clock::time_point park_until);
 
   /// Parked jobs whose writer has matched since (for the workers); drops the parked requests
-  /// past their time into `expired`, and marks their clients departed for `hold_s`.
+  /// past their time into `expired`, and holds (their client, their requesting participant) for
+  /// `hold_s`: that participant's further requests for that id are dropped at once, nobody
+  /// else's.
   std::vector<Job> release(Clock::time_point now, double hold_s,
                            std::vector<UnmatchedRequest>& expired);
   /// Requests parked now.
@@ -95,6 +119,7 @@ class ReplyWriters {
   };
   struct Parked {
     std::uint64_t sequence_number;
+    ParticipantKey requester;  ///< all zero when unknown
     Clock::time_point until;
     Job job;
   };
@@ -102,6 +127,7 @@ class ReplyWriters {
 
   bool matched_locked(const Key& key);
   bool departed_locked(std::uint64_t client_id, Clock::time_point now);
+  bool held_locked(std::uint64_t client_id, const ParticipantKey& requester, Clock::time_point now);
   void mark_departed_locked(std::uint64_t client_id, Clock::time_point until);
 
   dds_entity_t participant_;
@@ -114,8 +140,13 @@ class ReplyWriters {
   std::map<Key, std::deque<Parked>> parked_;
   std::size_t parked_count_ = 0;
   AdmissionDrops drops_;
-  /// Clients whose readers all went (forever) or who stopped acknowledging (until then).
+  /// Clients whose readers all went (forever) or who stopped acknowledging (until then): only
+  /// the client's own readers can cause either.
   std::map<std::uint64_t, Clock::time_point> departed_;
+  /// (client, requesting participant) whose parked request expired unmatched (until then).
+  std::map<std::pair<std::uint64_t, ParticipantKey>, Clock::time_point> held_;
+  /// The participants owning each client's discovered reply readers (how many readers each).
+  std::map<std::uint64_t, std::map<ParticipantKey, int>> owners_;
 };
 
 }  // namespace gc::service

@@ -133,6 +133,11 @@ void Service::request_stop() {
   dds_set_guardcondition(guard_.get(), true);
 }
 
+void Service::request_reload() {
+  reload_requested_ = true;
+  request_stop();
+}
+
 template <Calculation kCalculation>
 void Service::take_requests() {
   using T = CalculationTraits<kCalculation>;
@@ -143,6 +148,7 @@ void Service::take_requests() {
     const Clock::time_point received = Clock::now();
     struct Job {
       gearcoupling_Correlation correlation;
+      std::optional<dds_guid_t> requester;
       std::function<void()> run;
       bool cheap;  ///< cheap_to_answer, or malformed (answered with an error at once)
     };
@@ -163,7 +169,7 @@ void Service::take_requests() {
         malformed = std::current_exception();
       }
       const bool cheap = !request || cheap_to_answer(*request, catalogue_);
-      jobs.push_back({correlation,
+      jobs.push_back({correlation, requester,
                       [this, correlation, requester, request = std::move(request), malformed,
                        received] {
                         answer<kCalculation>(correlation, requester, request, malformed, received);
@@ -174,7 +180,7 @@ void Service::take_requests() {
     // costly one, or a burst, goes to the workers, so that no request holds up the others.
     const bool lone = jobs.size() == 1;
     for (Job& job : jobs) {
-      admit(kCalculation, job.correlation, std::move(job.run), lone && job.cheap);
+      admit(kCalculation, job.correlation, job.requester, std::move(job.run), lone && job.cheap);
     }
   }
 }
@@ -248,10 +254,13 @@ void Service::refuse_forged(Calculation calculation, const gearcoupling_Correlat
 }
 
 void Service::admit(Calculation calculation, const gearcoupling_Correlation& correlation,
-                    std::function<void()> job, bool answer_here) {
+                    const std::optional<dds_guid_t>& requester, std::function<void()> job,
+                    bool answer_here) {
   const Clock::time_point park_until = Clock::now() + seconds(config_.reply_match_timeout_s);
+  const std::optional<ParticipantKey> from =
+      requester ? std::optional<ParticipantKey>(participant_key_of(*requester)) : std::nullopt;
   switch (reply_writers_.admit(correlation.client_id, calculation, correlation.sequence_number,
-                               job, park_until)) {
+                               from, job, park_until)) {
     case ReplyWriters::Admission::kRun:
       // Only while no request waits for a worker: otherwise the workers are the faster way.
       if (answer_here && pool_.queued() == 0) {
@@ -262,6 +271,9 @@ void Service::admit(Calculation calculation, const gearcoupling_Correlation& cor
       }
       return;
     case ReplyWriters::Admission::kParked:
+      return;
+    case ReplyWriters::Admission::kForged:
+      refuse_forged(calculation, correlation);
       return;
     case ReplyWriters::Admission::kDropped:
       // Debug only: a flood would otherwise flood the log; the counts are in the stats line.
@@ -336,10 +348,10 @@ void Service::take_subscriptions() {
       if (info.instance_state != DDS_IST_ALIVE) {
         const auto known = reply_readers_.find(info.instance_handle);
         if (known == reply_readers_.end()) continue;
-        reply_writers_.reader_gone(known->second.first, known->second.second);
-        spdlog::debug("client={} left ({} reply reader gone)",
-                      protocol::hex_id(known->second.first),
-                      protocol::to_string(known->second.second));
+        const ReplyReader& gone = known->second;
+        reply_writers_.reader_gone(gone.client_id, gone.calculation, gone.participant);
+        spdlog::debug("client={} left ({} reply reader gone)", protocol::hex_id(gone.client_id),
+                      protocol::to_string(gone.calculation));
         reply_readers_.erase(known);
         continue;
       }
@@ -353,8 +365,9 @@ void Service::take_subscriptions() {
       for (uint32_t p = 0; p < count; ++p) {
         const auto client = protocol::client_id_of_reply_partition(partitions[p]);
         if (client && reply_readers_.count(info.instance_handle) == 0) {
-          reply_writers_.reader_appeared(*client, *calculation);
-          reply_readers_.emplace(info.instance_handle, std::make_pair(*client, *calculation));
+          const ParticipantKey owner = participant_key_of(endpoint.participant_key);
+          reply_writers_.reader_appeared(*client, *calculation, owner);
+          reply_readers_.emplace(info.instance_handle, ReplyReader{*client, *calculation, owner});
           spdlog::debug("client={} {} reply reader discovered", protocol::hex_id(*client),
                         protocol::to_string(*calculation));
         }
@@ -398,9 +411,16 @@ void Service::run() {
   for (;;) {
     Clock::time_point now = Clock::now();
     if (stop_requested_ && !stop_at) {
-      stop_at = now + seconds(config_.shutdown_grace_s);
-      status_.publish(false);
-      spdlog::info("shutting down: answering requests in flight for {} s", config_.shutdown_grace_s);
+      if (reload_requested_) {
+        // No grace: the clients resend what this instance leaves unanswered to the next one.
+        stop_at = now;
+        spdlog::info("reloading: answering the requests taken, then a new participant");
+      } else {
+        stop_at = now + seconds(config_.shutdown_grace_s);
+        status_.publish(false);
+        spdlog::info("shutting down: answering requests in flight for {} s",
+                     config_.shutdown_grace_s);
+      }
     }
     if (stop_at && now >= *stop_at) break;
     Clock::time_point wake = std::min(next_status, next_stats);

@@ -40,6 +40,10 @@ class Service {
   void run();
   /// Safe from any thread (not from a signal handler: use a signal-waiting thread).
   void request_stop();
+  /// As request_stop(), without the grace period: run() answers what has arrived and returns at
+  /// once, so that the caller can make a new Service (a new participant: Cyclone reads the
+  /// identity, the CRL and the permissions again; docs/security.md, "Revoking an identity").
+  void request_reload();
 
   std::uint64_t instance_id() const { return instance_id_; }
 
@@ -57,7 +61,8 @@ class Service {
   /// `answer_here` and no job waits for a worker, else on a worker. Otherwise parks it
   /// (ReplyWriters::admit) or drops it: no thread waits for a client's reader.
   void admit(protocol::Calculation calculation, const gearcoupling_Correlation& correlation,
-             std::function<void()> job, bool answer_here);
+             const std::optional<dds_guid_t>& requester, std::function<void()> job,
+             bool answer_here);
   /// Parked requests whose reader matched go to the workers; the expired are logged, at most
   /// once a second unless `final`.
   void release_parked(bool final);
@@ -79,13 +84,20 @@ class Service {
   protocol::Entity subscriptions_reader_;  ///< DCPSSubscription: clients' reply readers
   protocol::Entity guard_;
   protocol::Entity waitset_;
-  std::map<dds_instance_handle_t, std::pair<std::uint64_t, protocol::Calculation>> reply_readers_;
+  /// Clients' reply readers discovered: their client, calculation and participant.
+  struct ReplyReader {
+    std::uint64_t client_id;
+    protocol::Calculation calculation;
+    ParticipantKey participant;
+  };
+  std::map<dds_instance_handle_t, ReplyReader> reply_readers_;
   ServiceStats stats_;
   Requesters requesters_;  ///< who wrote each request; whether a reply writer reaches them
   ReplyWriters reply_writers_;
   ReplyBacklog reply_backlog_;
   StatusPublisher status_;
   std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> reload_requested_{false};
   // Parked requests dropped and not yet logged (dispatch loop only).
   std::uint64_t unlogged_unmatched_ = 0;
   UnmatchedRequest first_unlogged_unmatched_;

@@ -39,7 +39,7 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
   const std::string& test_cell = flags.text("test-cell");
   const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait-s") * 1e3));
   const protocol::Entity participant = live::make_participant(domain_from(flags));
-  live::ModelSwapPublisher swaps(participant.get());
+  live::ModelSwapPublisher swaps(participant.get(), {test_cell});
   status::CellBoardOptions board;
   board.read_residuals = false;  // an operator identity may read the health alone
   board.only_cell = test_cell;

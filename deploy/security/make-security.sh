@@ -3,7 +3,7 @@
 #
 #   bash deploy/security/make-security.sh OUT_DIR [--service NAME]... [--client NAME]...
 #        [--dashboard NAME]... [--console NAME]... [--monitor NAME]... [--cell NAME]...
-#        [--operator NAME]...
+#        [--operator NAME --cells CELL[,CELL]...]...
 #        [--revoke IDENTITY]... [--days N]
 #
 #   OUT_DIR/ca/identity_ca.pem, permissions_ca.pem    the two CA certificates (every host)
@@ -19,14 +19,16 @@
 # Identities: "service-<NAME>" (default one: service-main), "client-<NAME>" (default: client-cell),
 # "dashboard-<NAME>" (default: dashboard-main); "console-<NAME>", a dashboard whose query panel
 # may ask the service (a dashboard's and a client's rights); the live test cell's "monitor-<NAME>",
-# "cell-<NAME>" and "operator-<NAME>" (none by default). --revoke IDENTITY puts that identity's
-# certificate on the CRL for good (every security.xml names the CRL). Idempotent: what exists and
-# is still valid is kept (keys, certificates, signatures, the CRL), so a second run changes no
-# byte; a document is signed again only when its content changes, a certificate is made again
+# "cell-<NAME>" and "operator-<NAME>" (none by default); cell-<NAME> publishes only test cell
+# NAME's measurements, operator-<NAME> swaps the models of only the test cells its --cells lists
+# (each live test cell has its own partition, gearcoupling.live.cell.<CELL>: docs/protocol.md).
+# --revoke IDENTITY puts that identity's certificate on the CRL for good (every security.xml names
+# the CRL). Idempotent: what exists and is still valid is kept (keys, certificates, signatures,
+# the CRL), so a second run changes no byte; a document is signed again only when its content changes, a certificate is made again
 # only when it no longer verifies, the CRL only when the revoked set changes or it nears expiry.
 set -euo pipefail
 
-usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 fail() { echo "make-security.sh: $*" >&2; exit 1; }
 
 LIB_DIR="${GC_DDS_SECURITY_LIB_DIR:-/usr/lib/x86_64-linux-gnu/libddsc0debian}"
@@ -35,8 +37,10 @@ REQUEST_TOPICS="gearcoupling/*/request"
 REPLY_TOPICS="gearcoupling/*/reply"
 STATUS_TOPIC="gearcoupling/status"
 STATUS_PARTITION="gearcoupling"
-# The live test cell's names (live/live_names.h): every topic in partition "gearcoupling.live".
+# The live test cell's names (live/live_names.h): health and residuals in partition
+# "gearcoupling.live"; measurements and model swaps of test cell CELL in "gearcoupling.live.cell.CELL".
 LIVE_PARTITION="gearcoupling.live"
+CELL_PARTITION_PREFIX="gearcoupling.live.cell."
 MEASUREMENT_TOPIC="gearcoupling/live/measurement"
 RESIDUAL_TOPIC="gearcoupling/live/residual"
 HEALTH_TOPIC="gearcoupling/live/health"
@@ -48,8 +52,20 @@ SUBJECT_BASE="C=NL,O=gearcoupling"
 case "$1" in -h|--help) usage ;; esac
 OUT="$1"; shift
 SERVICES=(); CLIENTS=(); DASHBOARDS=(); CONSOLES=(); MONITORS=(); CELLS=(); OPERATORS=(); REVOKED=(); DAYS=3650
+declare -A OPERATOR_CELLS=()
 ROLES="service|client|dashboard|console|monitor|cell|operator"
 valid_name() { [[ "$1" =~ ^[a-z0-9][a-z0-9_-]{0,31}$ ]] || fail "$2 \"$1\": allowed 1-32 of a-z 0-9 _ -, starting with a letter or digit"; }
+# A --cells list: test cell names (live/live_names.h: 1-64 of A-Z a-z 0-9 . _ -), comma-separated.
+valid_cells() {
+  local cell
+  [ -n "$1" ] || fail "--cells \"\": allowed CELL[,CELL]..., each 1-64 of A-Z a-z 0-9 . _ -"
+  IFS=, read -ra cells <<<"$1"
+  [[ "$1" != *, ]] || fail "--cells \"$1\": an empty test cell name; allowed CELL[,CELL]..., each 1-64 of A-Z a-z 0-9 . _ -"
+  for cell in "${cells[@]}"; do
+    [[ "$cell" =~ ^[A-Za-z0-9._-]{1,64}$ ]] \
+      || fail "--cells \"$1\": test cell \"$cell\" not allowed; allowed CELL[,CELL]..., each 1-64 of A-Z a-z 0-9 . _ -"
+  done
+}
 valid_identity() {
   [[ "$1" =~ ^($ROLES)-[a-z0-9][a-z0-9_-]{0,31}$ ]] \
     || fail "--revoke \"$1\": allowed an identity ROLE-NAME, ROLE one of ${ROLES//|/ }"
@@ -64,6 +80,8 @@ while [ $# -gt 0 ]; do
     --monitor) valid_name "$2" --monitor; MONITORS+=("$2") ;;
     --cell) valid_name "$2" --cell; CELLS+=("$2") ;;
     --operator) valid_name "$2" --operator; OPERATORS+=("$2") ;;
+    --cells) [ ${#OPERATORS[@]} -gt 0 ] || fail "--cells \"$2\": allowed only after --operator NAME (the test cells that operator may swap)"
+             valid_cells "$2"; OPERATOR_CELLS[${OPERATORS[-1]}]="$2" ;;
     --revoke) valid_identity "$2"; REVOKED+=("$2") ;;
     --days) [[ "$2" =~ ^[0-9]+$ ]] && [ "$2" -ge 1 ] && [ "$2" -le 36500 ] \
               || fail "--days \"$2\": allowed an integer in [1, 36500]"; DAYS="$2" ;;
@@ -74,6 +92,10 @@ done
 [ ${#SERVICES[@]} -gt 0 ] || SERVICES=(main)
 [ ${#CLIENTS[@]} -gt 0 ] || CLIENTS=(cell)
 [ ${#DASHBOARDS[@]} -gt 0 ] || DASHBOARDS=(main)
+for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do
+  [ -n "${OPERATOR_CELLS[$name]:-}" ] \
+    || fail "--operator $name: needs --cells CELL[,CELL]... after it (the test cells it may swap)"
+done
 for lib in auth ac crypto; do
   [ -f "$LIB_DIR/libdds_security_$lib.so" ] \
     || fail "$LIB_DIR/libdds_security_$lib.so missing: install Debian's libddsc0 (cyclonedds) or set GC_DDS_SECURITY_LIB_DIR"
@@ -213,24 +235,31 @@ console_rules() {
   live_view_rules
 }
 
-# The monitor (gearcoupling-monitor): reads measurements and model swaps, publishes the health
-# and residuals. It sends no requests.
+# The monitor (gearcoupling-monitor): reads measurements and model swaps of every test cell (its
+# readers ask for the partition "gearcoupling.live.cell.*", which this pattern admits as a name,
+# and for the older shared one), publishes the health and residuals. It sends no requests.
 monitor_rules() {
-  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
-  criteria subscribe "$MODEL_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION" "${CELL_PARTITION_PREFIX}*"
+  criteria subscribe "$MODEL_TOPIC" "$LIVE_PARTITION" "${CELL_PARTITION_PREFIX}*"
   criteria publish "$HEALTH_TOPIC" "$LIVE_PARTITION"
   criteria publish "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
 }
 
-# The test cell's measurement side: gearcoupling replay publishes, gearcoupling record reads.
+# The measurement side of test cell $1: gearcoupling replay (a DAQ) publishes in the cell's own
+# partition only; gearcoupling record reads it (and the older shared partition, where under
+# security nobody may publish measurements).
 cell_rules() {
-  criteria publish "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
-  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION"
+  criteria publish "$MEASUREMENT_TOPIC" "$CELL_PARTITION_PREFIX$1"
+  criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION" "$CELL_PARTITION_PREFIX$1"
 }
 
-# The operator: gearcoupling swap-model publishes a model and reads the health to see it taken.
+# The operator of test cells $1 (comma-separated): gearcoupling swap-model publishes a model in
+# those cells' partitions only, and reads the health to see it taken.
 operator_rules() {
-  criteria publish "$MODEL_TOPIC" "$LIVE_PARTITION"
+  local cells partitions=() cell
+  IFS=, read -ra cells <<<"$1"
+  for cell in "${cells[@]}"; do partitions+=("$CELL_PARTITION_PREFIX$cell"); done
+  criteria publish "$MODEL_TOPIC" "${partitions[@]}"
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
 }
 
@@ -344,8 +373,10 @@ for name in "${CLIENTS[@]}"; do make_requester "client-$name" client_rules; done
 for name in "${DASHBOARDS[@]}"; do make_member "dashboard-$name" dashboard_rules; done
 for name in ${CONSOLES[@]+"${CONSOLES[@]}"}; do make_requester "console-$name" console_rules; done
 for name in ${MONITORS[@]+"${MONITORS[@]}"}; do make_member "monitor-$name" monitor_rules; done
-for name in ${CELLS[@]+"${CELLS[@]}"}; do make_member "cell-$name" cell_rules; done
-for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do make_member "operator-$name" operator_rules; done
+for name in ${CELLS[@]+"${CELLS[@]}"}; do make_member "cell-$name" cell_rules "$name"; done
+for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do
+  make_member "operator-$name" operator_rules "${OPERATOR_CELLS[$name]}"
+done
 mkdir -p "$CA_DB"
 [ -f "$CA_DB/index.txt" ] || : >"$CA_DB/index.txt"
 for id in ${REVOKED[@]+"${REVOKED[@]}"}; do revoke "$id"; done

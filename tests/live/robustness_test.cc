@@ -105,7 +105,7 @@ TEST_F(LiveTest, NanAndGarbageAreCountedAndRefusedAndTheMonitorServesOn) {
   ASSERT_EQ(dds_write(writer.get(), &garbage), DDS_RETCODE_OK);
 
   // A model that is no model, and one with an unknown effect: refused with the reason.
-  live::ModelSwapPublisher swaps(participant_.get());
+  live::ModelSwapPublisher swaps(participant_.get(), {"garbage"});
   ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
   swaps.publish("garbage", "\x01\x02 not { a model");
   auto refused = health_.wait_for(
@@ -135,7 +135,7 @@ TEST_F(LiveTest, NanAndGarbageAreCountedAndRefusedAndTheMonitorServesOn) {
 TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
   auto monitor = start_monitor({"--health-period-s", "0.2"});
   live::MeasurementPublisher publisher(participant_.get(), "swaps");
-  live::ModelSwapPublisher swaps(participant_.get());
+  live::ModelSwapPublisher swaps(participant_.get(), {"swaps"});
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
   std::atomic<bool> streaming{true};
@@ -163,7 +163,7 @@ TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
 
 TEST_F(LiveTest, ARestartedMonitorResumesWithTheLatestModelSwap) {
   live::MeasurementPublisher publisher(participant_.get(), "restart");
-  live::ModelSwapPublisher swaps(participant_.get());
+  live::ModelSwapPublisher swaps(participant_.get(), {"restart"});
   auto first = start_monitor({"--health-period-s", "0.1"});
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   swaps.publish("restart", variant_text("mu012", 0.12));

@@ -2,6 +2,12 @@
 // gearcoupling-monitor with a monitor identity, a cell identity replaying measurements, an
 // operator identity swapping the model, a dashboard identity reading the health, and each
 // role refused what it does not need. Certificates made at test time by make-security.sh.
+#include <signal.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <thread>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -12,8 +18,11 @@
 #include "clients/status/cell_board.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
+#include "live/measurement_publisher.h"
 #include "live/model_swap_publisher.h"
 #include "live/replay.h"
+#include "protocol/matching.h"
+#include "protocol/qos.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/secure_cell.h"
 #include "tests/service/secure_cell_test.h"
@@ -43,14 +52,18 @@ status::CellBoardOptions health_only() {
   return options;
 }
 
-/// What creating a writer (or reader) of a live topic on `participant` gives: a positive handle
-/// when its permissions allow it, else Cyclone's refusal (DDS_RETCODE_NOT_ALLOWED_BY_SECURITY,
-/// from the topic already when the grant names it for neither direction).
-dds_return_t try_live_endpoint(dds_entity_t participant, TopicMaker make_topic, bool writer) {
+/// What creating a writer (or reader) of a live topic on `participant` in `partition` gives: a
+/// positive handle when its permissions allow it, else Cyclone's refusal
+/// (DDS_RETCODE_NOT_ALLOWED_BY_SECURITY, from the topic already when the grant names it for
+/// neither direction).
+dds_return_t try_live_endpoint(dds_entity_t participant, TopicMaker make_topic, bool writer,
+                               const std::string& partition) {
   try {
     const Entity topic = make_topic(participant);
-    const Entity group = writer ? live::make_live_publisher(participant)
-                                : live::make_live_subscriber(participant);
+    const protocol::Qos in = protocol::partition_qos(partition);
+    const Entity group(writer ? dds_create_publisher(participant, in.get(), nullptr)
+                              : dds_create_subscriber(participant, in.get(), nullptr));
+    if (group.get() < 0) return group.get();
     const dds_entity_t endpoint = writer ? dds_create_writer(group.get(), topic.get(), nullptr, nullptr)
                                          : dds_create_reader(group.get(), topic.get(), nullptr, nullptr);
     return endpoint > 0 ? 1 : endpoint;  // the entities go with this scope
@@ -62,7 +75,7 @@ dds_return_t try_live_endpoint(dds_entity_t participant, TopicMaker make_topic, 
 class LiveRoles : public test::SecureCellTest {
  protected:
   void SetUp() override {
-    make_cell("--monitor m --cell c --operator o");
+    make_cell("--monitor m --cell c --cell d --operator o --cells c");
   }
   std::unique_ptr<test::ChildProcess> start_monitor() const {
     return std::make_unique<test::ChildProcess>(
@@ -82,14 +95,14 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
   const test::LocalDomain cell_domain(kCellDomain, cell_->uri("cell-c"));
   const Entity cell = cell_domain.participant();
   live::ReplayOptions replay;
-  replay.test_cell = "secure-cell";
+  replay.test_cell = "c";
   replay.speed = 50.0;
   replay.wait_s = 30.0;
   const live::ReplayResult replayed = live::replay_recording(cell.get(), kRecording, replay);
   EXPECT_EQ(replayed.published, kRecordingSamples);
 
   const auto seen = health.wait_for(
-      "secure-cell", [](const status::HealthView& h) { return h.taken >= kRecordingSamples; }, 30s);
+      "c", [](const status::HealthView& h) { return h.taken >= kRecordingSamples; }, 30s);
   ASSERT_TRUE(seen.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
   EXPECT_EQ(seen->taken, kRecordingSamples);
   EXPECT_EQ(seen->model_name, "paper");
@@ -97,12 +110,12 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
   // The operator swaps the model in and sees the monitor take it (its health names it).
   const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
   const Entity op = operator_domain.participant();
-  live::ModelSwapPublisher swaps(op.get());
+  live::ModelSwapPublisher swaps(op.get(), {"c"});
   status::CellBoard operator_view(op.get(), health_only());
   ASSERT_TRUE(swaps.wait_for_readers(1, 30s));
-  swaps.publish("secure-cell", cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper.textproto"));
+  swaps.publish("c", cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper.textproto"));
   EXPECT_TRUE(operator_view
-                  .wait_for("secure-cell",
+                  .wait_for("c",
                             [](const status::HealthView& h) { return h.previous_model_name.has_value(); },
                             30s)
                   .has_value());
@@ -115,7 +128,12 @@ struct Permission {
   TopicMaker topic;
   bool writer;
   bool allowed;
+  const char* partition = "gearcoupling.live";
 };
+
+constexpr const char* kCellC = "gearcoupling.live.cell.c";
+constexpr const char* kCellD = "gearcoupling.live.cell.d";
+constexpr const char* kEveryCell = "gearcoupling.live.cell.*";
 
 TEST_F(LiveRoles, EachRoleMayPublishAndReadOnlyWhatItNeeds) {
   const Permission table[] = {
@@ -131,15 +149,26 @@ TEST_F(LiveRoles, EachRoleMayPublishAndReadOnlyWhatItNeeds) {
       {"monitor-m", kMonitorDomain, "residual", live::make_residual_topic, true, true},
       {"monitor-m", kMonitorDomain, "measurement", live::make_measurement_topic, false, true},
       {"monitor-m", kMonitorDomain, "model", live::make_model_topic, false, true},
+      {"monitor-m", kMonitorDomain, "measurement", live::make_measurement_topic, false, true, kEveryCell},
+      {"monitor-m", kMonitorDomain, "model", live::make_model_topic, false, true, kEveryCell},
       {"monitor-m", kMonitorDomain, "measurement", live::make_measurement_topic, true, false},
       {"monitor-m", kMonitorDomain, "model", live::make_model_topic, true, false},
-      // The cell publishes and records measurements, nothing else.
-      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, true, true},
+      // The cell publishes and records its own test cell's measurements, nothing else: not in
+      // another cell's partition, nor in the shared one (issue 23, finding 4).
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, true, true, kCellC},
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, false, true, kCellC},
       {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, false, true},
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, true, false, kCellD},
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, true, false},
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, true, false, kEveryCell},
+      {"cell-c", kCellDomain, "measurement", live::make_measurement_topic, false, false, kCellD},
       {"cell-c", kCellDomain, "health", live::make_health_topic, true, false},
-      {"cell-c", kCellDomain, "model", live::make_model_topic, true, false},
-      // The operator publishes models and reads the health.
-      {"operator-o", kOperatorDomain, "model", live::make_model_topic, true, true},
+      {"cell-c", kCellDomain, "model", live::make_model_topic, true, false, kCellC},
+      // The operator publishes models of its granted cells (c) only, and reads the health.
+      {"operator-o", kOperatorDomain, "model", live::make_model_topic, true, true, kCellC},
+      {"operator-o", kOperatorDomain, "model", live::make_model_topic, true, false, kCellD},
+      {"operator-o", kOperatorDomain, "model", live::make_model_topic, true, false},
+      {"operator-o", kOperatorDomain, "model", live::make_model_topic, true, false, kEveryCell},
       {"operator-o", kOperatorDomain, "health", live::make_health_topic, false, true},
       {"operator-o", kOperatorDomain, "health", live::make_health_topic, true, false},
       {"operator-o", kOperatorDomain, "measurement", live::make_measurement_topic, true, false},
@@ -150,10 +179,152 @@ TEST_F(LiveRoles, EachRoleMayPublishAndReadOnlyWhatItNeeds) {
   for (const Permission& p : table) {
     const test::LocalDomain domain(p.local_domain, cell_->uri(p.identity));
     const Entity participant = domain.participant();
-    const dds_return_t got = try_live_endpoint(participant.get(), p.topic, p.writer);
+    const dds_return_t got = try_live_endpoint(participant.get(), p.topic, p.writer, p.partition);
     EXPECT_EQ(got, p.allowed ? 1 : DDS_RETCODE_NOT_ALLOWED_BY_SECURITY)
-        << p.identity << (p.writer ? " writing " : " reading ") << p.topic_name;
+        << p.identity << (p.writer ? " writing " : " reading ") << p.topic_name << " in "
+        << p.partition;
   }
+}
+
+/// A measurement batch of one sample for `test_cell`, written raw by `writer` (a writer in any
+/// partition: what a cell identity controls is only which partition it may use).
+void write_one_sample(dds_entity_t writer, const std::string& test_cell, std::uint64_t run_id) {
+  gearcoupling_Measurement m{};
+  m.sequence_number = 1;
+  m.time_s = 0.0;
+  m.torque_nm = 1.5e6;
+  m.misalignment_rad = 0.005;
+  gearcoupling_MeasurementBatch batch{};
+  std::copy_n(test_cell.c_str(), test_cell.size() + 1, batch.test_cell);
+  batch.run_id = run_id;
+  batch.samples._buffer = &m;
+  batch.samples._length = batch.samples._maximum = 1;
+  batch.samples._release = false;
+  ASSERT_EQ(dds_write(writer, &batch), DDS_RETCODE_OK);
+}
+
+// Issue 23, finding 4: a cell identity speaks only for its own test cell, an operator swaps only
+// the cells it is granted, whatever test_cell their samples name.
+TEST_F(LiveRoles, ACellCannotPublishAnotherCellsMeasurementsNorAnOperatorSwapAnUngrantedCell) {
+  const auto monitor = start_monitor();
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  status::CellBoard health(dashboard.get(), health_only());
+  const test::LocalDomain cell_domain(kCellDomain, cell_->uri("cell-c"));
+  const Entity cell = cell_domain.participant();
+
+  // cell-c may not even make a publisher of test cell d's measurements...
+  EXPECT_THROW(live::MeasurementPublisher(cell.get(), "d"), protocol::DdsError);
+  // ...and what it writes in its own partition naming test cell d is refused by the monitor:
+  // d never appears, while c (the positive control, written after) does.
+  const Entity topic = live::make_measurement_topic(cell.get());
+  const Entity publisher = live::make_cell_publisher(cell.get(), "c");
+  const protocol::Qos qos = live::measurement_writer_qos();
+  const Entity writer(protocol::check_dds(
+      dds_create_writer(publisher.get(), topic.get(), qos.get(), nullptr), "writer"));
+  ASSERT_TRUE(live::wait_for_readers(writer.get(), 1, 30s));
+  write_one_sample(writer.get(), "d", 11);
+  write_one_sample(writer.get(), "c", 12);
+  ASSERT_TRUE(health.wait_for("c", [](const status::HealthView&) { return true; }, 30s).has_value())
+      << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_FALSE(health.wait_for("d", [](const status::HealthView&) { return true; }, 2s).has_value())
+      << "the monitor followed test cell d from cell-c's writer";
+  const std::string log = cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_NE(log.find("measurement batch for test cell d refused"), std::string::npos) << log;
+
+  // operator-o (granted c only) may not make a swap publisher for d, and a swap naming d written
+  // in c's partition is refused by the monitor; its swap of c is taken.
+  const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
+  const Entity op = operator_domain.participant();
+  EXPECT_THROW(live::ModelSwapPublisher(op.get(), {"d"}), protocol::DdsError);
+  const Entity model_topic = live::make_model_topic(op.get());
+  const Entity op_publisher = live::make_cell_publisher(op.get(), "c");
+  const protocol::Qos model_qos = live::model_qos();
+  const Entity swap_writer(protocol::check_dds(
+      dds_create_writer(op_publisher.get(), model_topic.get(), model_qos.get(), nullptr), "writer"));
+  ASSERT_TRUE(live::wait_for_readers(swap_writer.get(), 1, 30s));
+  std::string text = cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper.textproto");
+  gearcoupling_ModelSwap swap{};
+  std::copy_n("d", 2, swap.test_cell);
+  swap.model_text = text.data();
+  ASSERT_EQ(dds_write(swap_writer.get(), &swap), DDS_RETCODE_OK);
+  EXPECT_TRUE(protocol::wait_until(
+      [&] {
+        return cli::testing::read_file(cell_->dir() + "/monitor.log")
+                   .find("model swap for test cell d refused") != std::string::npos;
+      },
+      std::chrono::steady_clock::now() + 30s))
+      << cli::testing::read_file(cell_->dir() + "/monitor.log");
+}
+
+// Issue 23, finding 5, for the monitor: a cell identity revoked while the monitor runs is cut off
+// by SIGHUP (a new participant reads the new CRL); a valid cell's measurements are taken again
+// after the interruption.
+TEST_F(LiveRoles, ARevokedCellIsCutOffBySighupToTheMonitorWhileAValidCellIsFollowedAgain) {
+  using Clock = std::chrono::steady_clock;
+  const auto monitor = start_monitor();
+  const test::LocalDomain c_domain(kCellDomain, cell_->uri("cell-c"));
+  const test::LocalDomain d_domain(227, cell_->uri("cell-d"));
+  const Entity c_participant = c_domain.participant();
+  const Entity d_participant = d_domain.participant();
+  const auto raw_writer = [](dds_entity_t participant, const std::string& test_cell,
+                             std::vector<Entity>& keep) {
+    keep.push_back(live::make_measurement_topic(participant));
+    const dds_entity_t topic = keep.back().get();
+    keep.push_back(live::make_cell_publisher(participant, test_cell));
+    const protocol::Qos qos = live::measurement_writer_qos();
+    keep.emplace_back(protocol::check_dds(
+        dds_create_writer(keep.back().get(), topic, qos.get(), nullptr), "writer"));
+    return keep.back().get();
+  };
+  std::vector<Entity> c_entities, d_entities;
+  const dds_entity_t c_writer = raw_writer(c_participant.get(), "c", c_entities);
+  const dds_entity_t d_writer = raw_writer(d_participant.get(), "d", d_entities);
+  ASSERT_TRUE(live::wait_for_readers(c_writer, 1, 30s));
+  ASSERT_TRUE(live::wait_for_readers(d_writer, 1, 30s));
+  std::uint64_t run = 100;
+  write_one_sample(c_writer, "c", ++run);
+  write_one_sample(d_writer, "d", ++run);
+  {
+    const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+    const Entity dashboard = dashboard_domain.participant();
+    status::CellBoard health(dashboard.get(), health_only());
+    const auto any = [](const status::HealthView&) { return true; };
+    ASSERT_TRUE(health.wait_for("c", any, 30s).has_value());
+    ASSERT_TRUE(health.wait_for("d", any, 30s).has_value());  // d is followed before
+  }
+
+  cell_->rerun("--revoke cell-d");
+  const Clock::time_point hup = Clock::now();
+  monitor->signal(SIGHUP);
+  // The old monitor's reader goes (bounded), then both cells keep publishing.
+  EXPECT_TRUE(protocol::wait_until([&] { return protocol::matched_reader_count(c_writer) == 0; },
+                                   hup + 10s));
+  std::atomic<bool> publishing{true};
+  std::thread publisher([&] {
+    for (int k = 0; k < 1500 && publishing; ++k) {  // 30 s at most
+      write_one_sample(c_writer, "c", 1000 + 2 * static_cast<std::uint64_t>(k));
+      write_one_sample(d_writer, "d", 1001 + 2 * static_cast<std::uint64_t>(k));
+      std::this_thread::sleep_for(20ms);
+    }
+  });
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  status::CellBoard health(dashboard.get(), health_only());
+  const auto taken = [](const status::HealthView& h) { return h.taken >= 1; };
+  const auto c_again = health.wait_for("c", taken, 30s);
+  const double interruption_s = std::chrono::duration<double>(Clock::now() - hup).count();
+  const auto d_again = health.wait_for("d", taken, 3s);
+  const std::uint32_t d_readers = protocol::matched_reader_count(d_writer);
+  publishing = false;
+  publisher.join();
+  std::printf("monitor SIGHUP: test cell c's health back after %.3f s; revoked cell-d: %s, its "
+              "writer matched by %u readers\n",
+              interruption_s, d_again ? "FOLLOWED" : "not followed", d_readers);
+  EXPECT_TRUE(c_again.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_FALSE(d_again.has_value()) << "the new monitor follows the revoked cell-d";
+  EXPECT_EQ(d_readers, 0u);
+  EXPECT_TRUE(monitor->running());
 }
 
 }  // namespace

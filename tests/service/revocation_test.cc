@@ -1,7 +1,13 @@
 // Revocation with a CRL (docs/security.md, "Revoking an identity"): make-security.sh --revoke puts
 // a certificate on the identity CA's CRL, every security.xml names the CRL, and Cyclone's
 // authentication plugin then refuses that identity, with certificates made at test time.
+#include <signal.h>
+
+#include <chrono>
+#include <cstdio>
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 #include <memory>
 #include <string>
 
@@ -26,6 +32,8 @@ using protocol::CatalogueName;
 constexpr int kClientADomain = 220;
 constexpr int kRevokedDomain = 221;
 constexpr int kRevokedWithCrlDomain = 222;
+constexpr int kValidDomain = 223;
+constexpr int kRevokedLaterDomain = 224;
 
 constexpr const char* kLoopback = "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml";
 
@@ -107,6 +115,80 @@ TEST_F(Revocation, ARevokedClientFindsNoServiceAndANonRevokedOneWithTheSameCrlIs
 TEST_F(Revocation, ARevokedIdentityWithTheCrlCannotJoinTheDomain) {
   const test::LocalDomain b(kRevokedWithCrlDomain, cell_->uri("client-b"));
   EXPECT_THROW(b.participant(), protocol::DdsError);
+}
+
+// Revocation without a restart (issue 23, finding 5): the service re-reads the CRL on SIGHUP by
+// making a new participant. client-b, answered until then, is revoked while both run; after the
+// SIGHUP client-a is answered again and client-b gets nothing.
+class RevocationOnSighup : public test::SecureCellTest {
+ protected:
+  void SetUp() override { make_cell(); }
+};
+
+TEST_F(RevocationOnSighup, ARevokedClientGetsNothingAfterSighupWhileAValidOneIsAnsweredAgain) {
+  using Clock = std::chrono::steady_clock;
+  const std::string log = cell_->dir() + "/service.log";
+  test::ServiceProcess service({}, log, {{"CYCLONEDDS_URI", cell_->uri("service-main")}});
+  const CatalogueName upwind{"nrel_upwind"};
+  const test::LocalDomain a(kValidDomain, cell_->uri("client-a"));
+  const test::LocalDomain b(kRevokedLaterDomain, cell_->uri("client-b"));
+  client::Client valid({kValidDomain, std::chrono::seconds(2), cell_->client_prefix("a")});
+  client::Client revoked({kRevokedLaterDomain, std::chrono::seconds(2), cell_->client_prefix("b")});
+  ASSERT_TRUE(valid.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(30)));
+  ASSERT_TRUE(revoked.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(30)));
+  EXPECT_GT(valid.call<Calculation::kJamAngle>({upwind}).jam.angle_rad, 0.0);
+  EXPECT_GT(revoked.call<Calculation::kJamAngle>({upwind}).jam.angle_rad, 0.0);  // before
+
+  const std::vector<client::InstanceInfo> before = valid.instances();
+  ASSERT_EQ(before.size(), 1u);
+  cell_->rerun("--revoke client-b");  // a new ca/identity_crl.pem, read by no process yet
+  const Clock::time_point hup = Clock::now();
+  service.signal(SIGHUP);
+  // The valid client calls back to back (each call up to 2 s) until the new instance (a new
+  // participant, so a new id) has answered it; bounded at 30 s. The interruption is the longest
+  // time between two answers (the first counted from the signal).
+  Clock::time_point last_answer = hup;
+  double interruption_s = 0.0;
+  int failed_calls = 0;
+  bool new_instance_answered = false;
+  while (!new_instance_answered && Clock::now() - hup < std::chrono::seconds(30)) {
+    const std::vector<client::InstanceInfo> now_known = valid.instances();
+    const bool only_new = now_known.size() == 1 && now_known[0].id != before[0].id;
+    try {
+      valid.call<Calculation::kJamAngle>({upwind});
+      const Clock::time_point answered_at = Clock::now();
+      interruption_s = std::max(interruption_s,
+                                std::chrono::duration<double>(answered_at - last_answer).count());
+      last_answer = answered_at;
+      new_instance_answered = only_new;
+    } catch (const std::exception&) {
+      failed_calls += 1;
+    }
+  }
+  std::printf("SIGHUP: the valid client went %.3f s without an answer (%d calls failed), then "
+              "was answered by the new instance\n",
+              interruption_s, failed_calls);
+  ASSERT_TRUE(new_instance_answered)
+      << "the valid client was not answered by a new instance within 30 s of the SIGHUP: "
+      << cli::testing::read_file(log);
+  EXPECT_TRUE(service.running());
+  // After the interruption: the valid client keeps being answered, 20 of 20; the revoked one
+  // gets nothing, every call times out (2 s each, 3 calls: bounded).
+  int answered = 0;
+  for (int k = 0; k < 20; ++k) {
+    try {
+      valid.call<Calculation::kJamAngle>({upwind});
+      answered += 1;
+    } catch (const std::exception&) {
+    }
+  }
+  EXPECT_EQ(answered, 20);
+  const std::uint64_t replies_before = revoked.counters().replies;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_THROW(revoked.call<Calculation::kJamAngle>({upwind}), client::Timeout) << k;
+  }
+  EXPECT_EQ(revoked.counters().replies, replies_before);
+  EXPECT_TRUE(revoked.instances().empty());
 }
 
 }  // namespace

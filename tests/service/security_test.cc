@@ -11,6 +11,9 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
+#include <algorithm>
+#include <cstdio>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -188,6 +191,81 @@ void expect_forgeries_refused(client::Client& victim, dds_entity_t forger_partic
   EXPECT_EQ(victim.counters().replies, 3u);
 }
 
+
+/// What a victim saw while another participant sent requests carrying its client_id.
+struct VictimUnderForgery {
+  int answered = 0;
+  int lost = 0;             ///< calls that failed (timeouts: the service dropped them)
+  int forgeries = 0;        ///< requests the forger sent with the victim's id
+  double p50_ms = 0.0, p99_ms = 0.0, max_ms = 0.0;  ///< the answered calls' round trips
+};
+
+constexpr int kVictimCalls = 150;
+
+/// Issue 23, finding 1: `victim` (whose only reply reader is for induced moments) makes
+/// kVictimCalls induced-moment calls, 20 ms apart, while a participant of its own sends, every
+/// 10th call, a jam-angle request carrying the victim's client_id: a calculation the victim has
+/// no reply reader for. Before the fix the service parked each for 1 s, then put the victim's
+/// whole id on the 5 s departed hold, and the victim's calls timed out. Bounded: 60 s in all.
+VictimUnderForgery run_victim_under_forgery(client::Client& victim, dds_entity_t forger_participant,
+                                            std::uint64_t forger_client_id) {
+  const client::Client::Request<Calculation::kInducedMoments> moments{
+      CatalogueName{"nrel_upwind"}, {1.5e6, 0.0079, 0.0, 0.12}, {}};
+  EXPECT_TRUE(victim.wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(30)));
+  victim.call<Calculation::kInducedMoments>(moments);  // its reply reader matched
+  const std::vector<client::InstanceInfo> instances = victim.instances();
+  EXPECT_EQ(instances.size(), 1u);
+  VictimUnderForgery run;
+  if (instances.size() != 1) return run;
+  RawRequester forger(forger_participant, instances[0].id, forger_client_id);
+  EXPECT_TRUE(forger.wait_ready());
+  std::vector<double> latencies_ms;
+  const Clock::time_point give_up = in_seconds(60);
+  for (int k = 0; k < kVictimCalls && Clock::now() < give_up; ++k) {
+    if (k % 10 == 0) {
+      forger.send(victim.client_id(), 1000 + static_cast<std::uint64_t>(k));
+      run.forgeries += 1;
+    }
+    const Clock::time_point start = Clock::now();
+    try {
+      victim.call<Calculation::kInducedMoments>(moments);
+      run.answered += 1;
+      latencies_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    } catch (const std::exception&) {
+      run.lost += 1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::sort(latencies_ms.begin(), latencies_ms.end());
+  if (!latencies_ms.empty()) {
+    const auto at = [&](double q) {
+      return latencies_ms[std::min(latencies_ms.size() - 1,
+                                   static_cast<std::size_t>(q * latencies_ms.size()))];
+    };
+    run.p50_ms = at(0.50);
+    run.p99_ms = at(0.99);
+    run.max_ms = latencies_ms.back();
+  }
+  std::printf("victim: %d of %d answered, %d lost; round trip p50 %.2f ms, p99 %.2f ms, max %.2f "
+              "ms; %d requests carrying its id from another participant\n",
+              run.answered, kVictimCalls, run.lost, run.p50_ms, run.p99_ms, run.max_ms,
+              run.forgeries);
+  return run;
+}
+
+/// Every call answered, none slowed to a timeout, and each forgery refused as forged (logged).
+void expect_victim_unharmed(const VictimUnderForgery& run, const std::string& service_log) {
+  EXPECT_EQ(run.answered, kVictimCalls);
+  EXPECT_EQ(run.lost, 0);
+  // The hold would show as 1 s timeouts; 250 ms leaves room for a busy shared host.
+  EXPECT_LT(run.p99_ms, 250.0);
+  EXPECT_TRUE(protocol::wait_until(
+      [&] { return lines_containing(service_log, kForgedLogText) >= run.forgeries; },
+      in_seconds(10)))
+      << lines_containing(service_log, kForgedLogText) << " of " << run.forgeries
+      << " forgeries logged as forged";
+}
+
 // ---- the script ---------------------------------------------------------------------------
 
 class SecurityScript : public test::SecureCellTest {
@@ -244,6 +322,29 @@ TEST_F(SecurityScript, ABadArgumentIsRefusedNamingItsValueAndTheAllowedForm) {
   EXPECT_EQ(bad_days.exit_code, 1);
   EXPECT_NE(bad_days.output.find("--days \"0\": allowed an integer in [1, 36500]"),
             std::string::npos) << bad_days.output;
+}
+
+TEST_F(SecurityScript, AnOperatorNeedsItsTestCellsAndEachMustBeATestCellName) {
+  const std::string script = GC_SOURCE_DIR "/deploy/security/make-security.sh " + cell_->dir();
+  const auto no_cells = test::run_shell(script + " --operator o");
+  EXPECT_EQ(no_cells.exit_code, 1);
+  EXPECT_NE(no_cells.output.find("--operator o: needs --cells CELL[,CELL]... after it"),
+            std::string::npos) << no_cells.output;
+  const auto pattern = test::run_shell(script + " --operator o --cells 'a,b*'");
+  EXPECT_EQ(pattern.exit_code, 1);
+  EXPECT_NE(pattern.output.find("--cells \"a,b*\": test cell \"b*\" not allowed; allowed "
+                                "CELL[,CELL]..., each 1-64 of A-Z a-z 0-9 . _ -"),
+            std::string::npos) << pattern.output;
+  const auto alone = test::run_shell(script + " --cells a");
+  EXPECT_EQ(alone.exit_code, 1);
+  EXPECT_NE(alone.output.find("--cells \"a\": allowed only after --operator NAME"),
+            std::string::npos) << alone.output;
+  // A good one: the grant names exactly the two cells' partitions.
+  ASSERT_EQ(test::run_shell(script + " --client a --client b --operator o --cells c,dyno.5").exit_code, 0);
+  const std::string grant = cli::testing::read_file(cell_->dir() + "/operator-o/permissions.xml");
+  EXPECT_NE(grant.find("<partition>gearcoupling.live.cell.c</partition>"
+                       "<partition>gearcoupling.live.cell.dyno.5</partition>"),
+            std::string::npos) << grant;
 }
 
 // ---- the secure service -------------------------------------------------------------------
@@ -451,6 +552,19 @@ TEST_F(SecureService, AForgedClientIdIsRefusedAndItsOwnerGetsNothing) {
                            protocol::random_id_with_prefix(cell_->client_prefix("b")), log_path());
 }
 
+TEST_F(SecureService, AnotherClientsRequestsCarryingAVictimsIdCostTheVictimNothing) {
+  start_service();
+  const auto a = domain(kClientADomain, "client-a");
+  const auto b = domain(kClientBDomain, "client-b");
+  client::ClientOptions options = client_options(kClientADomain, "a");
+  options.timeout = std::chrono::seconds(1);  // a dropped call shows as a 1 s timeout
+  client::Client victim(options);
+  const Entity forger = b->participant();
+  const VictimUnderForgery run = run_victim_under_forgery(
+      victim, forger.get(), protocol::random_id_with_prefix(cell_->client_prefix("b")));
+  expect_victim_unharmed(run, log_path());
+}
+
 // ---- without security ---------------------------------------------------------------------
 
 TEST(ReplyRouting, AForgedClientIdIsRefusedWithoutSecurityToo) {
@@ -460,6 +574,22 @@ TEST(ReplyRouting, AForgedClientIdIsRefusedWithoutSecurityToo) {
   const Entity forger(check_dds(dds_create_participant(test::test_domain(), nullptr, nullptr),
                                 "dds_create_participant"));
   expect_forgeries_refused(victim, forger.get(), protocol::random_id(), log);
+}
+
+}  // namespace
+}  // namespace gc
+
+namespace gc {
+namespace {
+
+TEST(ReplyRouting, AnotherParticipantsRequestsCarryingAVictimsIdCostTheVictimNothing) {
+  const std::string log = cli::testing::temp_path("capability_service_log");
+  test::ServiceProcess service({}, log);
+  client::Client victim({test::test_domain(), std::chrono::seconds(1)});
+  const Entity forger(check_dds(dds_create_participant(test::test_domain(), nullptr, nullptr),
+                                "dds_create_participant"));
+  const VictimUnderForgery run = run_victim_under_forgery(victim, forger.get(), protocol::random_id());
+  expect_victim_unharmed(run, log);
 }
 
 }  // namespace
