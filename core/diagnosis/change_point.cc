@@ -7,12 +7,29 @@ namespace gc {
 namespace {
 
 constexpr Eigen::Index kFewestRows = 40;
-/// The standardised CUSUM maximum that a single change must exceed, in units of the noise's
-/// correlation (sqrt of its variance inflation): the supremum of a Brownian bridge over the middle
-/// 90 % exceeds 4 about once in ten thousand. Without it, the strongest wander of pure noise is
+/// The standardised CUSUM maximum that a single change must exceed, in units of the long-run
+/// correlation of what the step leaves (sqrt of its variance inflation): the supremum of a
+/// Brownian bridge over the middle 90 % exceeds 5 about once in a million (4 let the wander of a
+/// random-walk zero through as a step once in the independent cases). Without it, the strongest wander of pure noise is
 /// offered, and since its time was picked on every row, the cross-validation cannot reject it.
-constexpr double kLeastStatistic = 4.0;
-constexpr Eigen::Index kEdgeShare = 20;  ///< a change leaves at least 1/20 of the rows either side
+constexpr double kLeastStatistic = 5.0;
+constexpr Eigen::Index kEdgeShare = 20;  ///< a change leaves at least 1/20 of the rows before it
+/// ... and happens in the first 70 % of them: a term in time must predict the last fifth from what
+/// comes before it (formula_search.cc), and a step that late is fitted on a few seconds after it,
+/// which a wander of the zero fits as well (a random walk near the end was offered as a step).
+constexpr double kLatestShare = 0.7;
+
+/// The variance of the means of 50 contiguous blocks, times the block length, over the variance:
+/// how much the correlation of `x` (of any length shorter than a block) inflates a mean's variance.
+double long_run_inflation(const Eigen::VectorXd& x) {
+  constexpr Eigen::Index kBlocks = 50;
+  const Eigen::Index length = x.size() / kBlocks;
+  const double variance = x.squaredNorm() / static_cast<double>(x.size());
+  if (length < 2 || !(variance > 0.0)) return 1.0;
+  double means = 0.0;
+  for (Eigen::Index b = 0; b < kBlocks; ++b) means += std::pow(x.segment(b * length, length).mean(), 2);
+  return std::max(1.0, static_cast<double>(length) * means / static_cast<double>(kBlocks) / variance);
+}
 
 }  // namespace
 
@@ -28,19 +45,31 @@ std::optional<double> dominant_step_time(std::span<const RecordedSample> observa
   double best = 0.0;
   Eigen::Index at = -1;
   for (int c = 0; c < 2; ++c) {
-    const double scale = e.col(c).norm() / std::sqrt(static_cast<double>(n));
-    if (!(scale > 0.0)) continue;
-    // The residual's own lag-1 correlation: a step inflates it too, but far less than it lifts C.
-    const double phi = std::clamp(e.col(c).head(n - 1).dot(e.col(c).tail(n - 1)) / e.col(c).squaredNorm(), 0.0, 0.99);
-    const double least = kLeastStatistic * std::sqrt((1.0 + phi) / (1.0 - phi));
-    const double total = e.col(c).sum();
-    double partial = 0.0;
+    const Eigen::VectorXd x = e.col(c);
+    // The strongest change of this channel (the CUSUM maximum over the middle rows) ...
+    const double total = x.sum();
+    double partial = 0.0, strongest = 0.0;
+    Eigen::Index k_best = -1;
     for (Eigen::Index k = 1; k < n; ++k) {
-      partial += e(k - 1, c);
-      if (k < n / kEdgeShare || n - k < n / kEdgeShare) continue;
+      partial += x(k - 1);
+      if (k < n / kEdgeShare || k > kLatestShare * static_cast<double>(n)) continue;
       const double kk = static_cast<double>(k), nn = static_cast<double>(n);
-      const double statistic = std::abs(partial - kk / nn * total) / std::sqrt(kk * (nn - kk) / nn) / scale;
-      if (statistic > least && statistic / least > best) { best = statistic / least; at = k; }
+      const double cusum = std::abs(partial - kk / nn * total) / std::sqrt(kk * (nn - kk) / nn);
+      if (cusum > strongest) { strongest = cusum; k_best = k; }
+    }
+    if (k_best < 0) continue;
+    // ... judged against what is left once that one step is taken out: its scale and its long-run
+    // inflation (the noise's correlation of any length). A real step leaves noise; a wandering
+    // zero (a random walk) leaves a wander whose long-run variance dwarfs the step's statistic.
+    Eigen::VectorXd left = x;
+    left.head(k_best).array() -= left.head(k_best).mean();
+    left.tail(n - k_best).array() -= left.tail(n - k_best).mean();
+    const double scale = left.norm() / std::sqrt(static_cast<double>(n));
+    if (!(scale > 0.0)) continue;
+    const double statistic = strongest / scale / std::sqrt(long_run_inflation(left));
+    if (statistic > kLeastStatistic && statistic / kLeastStatistic > best) {
+      best = statistic / kLeastStatistic;
+      at = k_best;
     }
   }
   if (at < 0) return std::nullopt;

@@ -3,8 +3,10 @@
 // CUSUM statistic of a single change in mean,
 //   C(k) = |S_k - (k / n) S_n| / sqrt(k (n - k) / n),   S_k the sum of the first k values,
 // the likelihood-ratio statistic for one change point under white noise (Page 1954; Hinkley 1970),
-// over changes that leave at least a twentieth of the rows on either side. The maximum over both
-// channels gives the time (halfway between the two rows it separates). The discrepancy stage offers
+// over changes after the first twentieth of the rows and within the first 70 % (the forward test
+// of a step needs rows after it), standardised by the scale
+// and the long-run inflation (block means) of what the step leaves; offered when it exceeds 4. The
+// larger over both channels gives the time (halfway between the two rows it separates). The discrepancy stage offers
 // step terms at that time on each channel (core/effects/expression_terms.h); whether a step stays is
 // for its held-out test and the drift rule (a step must predict whole fifths of the recording it
 // was not fitted on), which judge it against the coloured noise that CUSUM alone would take for
