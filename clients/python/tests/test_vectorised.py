@@ -117,8 +117,9 @@ def test_induced_moments_many_equals_gearcoupling_batch(cli, tmp_path):
     cases.to_csv(tmp_path / "cases.csv", index=False)
     cli("batch", "--in", str(tmp_path / "cases.csv"), "--out", str(tmp_path / "out.csv"))
     batch = pd.read_csv(tmp_path / "out.csv", float_precision="round_trip")
-    ours = gc.induced_moments_many("nrel_upwind", torque, zeta_deg * np.pi / 180.0,
-                                   beta_deg * np.pi / 180.0, mu=mu)
+    # batch reads its _deg columns as recordings do: deg * (pi / 180), one constant.
+    ours = gc.induced_moments_many("nrel_upwind", torque, zeta_deg * (np.pi / 180.0),
+                                   beta_deg * (np.pi / 180.0), mu=mu)
     for column in batch.columns:
         if column in ours:
             np.testing.assert_array_equal(ours[column], batch[column].to_numpy(), err_msg=column)
