@@ -276,8 +276,9 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
                       settings.cross_validation.fold_seed),
         test_block_rows(round.noise, rows.size(), signature_rows.size(), settings));
     const Eigen::MatrixX2d dense = select_rows(residual, rows, signature_rows);
-    std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds,
-                                                              formula_settings(round, settings));
+    FormulaSettings fast = formula_settings(round, settings);
+    fast.fast_terms_only = true;
+    std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds, fast);
     if (formula && claimable(*formula, pooled_mean_square(dense), noise_ms, settings)) {
       round.formula = std::move(formula);
       round.formula_chosen = true;

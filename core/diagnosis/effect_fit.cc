@@ -97,9 +97,9 @@ std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const Fit
   for (const ParameterValues& hint : settings.hints) {
     std::vector<double> values;
     bool mine = !hint.empty();
-    for (const auto& [name, value] : hint) {
+    for (const auto& named : hint) {  // not a structured binding: clang 14 cannot capture one
       mine = mine && std::any_of(problem.box.info().parameters.begin(), problem.box.info().parameters.end(),
-                                 [&](const ParameterSpec& p) { return p.name == name; });
+                                 [&](const ParameterSpec& p) { return p.name == named.first; });
     }
     if (!mine) continue;
     for (const ParameterSpec& spec : problem.box.info().parameters) {

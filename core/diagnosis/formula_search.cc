@@ -20,6 +20,8 @@ constexpr double kRidge = 1e-4;
 constexpr double kLeastNewShare = 1e-2;
 /// The forward test a step must pass (block-paired t over the last fifth), the claim's own bar.
 constexpr double kStepForwardT = 3.5;
+/// A cycle this long or longer drifts like a slow term (FormulaSettings::fast_terms_only) [s].
+constexpr double kSlowestFastCycleS = 10.0;
 
 /// Rows of the stacked design for the positions `at` (y rows, then z rows).
 Eigen::MatrixXd stacked_rows(const Eigen::MatrixXd& m, const std::vector<std::size_t>& at, Eigen::Index n) {
@@ -183,6 +185,23 @@ void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen:
   }
 }
 
+/// The design without the terms that vary as slowly as a drift (FormulaSettings::fast_terms_only).
+TermDesign fast_terms(TermDesign design) {
+  TermDesign out;
+  std::vector<Eigen::Index> keep;
+  for (std::size_t j = 0; j < design.terms.size(); ++j) {
+    const std::string& name = design.terms[j];
+    const ExpressionTerm* term = find_expression_term(name);
+    const bool slow_cycle = term && term->period_s >= kSlowestFastCycleS;
+    if (slow_cycle || (is_in_time_alone(name) && !(term && term->period_s > 0.0))) continue;
+    out.terms.push_back(name);
+    keep.push_back(static_cast<Eigen::Index>(j));
+  }
+  out.columns.resize(design.columns.rows(), static_cast<Eigen::Index>(keep.size()));
+  for (std::size_t k = 0; k < keep.size(); ++k) out.columns.col(static_cast<Eigen::Index>(k)) = design.columns.col(keep[k]);
+  return out;
+}
+
 }  // namespace
 
 TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
@@ -305,8 +324,9 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                 const Folds& folds, const FormulaSettings& settings) {
-  const TermDesign design = term_design(observations, rows, residual,
-                                        settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
+  TermDesign design = term_design(observations, rows, residual,
+                                  settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
+  if (settings.fast_terms_only) design = fast_terms(std::move(design));
   if (design.terms.empty()) return std::nullopt;
   // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
   const Eigen::VectorXd scale =

@@ -35,6 +35,12 @@ struct FormulaSettings {
   /// rows dense enough to see them (time_terms_for). Unset: found on the rows the formula is
   /// searched on.
   std::optional<std::vector<std::string>> time_terms;
+  /// Offer only terms that vary faster than a slow drift: no t, t^2, t^3, steps, temperature or
+  /// cycles of 10 s and longer. For the search on the dense rows of a long recording: more rows
+  /// add independent samples of a fast term, not of a slow one, whose effective count is set by
+  /// the noise's drift; there a slow term fitted the bridge's wander (a temperature term and a step
+  /// beside a 0.4 Hz pickup).
+  bool fast_terms_only = false;
 };
 
 /// The time_cycle and step terms of `residual` on `rows` (in time order).
