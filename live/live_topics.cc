@@ -25,8 +25,7 @@ Entity make_topic(dds_entity_t participant, const dds_topic_descriptor_t& type, 
 }  // namespace
 
 Entity make_participant(int domain) {
-  return Entity(check_dds(dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr),
-                          "dds_create_participant"));
+  return Entity(protocol::create_participant(domain, protocol::dds_config()));
 }
 
 Entity make_measurement_topic(dds_entity_t participant) {

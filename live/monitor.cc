@@ -50,9 +50,7 @@ Monitor::Monitor(const MonitorOptions& options)
     require_test_cell_name(test_cell);
     models_.emplace(test_cell, load_cell_model(model, options.models_dir, options.catalog_dir));
   }
-  participant_ = Entity(check_dds(
-      dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
-      "dds_create_participant"));
+  participant_ = Entity(protocol::create_participant(options.domain, protocol::dds_config()));
   const dds_entity_t participant = participant_.get();
   // Measurements and swaps: every test cell's own partition, and the shared one of older
   // publishers (docs/protocol.md, "The live test cell").

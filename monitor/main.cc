@@ -15,6 +15,7 @@
 #include "core/model_error.h"
 #include "live/monitor.h"
 #include "parallel/shutdown_signals.h"
+#include "protocol/dds_config.h"
 
 namespace {
 
@@ -89,9 +90,10 @@ int main(int argc, char** argv) {
     for (bool reload = true; reload;) {
       reload = false;
       gc::live::Monitor monitor(options);
-      spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s",
+      spdlog::info("monitor {:016x} on domain {}, model {} by default, window {} s, DDS "
+                   "configuration: {}",
                    monitor.monitor_id(), options.domain, options.default_model,
-                   options.cell.window_s);
+                   options.cell.window_s, gc::protocol::describe(gc::protocol::dds_config()));
       std::thread waiter([&] {
         int signal = 0;
         sigwait(&signals, &signal);

@@ -4,6 +4,7 @@
 
 #include <dds/dds.h>
 
+#include "protocol/dds_config.h"
 #include "protocol/dds_error.h"
 
 #include <cstdint>
@@ -63,5 +64,11 @@ class Qos {
  private:
   dds_qos_t* qos_;
 };
+
+/// A participant on `domain` with `config` (protocol/dds_config.h). Cyclone reads
+/// CYCLONEDDS_URI itself, so the environment's and the default configuration need nothing; the
+/// installed one is given to dds_create_domain(), whose domain then lives as long as the process
+/// (later participants on `domain` join it). Throws DdsError.
+dds_entity_t create_participant(int domain, const DdsConfig& config);
 
 }  // namespace gc::protocol

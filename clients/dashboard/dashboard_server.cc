@@ -49,9 +49,7 @@ std::map<std::string, std::string> parameters_of(const httplib::Request& request
 DashboardServer::DashboardServer(DashboardOptions options)
     : options_(std::move(options)),
       chart_js_(analysis::chart_js()),
-      participant_(protocol::check_dds(
-          dds_create_participant(static_cast<dds_domainid_t>(options_.domain), nullptr, nullptr),
-          "dds_create_participant")),
+      participant_(protocol::create_participant(options_.domain, protocol::dds_config())),
       instances_(participant_.get()),
       cells_(participant_.get(), cell_board_options(options_)),
       query_(query_client_options(options_)),

@@ -10,6 +10,7 @@
 #include "calculators/client_id_prefix.h"
 #include "clients/dashboard/dashboard_server.h"
 #include "parallel/shutdown_signals.h"
+#include "protocol/dds_config.h"
 #include "protocol/domain_id.h"
 
 namespace {
@@ -100,8 +101,9 @@ int main(int argc, char** argv) {
     // The port on stdout, alone on its line, for scripts that asked for port 0.
     std::printf("listening on http://%s:%d/\n", options.listen_host.c_str(), server.port());
     std::fflush(stdout);
-    spdlog::info("dashboard on domain {} at http://{}:{}/", options.domain, options.listen_host,
-                 server.port());
+    spdlog::info("dashboard on domain {} at http://{}:{}/, DDS configuration: {}", options.domain,
+                 options.listen_host, server.port(),
+                 gc::protocol::describe(gc::protocol::dds_config()));
     std::thread signal_waiter([&server, signals] {
       int signal = 0;
       sigwait(&signals, &signal);

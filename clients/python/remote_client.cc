@@ -13,6 +13,7 @@
 #include "clients/python/coupling_argument.h"
 #include "clients/python/result_object.h"
 #include "clients/remote/client.h"
+#include "protocol/dds_config.h"
 #include "core/model_error.h"
 
 namespace py = pybind11;
@@ -128,10 +129,8 @@ CaseTableObject run_remote_cases(client::Client& client, Calculation calculation
     std::deque<std::pair<std::size_t, Pending>> window;
     std::exception_ptr timeout;
     if (!client.wait_for_service(calculation, client.options().timeout)) {
-      timeout = std::make_exception_ptr(client::Timeout(
-          "no gearcoupling-service instance ready within " +
-          std::to_string(client.options().timeout.count()) + " ms on DDS domain " +
-          std::to_string(client.options().domain)));
+      timeout = std::make_exception_ptr(client::Timeout(protocol::no_instance_message(
+          client.options().domain, client.options().timeout, client.dds_configuration())));
     }
     const auto record_failure = [&](std::size_t index) {
       try {

@@ -43,4 +43,6 @@ std::uint64_t Client::client_id() const { return core_->client_id(); }
 
 const ClientOptions& Client::options() const { return core_->options(); }
 
+const std::string& Client::dds_configuration() const { return core_->dds_configuration(); }
+
 }  // namespace gc::client

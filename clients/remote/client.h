@@ -136,6 +136,10 @@ class Client {
   ClientCounters counters() const;
   std::uint64_t client_id() const;
   const ClientOptions& options() const;
+  /// The Cyclone configuration this client joined its domain with, in words:
+  /// "CYCLONEDDS_URI=<uri>", "<uri> (installed; CYCLONEDDS_URI unset)" or "Cyclone's default
+  /// (CYCLONEDDS_URI unset)" (docs/deploy.md, "Which Cyclone configuration").
+  const std::string& dds_configuration() const;
 
  private:
   std::unique_ptr<ClientCore> core_;

@@ -78,9 +78,8 @@ struct ClientCore::Instance {
 ClientCore::ClientCore(ClientOptions options)
     : options_(options),
       client_id_(protocol::random_id_with_prefix(options.client_id_prefix)),
-      participant_(check_dds(
-          dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
-          "dds_create_participant")),
+      dds_configuration_(protocol::describe(protocol::dds_config())),
+      participant_(protocol::create_participant(options.domain, protocol::dds_config())),
       request_topics_(protocol::make_request_topics(participant_.get())),
       reply_topics_(protocol::make_reply_topics(participant_.get())),
       status_topic_(protocol::make_status_topic(participant_.get())) {
@@ -304,10 +303,10 @@ void ClientCore::send(std::uint64_t sequence, Pending pending) {
       const std::size_t known = instances_.size();
       lock.unlock();
       pending.fail(std::make_exception_ptr(Timeout(
-          room ? fmt::format("{} request {}: no gearcoupling-service instance ready on domain {} "
-                             "within {} ms ({} instance(s) discovered)",
-                             protocol::to_string(pending.calculation), sequence, options_.domain,
-                             pending.timeout.count(), known)
+          room ? fmt::format("{} request {}: {}", protocol::to_string(pending.calculation),
+                             sequence,
+                             protocol::no_instance_message(options_.domain, pending.timeout,
+                                                           dds_configuration_, known))
                : fmt::format("{} request {}: not sent within {} ms: {} requests of this client "
                              "were in flight all that time, none answered",
                              protocol::to_string(pending.calculation), sequence,

@@ -63,6 +63,7 @@ class ClientCore {
   ClientCounters counters() const;
   std::uint64_t client_id() const { return client_id_; }
   const ClientOptions& options() const { return options_; }
+  const std::string& dds_configuration() const { return dds_configuration_; }
 
  private:
   struct Pending;
@@ -106,6 +107,7 @@ class ClientCore {
 
   ClientOptions options_;
   std::uint64_t client_id_;
+  std::string dds_configuration_;  ///< protocol::describe() of the configuration joined with
   protocol::Entity participant_;
   std::array<protocol::Entity, 5> request_topics_;
   std::array<protocol::Entity, 5> reply_topics_;

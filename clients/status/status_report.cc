@@ -40,9 +40,8 @@ void print_once(InstanceBoard& instances, CellBoard& cells, bool json, std::FILE
 
 int print_status(const StatusReportOptions& options, std::FILE* out,
                  const std::function<bool()>& stop) {
-  const protocol::Entity participant(protocol::check_dds(
-      dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
-      "dds_create_participant"));
+  const protocol::Entity participant(
+      protocol::create_participant(options.domain, protocol::dds_config()));
   InstanceBoard instances(participant.get());
   CellBoard cells(participant.get());
   if (sleep_unless_stopped(options.discovery, stop)) return 0;

@@ -107,6 +107,11 @@ TEST(RemoteCli, TimeoutBoundsTheWholeCommandWhenNoServiceRuns) {
     EXPECT_NE(run.result.err.find("no gearcoupling-service instance ready"), std::string::npos)
         << run.result.err;
     EXPECT_NE(run.result.err.find("within 2000 ms"), std::string::npos) << run.result.err;
+    // The configuration used (service_process.cc sets CYCLONEDDS_URI) and how to start a service.
+    EXPECT_NE(run.result.err.find("DDS configuration: CYCLONEDDS_URI=file://"), std::string::npos)
+        << run.result.err;
+    EXPECT_NE(run.result.err.find("gearcoupling-service --domain"), std::string::npos)
+        << run.result.err;
     EXPECT_GE(run.seconds, kTimeoutS - 0.05);
     EXPECT_LT(run.seconds, kTimeoutS + kTimeoutMarginS);
   }
