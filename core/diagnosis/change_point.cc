@@ -1,5 +1,7 @@
 #include "core/diagnosis/change_point.h"
 
+#include "core/diagnosis/noise_estimate.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,18 +20,6 @@ constexpr Eigen::Index kEdgeShare = 20;  ///< a change leaves at least 1/20 of t
 /// comes before it (formula_search.cc), and a step that late is fitted on a few seconds after it,
 /// which a wander of the zero fits as well (a random walk near the end was offered as a step).
 constexpr double kLatestShare = 0.7;
-
-/// The variance of the means of 50 contiguous blocks, times the block length, over the variance:
-/// how much the correlation of `x` (of any length shorter than a block) inflates a mean's variance.
-double long_run_inflation(const Eigen::VectorXd& x) {
-  constexpr Eigen::Index kBlocks = 50;
-  const Eigen::Index length = x.size() / kBlocks;
-  const double variance = x.squaredNorm() / static_cast<double>(x.size());
-  if (length < 2 || !(variance > 0.0)) return 1.0;
-  double means = 0.0;
-  for (Eigen::Index b = 0; b < kBlocks; ++b) means += std::pow(x.segment(b * length, length).mean(), 2);
-  return std::max(1.0, static_cast<double>(length) * means / static_cast<double>(kBlocks) / variance);
-}
 
 }  // namespace
 

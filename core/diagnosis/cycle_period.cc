@@ -1,5 +1,7 @@
 #include "core/diagnosis/cycle_period.h"
 
+#include "core/diagnosis/time_step.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -91,15 +93,6 @@ class PeriodScore {
   Eigen::ArrayXd inputs_left_squares_;
 };
 
-/// The median spacing of successive distinct times [s] (duplicated time stamps are skipped).
-double typical_spacing(const Eigen::VectorXd& t) {
-  std::vector<double> d;
-  for (Eigen::Index k = 1; k < t.size(); ++k) if (t(k) > t(k - 1)) d.push_back(t(k) - t(k - 1));
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return d[d.size() / 2];
-}
-
 /// The summed power of both channels of `e` (rows at times t) per frequency bin of a uniform grid of
 /// spacing dt, zero-padded to at least twice its length. Bin j is the frequency j / (L dt).
 std::vector<double> periodogram(const Eigen::VectorXd& t, const Eigen::MatrixX2d& e, double dt, std::size_t& length) {
@@ -181,7 +174,7 @@ std::optional<double> dominant_cycle_period(std::span<const RecordedSample> obse
   if (n < 8) return std::nullopt;
   Eigen::VectorXd t(n);
   for (Eigen::Index k = 0; k < n; ++k) t(k) = observations[rows[static_cast<std::size_t>(k)]].input.time_s;
-  const double span = t.maxCoeff() - t.minCoeff(), dt = typical_spacing(t);
+  const double span = t.maxCoeff() - t.minCoeff(), dt = typical_time_step(t);
   if (!(dt > 0.0) || !(span > 4.0 * dt)) return std::nullopt;
   const double longest = span / kCyclesInSpanLeast;
   const PeriodScore score(t, input_columns(observations, rows), residual);

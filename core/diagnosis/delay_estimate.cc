@@ -1,5 +1,7 @@
 #include "core/diagnosis/delay_estimate.h"
 
+#include "core/diagnosis/time_step.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -44,11 +46,8 @@ std::optional<double> moment_delay_estimate(std::span<const RecordedSample> obse
     measured.row(k) << o.measured.y_nm, o.measured.z_nm;
   }
   const Eigen::MatrixX2d model = measured - residual;
-  std::vector<double> gaps;
-  for (Eigen::Index k = 1; k < n; ++k) if (t(k) > t(k - 1)) gaps.push_back(t(k) - t(k - 1));
-  if (gaps.empty()) return std::nullopt;
-  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
-  const double step = 0.5 * gaps[gaps.size() / 2];
+  const double step = 0.5 * typical_time_step(t);
+  if (!(step > 0.0)) return std::nullopt;
   const double none = shifted_squares(t, measured, model, 0.0);
   double best = none, best_tau = 0.0;
   for (double tau = kEarliestS; tau <= kLatestS + 1e-9; tau += step) {

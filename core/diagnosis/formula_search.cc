@@ -139,7 +139,7 @@ std::pair<double, double> block_mean_square(const Eigen::MatrixX2d& r, const Fol
 /// or in the oil temperature, which rises through a test as slowly as a bridge's zero drifts (a
 /// 15 N·m/deg C term took a drift's share on recordings with no temperature effect). A real
 /// temperature effect predicts forward as well as a real step does.
-bool is_in_time_alone(const std::string& name) {
+bool drifts_slowly(const std::string& name) {
   return name.rfind("time", 0) == 0 || name.rfind("step_at_", 0) == 0 || name.rfind("temperature", 0) == 0;
 }
 
@@ -169,7 +169,7 @@ void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen:
   for (std::size_t i = last; i < n; ++i) block_of.push_back(static_cast<int>((i - last) * kBlocks / (n - last)));
   const auto last_fifth = [&](const Eigen::MatrixX2d& r) { return Eigen::MatrixX2d(r.bottomRows(static_cast<Eigen::Index>(n - last))); };
   for (std::size_t j = 0; j < support.size(); ++j) {
-    if (!support[j] || !is_in_time_alone(names[j])) continue;
+    if (!support[j] || !drifts_slowly(names[j])) continue;
     const bool polynomial = names[j].rfind("time", 0) == 0 && names[j].rfind("time_cycle", 0) != 0;
     const Folds& folds = polynomial ? after_a_gap : after_four_fifths;
     std::vector<bool> without = support;
@@ -193,7 +193,7 @@ TermDesign fast_terms(TermDesign design) {
     const std::string& name = design.terms[j];
     const ExpressionTerm* term = find_expression_term(name);
     const bool slow_cycle = term && term->period_s >= kSlowestFastCycleS;
-    if (slow_cycle || (is_in_time_alone(name) && !(term && term->period_s > 0.0))) continue;
+    if (slow_cycle || (drifts_slowly(name) && !(term && term->period_s > 0.0))) continue;
     out.terms.push_back(name);
     keep.push_back(static_cast<Eigen::Index>(j));
   }

@@ -143,6 +143,16 @@ std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, dou
   return out;
 }
 
+double long_run_inflation(const Eigen::VectorXd& x) {
+  constexpr Eigen::Index kBlocks = 50;
+  const Eigen::Index length = x.size() / kBlocks;
+  const double variance = x.squaredNorm() / static_cast<double>(x.size());
+  if (length < 2 || !(variance > 0.0)) return 1.0;
+  double means = 0.0;
+  for (Eigen::Index b = 0; b < kBlocks; ++b) means += std::pow(x.segment(b * length, length).mean(), 2);
+  return std::max(1.0, static_cast<double>(length) * means / static_cast<double>(kBlocks) / variance);
+}
+
 double pooled_mean_square(const Eigen::MatrixX2d& residual) {
   return residual.rows() == 0 ? 0.0 : residual.squaredNorm() / (2.0 * static_cast<double>(residual.rows()));
 }

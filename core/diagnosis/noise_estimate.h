@@ -59,4 +59,10 @@ std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, dou
 /// Both channels' mean square over the rows [N·m²].
 double pooled_mean_square(const Eigen::MatrixX2d& residual);
 
+/// How much the correlation of `x` (rows in time order, centred) inflates the variance of a mean
+/// over a contiguous stretch: the variance of the means of 50 blocks, times the block length, over
+/// the variance of the samples (a block-means estimate of the long-run variance, which sees a
+/// correlation of any length shorter than a block). At least 1; 1 for fewer than 100 rows.
+double long_run_inflation(const Eigen::VectorXd& x);
+
 }  // namespace gc

@@ -1,5 +1,7 @@
 #include "core/diagnosis/residual_signature.h"
 
+#include "core/diagnosis/noise_estimate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -178,26 +180,6 @@ InputSignature signature_for(const BinnedInput& b, const Eigen::MatrixX2d& centr
 
 }  // namespace
 
-/// How much the correlation of what no input explains inflates the variance of a mean over a
-/// contiguous stretch: the variance of the means of 50 blocks in time, times the block length,
-/// over the variance of the samples (the long-run variance of a block-means estimator, which sees
-/// a correlation of any length shorter than a block). About 1 for white noise; 30 for AR(1) noise
-/// with a correlation time of 1.5 s at 10 Hz, where the lag-1 fit of a short variogram saw 4.
-double long_run_inflation(const Eigen::MatrixX2d& leftover) {
-  constexpr Eigen::Index kBlocks = 50;
-  const Eigen::Index n = leftover.rows(), length = n / kBlocks;
-  if (length < 2) return 1.0;
-  double worst = 1.0;
-  for (int c = 0; c < 2; ++c) {
-    const double variance = leftover.col(c).squaredNorm() / static_cast<double>(n);
-    if (!(variance > 0.0)) continue;
-    double means = 0.0;
-    for (Eigen::Index b = 0; b < kBlocks; ++b) means += std::pow(leftover.col(c).segment(b * length, length).mean(), 2);
-    worst = std::max(worst, static_cast<double>(length) * means / static_cast<double>(kBlocks) / variance);
-  }
-  return worst;
-}
-
 const InputSignature* ResidualSignature::find(const std::string& input) const {
   for (const InputSignature& s : inputs) if (s.input == input) return &s;
   return nullptr;
@@ -232,7 +214,9 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
   // The noise's correlation as the leftover shows it, when it is more than the caller's estimate
   // (a short variogram cannot tell a long correlation from slow structure; the leftover has no
   // structure of any input left to confuse it with).
-  variance_inflation = std::max(variance_inflation, long_run_inflation(leftover));
+  // (A block-means estimate, noise_estimate.h: about 1 for white noise; 30 for AR(1) noise with a
+  // correlation time of 1.5 s at 10 Hz, where the lag-1 fit of a short variogram saw 4.)
+  for (int c = 0; c < 2; ++c) variance_inflation = std::max(variance_inflation, long_run_inflation(leftover.col(c)));
   out.variance_inflation = variance_inflation;
   for (std::size_t j = 0; j < inputs.size(); ++j) {
     const BinnedInput& b = inputs[j];
