@@ -49,10 +49,6 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
   return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
 }
 
-bool has_held_shape(const EffectInfo& info) {
-  return std::any_of(info.parameters.begin(), info.parameters.end(), [](const ParameterSpec& p) { return p.refine_only; });
-}
-
 /// The registration that refits `effect`: the library's, or an expression over its own terms.
 std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
   if (effect.name() == kExpressionEffect) {
@@ -80,9 +76,11 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
   }
   if (settings.refinements) {
     for (const auto& effect : model.effects()) {
-      // The given model's effects, and those an earlier round added with a shape held
-      // (ParameterSpec::refine_only), which only a refinement frees.
-      if (!given.has_effect(effect->name()) && !has_held_shape(effect->info())) continue;
+      // Every effect of the model: the given model's, and those earlier rounds added. An effect
+      // claimed before a second one was fitted without it, and took a share of what the second
+      // explains (a thermal misalignment fitted beside an unexplained weight offset); refitted
+      // with it, both come right. Formulas added earlier are the formula stage's.
+      if (!given.has_effect(effect->name()) && effect->name() == kExpressionEffect) continue;
       const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
       if (!registration || registration->info->parameters.empty()) continue;
       ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,

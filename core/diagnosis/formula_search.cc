@@ -185,6 +185,43 @@ void drop_drift_that_does_not_extrapolate(const Eigen::MatrixXd& z, const Eigen:
   }
 }
 
+/// Block means in time of a stacked (y rows, then z rows) column: `blocks` equal runs of rows, each
+/// channel's mean [N·m], both channels in one vector.
+Eigen::VectorXd block_means(const Eigen::VectorXd& stacked_column, int blocks) {
+  const Eigen::Index n = stacked_column.size() / 2;
+  Eigen::VectorXd out(2 * blocks);
+  for (int b = 0; b < blocks; ++b) {
+    const Eigen::Index from = n * b / blocks, to = n * (b + 1) / blocks;
+    out(b) = stacked_column.segment(from, to - from).mean();
+    out(blocks + b) = stacked_column.segment(n + from, to - from).mean();
+  }
+  return out;
+}
+
+/// A term that varies as slowly as a drift (t, a step, the oil temperature; not a cycle) must
+/// stand out of the slow wander the formula leaves beside it: the spread of its contribution's
+/// means over twenty blocks in time at least twice that of the residual's. Within one recording a
+/// slow term and a bridge's zero drift that happens to follow it are the same thing; only its size
+/// against the wander tells a temperature effect from a share of the drift (a 14 N·m/deg C term
+/// took 0.3 kN·m of a 0.6 kN·m drift, and cost the next run 2-4 points). A real step or
+/// temperature effect of a size that matters stands well out of it.
+void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
+                                       const std::vector<std::string>& names, std::vector<bool>& support) {
+  constexpr int kBlocks = 20;
+  constexpr double kLeastRatio = 2.0;
+  if (residual.rows() < 4 * kBlocks) return;
+  const Eigen::VectorXd y = stacked(residual);
+  const Eigen::VectorXd c = solve_on(z, y, support);
+  const auto spread = [](const Eigen::VectorXd& v) { return std::sqrt((v.array() - v.mean()).square().mean()); };
+  const double wander = spread(block_means(y - z * c, kBlocks));
+  for (std::size_t j = 0; j < support.size(); ++j) {
+    const ExpressionTerm* term = find_expression_term(names[j]);
+    if (!support[j] || !drifts_slowly(names[j]) || (term && term->period_s > 0.0)) continue;
+    const Eigen::VectorXd contribution = z.col(static_cast<Eigen::Index>(j)) * c(static_cast<Eigen::Index>(j));
+    if (spread(block_means(contribution, kBlocks)) < kLeastRatio * wander) support[j] = false;
+  }
+}
+
 /// The design without the terms that vary as slowly as a drift (FormulaSettings::fast_terms_only).
 TermDesign fast_terms(TermDesign design) {
   TermDesign out;
@@ -367,6 +404,7 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   for (std::size_t j = 0; j < votes.size(); ++j) stable[j] = 2 * votes[j] > static_cast<int>(order.size());
   if (count(stable) > 0) support = stable;
   drop_drift_that_does_not_extrapolate(z, residual, design.terms, support);
+  drop_slow_terms_within_the_wander(z, residual, design.terms, support);
   if (count(support) == 0) return std::nullopt;
 
   std::vector<std::string> terms;

@@ -18,6 +18,8 @@ EffectRegistration hysteresis_effect();
 EffectRegistration misalignment_scale_effect();
 EffectRegistration continuous_quarter_sums_effect();
 EffectRegistration moment_delay_effect();
+EffectRegistration torque_calibration_effect();
+EffectRegistration thermal_misalignment_effect();
 
 const std::vector<EffectRegistration>& effect_registry() {
   static const std::vector<EffectRegistration> registry = {
@@ -25,6 +27,7 @@ const std::vector<EffectRegistration>& effect_registry() {
       assembly_misalignment_effect(), eccentricity_effect(), compliance_effect(),
       spacing_errors_effect(), channel_gain_offset_effect(), hysteresis_effect(),
       misalignment_scale_effect(),        continuous_quarter_sums_effect(), moment_delay_effect(),
+      torque_calibration_effect(), thermal_misalignment_effect(),
       // The formula of docs/diagnosis.md: its parameters are the terms it is given.
       {&expression_info({}), [](const ParameterValues& values) { return make_expression(values); }},
   };

@@ -210,7 +210,6 @@ const std::set<std::string>& open_cases() {
       "ripple_twice_per_rev_oval_sleeve",     // a spurious temperature term: 2 points under the anchor
       "ripple_once_per_rev_unbalance",        // a second round adds misalignment_on_y: 5.6 points under the floor
       "pump_interference_0p4hz",              // the 2.5 s cycle found; a temperature term costs 4 points
-      "torque_sensor_quadratic",              // a torque-sensor nonlinearity has no term (T^2 is not in the catalogue)
       "heavier_weight_thermal_misalignment",  // a misalignment that grows with oil temperature has no effect or term
       "rig_hysteresis_travel",                // travel sign and T x travel sign found; a time term costs 10 points
       "low_snr_twice_rev_100k",               // a ripple of 0.3 sigma on 100,000 rows of DAQ noise is not found
