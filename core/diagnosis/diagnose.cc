@@ -277,7 +277,13 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     FormulaSettings fast = formula_settings(round, settings);
     fast.fast_terms_only = true;
     std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds, fast);
-    if (formula && claimable(*formula, pooled_mean_square(dense), noise_ms, settings)) {
+    // The excess it must remove a share of is over the noise it leaves, taken at its own scale,
+    // correlation and tails: on a long recording of coloured, wandering noise the variogram's
+    // estimate leaves an excess that is the noise's own slow power, and a ripple of 0.3 sigma that
+    // the rows reveal beyond doubt (t >= 3.5) could never remove 30 % of it. Fast terms only: no
+    // term in time or temperature is offered here to follow a drift.
+    const double left_ms = formula ? estimate_noise(formula->held_out_residual, true).mean_square() : noise_ms;
+    if (formula && claimable(*formula, pooled_mean_square(dense), std::max(noise_ms, left_ms), settings)) {
       round.formula = std::move(formula);
       round.formula_chosen = true;
       round.formula_on_dense_rows = true;

@@ -145,6 +145,30 @@ Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMom
   }
 }
 
+/// The four terms (sin and cos on each channel) of shaft order k, its amplitude scaled as
+/// `modulation` says: "order_2_sin_on_y", "torque_order_2_sin_on_y", "speed_squared_revolution_...".
+void add_order_terms(std::vector<ExpressionTerm>& terms, int k, const std::string& mechanisms,
+                     ExpressionTerm::Modulation modulation) {
+  using M = ExpressionTerm::Modulation;
+  const std::string prefix = modulation == M::torque ? "torque_" : modulation == M::speed_squared ? "speed_squared_" : "";
+  const std::string factor = modulation == M::torque ? "T " : modulation == M::speed_squared ? "n^2 " : "";
+  const std::string unit = modulation == M::torque ? "N·m/N·m" : modulation == M::speed_squared ? "N·m/rpm²" : "N·m";
+  const double bound = modulation == M::torque ? 1.0 : modulation == M::speed_squared ? 1e5 : 1e7;
+  const std::string order = k == 1 ? "revolution" : "order_" + std::to_string(k);
+  const std::string angle = k == 1 ? "phi_rot" : std::to_string(k) + " phi_rot";
+  const std::string grows = modulation == M::torque ? ", growing with torque" : "";
+  const std::pair<const char*, int> parts[] = {{"_sin_on_y", kSinY}, {"_cos_on_y", kCosY}, {"_sin_on_z", kSinZ}, {"_cos_on_z", kCosZ}};
+  for (const auto& [suffix, frame] : parts) {
+    const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
+    ExpressionTerm term{prefix + order + suffix,
+                        factor + (frame == kSinY || frame == kSinZ ? "sin" : "cos") + "(" + angle + ") on " + channel, unit,
+                        bound, mechanisms + grows, kOrder, frame};
+    term.order = k;
+    term.modulation = modulation;
+    terms.push_back(std::move(term));
+  }
+}
+
 std::vector<ExpressionTerm> make_terms() {
   std::vector<ExpressionTerm> terms;
   for (int i = 0; i < kScalarCount; ++i) {
@@ -179,18 +203,16 @@ std::vector<ExpressionTerm> make_terms() {
       "three times per revolution: a three-lobed (triangular) sleeve or hub from machining or clamping, or a "
       "three-point support",
       "four times per revolution: a four-lobed sleeve or hub, or the bolts of a four-bolt flange"};
-  for (int k = 2; k <= kHighestShaftOrder; ++k) {
-    const std::string order = "order_" + std::to_string(k);
-    const std::string angle = std::to_string(k) + " phi_rot";
-    const std::pair<const char*, int> parts[] = {{"_sin_on_y", kSinY}, {"_cos_on_y", kCosY}, {"_sin_on_z", kSinZ}, {"_cos_on_z", kCosZ}};
-    for (const auto& [suffix, frame] : parts) {
-      const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
-      ExpressionTerm term{order + suffix, std::string(frame == kSinY || frame == kSinZ ? "sin" : "cos") + "(" + angle + ") on " + channel,
-                          "N·m", 1e7, order_mechanisms[k], kOrder, frame};
-      term.order = k;
-      terms.push_back(std::move(term));
-    }
-  }
+  for (int k = 2; k <= kHighestShaftOrder; ++k) add_order_terms(terms, k, order_mechanisms[k], ExpressionTerm::Modulation::none);
+  // Ripples whose amplitude follows an input: the same orders scaled by torque (an out-of-round
+  // sleeve or a runout shares the tooth load unevenly, in proportion to the load), and the
+  // revolution scaled by the speed squared (an unbalance: m e omega^2).
+  add_order_terms(terms, 1, revolution, ExpressionTerm::Modulation::torque);
+  for (int k = 2; k <= kHighestShaftOrder; ++k) add_order_terms(terms, k, order_mechanisms[k], ExpressionTerm::Modulation::torque);
+  add_order_terms(terms, 1,
+                  "once per revolution, growing with the square of speed: an unbalance of the shaft, hub or a part "
+                  "on it (its centrifugal force m e omega^2), or a bent shaft whirling",
+                  ExpressionTerm::Modulation::speed_squared);
   return terms;
 }
 
@@ -310,7 +332,15 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     default: break;
   }
   if (!sample.rotation_phase_rad) return std::nullopt;
-  return harmonic(frame, (scalar == kOrder ? order : 1) * *sample.rotation_phase_rad);
+  const Eigen::Vector2d wave = harmonic(frame, (scalar == kOrder ? order : 1) * *sample.rotation_phase_rad);
+  switch (modulation) {
+    case Modulation::torque: return sample.torque_nm * wave;
+    case Modulation::speed_squared:
+      if (!sample.speed_rpm) return std::nullopt;
+      return *sample.speed_rpm * *sample.speed_rpm * wave;
+    case Modulation::none: break;
+  }
+  return wave;
 }
 
 const std::vector<ExpressionTerm>& expression_terms() {

@@ -37,6 +37,9 @@ struct ExpressionTerm {
   double period_s = 0.0;  ///< of a time_cycle term [s]; 0 for the others
   int order = 0;          ///< of a shaft-order term (k of sin/cos(k phi_rot)); 0 for the others
   double step_time_s = 0.0;  ///< of a step term [s]
+  /// What scales a shaft-order term's amplitude: none, the torque (a ripple that grows with the load
+  /// the teeth share), or the speed squared (an unbalance's centrifugal force).
+  enum class Modulation { none, torque, speed_squared } modulation = Modulation::none;
 };
 
 /// Every term, in a fixed order.

@@ -197,6 +197,34 @@ TEST(Effects, MisalignmentScaleShowsTheCouplingMoreMisalignmentThanMeasured) {
   EXPECT_NEAR(scaled.z_nm, seen.z_nm, 1e-6);
 }
 
+// The transducer reads T; the coupling carries T (1 + k + c T / 1 MN·m), and the model computes
+// with that torque.
+TEST(Effects, TorqueCalibrationGivesTheCouplingTheTorqueItCarries) {
+  const CouplingModel with =
+      paper_model().with_effect(make_effect("torque_calibration", {{"slope_error", 0.01}, {"curvature_per_mnm", -0.02}}));
+  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4)).state.point.torque_nm, 1.5e6 * (1.0 + 0.01 - 0.02 * 1.5), 1e-6);
+  const SensorMoments calibrated = predict(with, sample(1.5e6, 0.4));
+  const SensorMoments carried = predict(paper_model(), sample(1.5e6 * 0.98, 0.4));
+  EXPECT_NEAR(calibrated.y_nm, carried.y_nm, 1e-6);
+  EXPECT_NEAR(calibrated.z_nm, carried.z_nm, 1e-6);
+}
+
+// 60 urad/deg C above 35 deg C along +z (beta = 90 deg): at 55 deg C the coupling sees the
+// measured vector plus 1.2 mrad along z; at 35 deg C nothing; without a temperature nothing.
+TEST(Effects, ThermalMisalignmentAddsGrowthInProportionToTheTemperatureRise) {
+  const CouplingModel with = paper_model().with_effect(make_effect(
+      "thermal_misalignment", {{"growth_rad_per_c", 6e-5}, {"reference_temperature_c", 35.0}, {"direction_rad", M_PI / 2}}));
+  MeasurementSample warm = sample(1.2e6, 0.4, 0.0);
+  warm.temperature_c = 55.0;
+  const OperatingPoint seen = with.predict(warm).state.point;
+  EXPECT_NEAR(seen.misalignment_rad, std::hypot(deg(0.4), 1.2e-3), 1e-12);
+  EXPECT_NEAR(seen.direction_rad, std::atan2(1.2e-3, deg(0.4)), 1e-12);
+  MeasurementSample aligned = warm;
+  aligned.temperature_c = 35.0;
+  EXPECT_NEAR(with.predict(aligned).state.point.misalignment_rad, deg(0.4), 1e-15);
+  EXPECT_NEAR(with.predict(sample(1.2e6, 0.4, 0.0)).state.point.misalignment_rad, deg(0.4), 1e-15);
+}
+
 TEST(Effects, ContinuousQuarterSumsIsTheContactOptionAsAModelPart) {
   const auto switched = make_effect("continuous_quarter_sums");
   EXPECT_FALSE(switched->neutral());

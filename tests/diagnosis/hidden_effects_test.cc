@@ -37,6 +37,16 @@ std::vector<MeasurementSample> misalignment_sweeps() { return paper_sequence(Loa
 // the 1.36 MN·m restoring torque of eqs 49-53, where eccentricity acts.
 std::vector<MeasurementSample> torque_sweeps() { return paper_sequence(LoadSequenceKind::torque_sweep); }
 
+// The misalignment sweeps as the oil warms from 30 to 60 deg C through the test (a first-order rise).
+std::vector<MeasurementSample> warming_sweeps() {
+  std::vector<MeasurementSample> samples = misalignment_sweeps();
+  const double duration = samples.back().time_s - samples.front().time_s;
+  for (MeasurementSample& s : samples) {
+    s.temperature_c = 30.0 + 30.0 * (1.0 - std::exp(-3.0 * (s.time_s - samples.front().time_s) / duration));
+  }
+  return samples;
+}
+
 // The recording `truth` gives along `inputs`, with kNoiseNm of noise; every sample accepted.
 std::vector<RecordedSample> record(const CouplingModel& truth, const std::vector<MeasurementSample>& inputs,
                                    std::uint64_t seed) {
@@ -132,7 +142,14 @@ INSTANTIATE_TEST_SUITE_P(
         Scenario{"misalignment_scale", {{"scale_error", {0.05, 0.15}}}, misalignment_sweeps, {}},
         // Moment channels recorded late; the paper's sweeps change slowly, so only a skew of over
         // half a second stands out of 2 kN·m of noise on them.
-        Scenario{"moment_delay", {{"delay_s", {0.6, 0.95}}}, torque_sweeps, {}}),
+        Scenario{"moment_delay", {{"delay_s", {0.6, 0.95}}}, torque_sweeps, {}},
+        // A transducer that bends over near its range: the curvature tells it from a gain of both
+        // bending channels, which would scale every moment alike.
+        Scenario{"torque_calibration", {{"slope_error", {-0.02, 0.02}}, {"curvature_per_mnm", {-0.04, -0.02}}},
+                 torque_sweeps, {}},
+        Scenario{"thermal_misalignment",
+                 {{"growth_rad_per_c", {4e-5, 8e-5}}, {"reference_temperature_c", {35.0, 45.0}}, {"direction_rad", {-3.0, 3.0}}},
+                 warming_sweeps, {}}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.effect; });
 
 TEST(Diagnosis, ClaimsNothingWhenTheModelIsRightAndOnlyNoiseIsLeft) {

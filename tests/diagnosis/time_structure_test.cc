@@ -90,6 +90,36 @@ TEST(TimeStructure, FindsARippleAtTwiceShaftSpeed) {
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
+// An out-of-round sleeve shares the tooth load unevenly: a twice-per-revolution ripple whose
+// amplitude grows with the torque, 4 kN·m per MN·m. The formula names order 2 scaled by torque.
+TEST(TimeStructure, FindsARippleThatGrowsWithTorque) {
+  std::vector<RecordedSample> observations = record(paper_model(), 2000.0, 139);
+  for (RecordedSample& o : observations) {
+    const double phi = *o.input.rotation_phase_rad, amplitude = 4000.0 * o.input.torque_nm / 1e6;
+    o.measured.y_nm += amplitude * std::sin(2.0 * phi + 0.7);
+    o.measured.z_nm += amplitude * std::cos(2.0 * phi + 0.7);
+  }
+  const Diagnosis d = testing::diagnose_on_threads(paper_model(), observations);
+  SCOPED_TRACE(d.summary);
+  EXPECT_TRUE(has_term_starting(formula_terms(d), "torque_order_2_"));
+  EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
+}
+
+// An unbalance: once per revolution, with the centrifugal force m e omega^2, 6 kN·m at 15 rpm on a
+// speed that hunts between 9 and 15 rpm. The formula names the revolution scaled by speed squared.
+TEST(TimeStructure, FindsAnUnbalanceThatGrowsWithTheSquareOfSpeed) {
+  std::vector<RecordedSample> observations = record(paper_model(), 2000.0, 149);
+  for (RecordedSample& o : observations) {
+    const double phi = *o.input.rotation_phase_rad, amplitude = 6000.0 * std::pow(*o.input.speed_rpm / 15.0, 2);
+    o.measured.y_nm += amplitude * std::cos(phi + 1.1);
+    o.measured.z_nm += amplitude * std::sin(phi + 1.1);
+  }
+  const Diagnosis d = testing::diagnose_on_threads(paper_model(), observations);
+  SCOPED_TRACE(d.summary);
+  EXPECT_TRUE(has_term_starting(formula_terms(d), "speed_squared_revolution_"));
+  EXPECT_NE(d.summary.find("unbalance"), std::string::npos);
+}
+
 // A weak ripple (a third of the noise) on a long recording: 60,000 rows reveal it, the 1,500 search
 // rows do not. The formula stage looks on the dense rows before calling the residual noise.
 TEST(TimeStructure, FindsAWeakRippleThatOnlyTheWholeLongRecordingReveals) {
@@ -222,6 +252,25 @@ TEST(TimeStructure, ClaimsNothingOnWanderingQuantisedCorrelatedNoise) {
   const Diagnosis d = testing::diagnose_on_threads(paper_model(), observations);
   SCOPED_TRACE(d.summary);
   EXPECT_TRUE(claims_nothing(d));
+}
+
+// A bridge's zero that wanders by 0.7 kN·m over the test as the oil warms with the load (a slow
+// swing that partly follows the temperature), under 2 kN·m of noise: a term in the temperature
+// would take a share of the wander and carry it into the next run. Nothing slow is claimed.
+TEST(TimeStructure, ClaimsNoTemperatureTermForAZeroThatWandersAsTheOilWarms) {
+  std::vector<MeasurementSample> inputs = programme();
+  double theta = 35.0;
+  for (MeasurementSample& s : inputs) {
+    theta += (35.0 + 20.0 * s.torque_nm / 2.0e6 - theta) * kDt / 300.0;  // a first-order lag on the load
+    s.temperature_c = theta;
+  }
+  SynthesizedRecording r = synthesize(paper_model(), inputs, {2000.0, 151});
+  ASSERT_TRUE(r.rejected.empty());
+  for (RecordedSample& o : r.samples) o.measured.y_nm += 700.0 * std::sin(2.0 * M_PI * o.input.time_s / 700.0 + 0.4);
+  const Diagnosis d = testing::diagnose_on_threads(paper_model(), r.samples);
+  SCOPED_TRACE(d.summary);
+  EXPECT_FALSE(has_term_starting(formula_terms(d), "temperature"));
+  EXPECT_FALSE(has_term_starting(formula_terms(d), "time"));
 }
 
 }  // namespace

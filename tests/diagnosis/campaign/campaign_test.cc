@@ -207,8 +207,6 @@ std::string percent(double x) { return std::isfinite(x) ? fmt("%.1f %%", 100.0 *
 /// are held to doing no harm on the held-out run instead.
 const std::set<std::string>& open_cases() {
   static const std::set<std::string> open = {
-      "ripple_twice_per_rev_oval_sleeve",     // a spurious temperature term: 2 points under the anchor
-      "ripple_once_per_rev_unbalance",        // a second round adds misalignment_on_y: 5.6 points under the floor
       "pump_interference_0p4hz",              // the 2.5 s cycle found; a temperature term costs 4 points
       "heavier_weight_thermal_misalignment",  // a misalignment that grows with oil temperature has no effect or term
       "rig_hysteresis_travel",                // travel sign and T x travel sign found; a time term costs 10 points
