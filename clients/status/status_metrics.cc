@@ -44,33 +44,30 @@ void instance_gauges(const std::vector<InstanceView>& instances, PrometheusText&
   }
 }
 
+/// One counter family over every instance's calculations: `count` of each.
+void calculation_counter(const std::vector<InstanceView>& instances, std::string_view name,
+                         std::string_view help, std::uint64_t client::CalculationStatus::*count,
+                         PrometheusText& out) {
+  out.family(name, "counter", help);
+  for (const InstanceView& i : instances) {
+    for (const auto& c : i.info.calculations) {
+      out.sample(name, calculation_labels(i, c), static_cast<double>(c.*count));
+    }
+  }
+}
+
 void request_counters(const std::vector<InstanceView>& instances, PrometheusText& out) {
-  out.family("gearcoupling_requests_served_total", "counter",
-             "Requests answered with STATUS_OK, per instance and calculation.");
-  for (const InstanceView& i : instances) {
-    for (const auto& c : i.info.calculations) {
-      out.sample("gearcoupling_requests_served_total", calculation_labels(i, c),
-                 static_cast<double>(c.served));
-    }
-  }
-  out.family("gearcoupling_requests_refused_total", "counter",
-             "Requests whose input the service refused (invalid input, unknown coupling): the "
-             "client's, not failures of the service.");
-  for (const InstanceView& i : instances) {
-    for (const auto& c : i.info.calculations) {
-      out.sample("gearcoupling_requests_refused_total", calculation_labels(i, c),
-                 static_cast<double>(c.refused));
-    }
-  }
-  out.family("gearcoupling_requests_failed_total", "counter",
-             "Requests the service failed (not converged, model or internal error, deadline "
-             "exceeded), per instance and calculation.");
-  for (const InstanceView& i : instances) {
-    for (const auto& c : i.info.calculations) {
-      out.sample("gearcoupling_requests_failed_total", calculation_labels(i, c),
-                 static_cast<double>(c.failed));
-    }
-  }
+  calculation_counter(instances, "gearcoupling_requests_served_total",
+                      "Requests answered with STATUS_OK, per instance and calculation.",
+                      &client::CalculationStatus::served, out);
+  calculation_counter(instances, "gearcoupling_requests_refused_total",
+                      "Requests whose input the service refused (invalid input, unknown "
+                      "coupling): the client's, not failures of the service.",
+                      &client::CalculationStatus::refused, out);
+  calculation_counter(instances, "gearcoupling_requests_failed_total",
+                      "Requests the service failed (not converged, model or internal error, "
+                      "deadline exceeded), per instance and calculation.",
+                      &client::CalculationStatus::failed, out);
 }
 
 /// Quantiles over the instance's last 4096 requests (NaN while none came, as the format says
