@@ -9,13 +9,14 @@ struct InputName {
   std::string_view field;   // as the core names it
   std::string_view flag;    // without "--"
   std::string_view column;  // batch CSV header
+  std::string_view query = "";  // the dashboard's /api/query parameter
 };
 
 constexpr std::array<InputName, 12> kInputNames = {{
-    {"operating_point.torque_nm", "torque-nm", "torque_nm"},
-    {"operating_point.misalignment_rad", "misalignment-deg", "misalignment_deg"},
-    {"operating_point.direction_rad", "direction-deg", "direction_deg"},
-    {"operating_point.friction_coefficient", "mu", "mu"},
+    {"operating_point.torque_nm", "torque-nm", "torque_nm", "torque_nm"},
+    {"operating_point.misalignment_rad", "misalignment-deg", "misalignment_deg", "misalignment_deg"},
+    {"operating_point.direction_rad", "direction-deg", "direction_deg", "direction_deg"},
+    {"operating_point.friction_coefficient", "mu", "mu", "friction_coefficient"},
     {"options.slices", "slices", ""},
     {"options.load_sharing.tolerance", "tolerance", ""},
     {"options.load_sharing.max_iterations", "max-iterations", ""},
@@ -50,6 +51,12 @@ std::string_view column_for_field(std::string_view field) {
   if (is_coupling_field(field)) return "coupling";
   const InputName* name = find(field);
   return name ? name->column : "";
+}
+
+std::string_view query_parameter_for_field(std::string_view field) {
+  if (is_coupling_field(field)) return "coupling";
+  const InputName* name = find(field);
+  return name ? name->query : "";
 }
 
 std::string describe_input_error(const InvalidInput& error, std::string_view user_name,

@@ -16,6 +16,10 @@ std::string_view flag_for_field(std::string_view field);
 /// The batch CSV column for a core field, or "" when no column sets it.
 std::string_view column_for_field(std::string_view field);
 
+/// The dashboard's /api/query parameter for a core field ("torque_nm", "misalignment_deg",
+/// "direction_deg", "friction_coefficient", "coupling"), or "" when none sets it.
+std::string_view query_parameter_for_field(std::string_view field);
+
 /// "<user_name> <user_value>: <the core's message>", or just the core's message when
 /// `user_name` is empty. The core's message carries the field, value in SI and allowed range.
 std::string describe_input_error(const InvalidInput& error, std::string_view user_name,

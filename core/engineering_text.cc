@@ -61,8 +61,13 @@ std::string engineering_text(double value, std::string_view unit, double referen
 }
 
 std::string engineering_range(double lower, double upper, std::string_view unit) {
+  return engineering_range(lower, upper, unit,
+                           prefix_for(std::max(std::abs(lower), std::abs(upper)), unit).scale);
+}
+
+std::string engineering_range(double lower, double upper, std::string_view unit, double scale) {
   const double reference = std::max(std::abs(lower), std::abs(upper));
-  const Prefix prefix = prefix_for(reference, unit);
+  const Prefix prefix = prefix_for(scale, unit);
   const int decimals = decimals_for(reference, prefix.scale);
   const std::string low = fixed(lower / prefix.scale, decimals);
   const std::string high = fixed(upper / prefix.scale, decimals);

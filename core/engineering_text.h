@@ -22,4 +22,8 @@ std::string engineering_text(double value, std::string_view unit, double referen
 /// the same.
 std::string engineering_range(double lower, double upper, std::string_view unit);
 
+/// The range under the prefix `scale` takes (1e3: "k"), three significant digits for the larger
+/// end: engineering_range(0.625e6, 2.2e6, "N·m", 1e3) is "625-2200 kN·m".
+std::string engineering_range(double lower, double upper, std::string_view unit, double scale);
+
 }  // namespace gc

@@ -14,6 +14,7 @@ packages=(
   chromium-driver python3-selenium python3-pytest  # the dashboard's browser test (tests/dashboard/)
   libcpp-httplib-dev  # gearcoupling-dashboard's HTTP server (pkg-config cpp-httplib)
   prometheus      # promtool checks /metrics in the suite (tests/dashboard/)
+  python3-prometheus-client  # its text parser reads /metrics in the suite (tests/dashboard/)
   clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
   dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
   python3-dev pybind11-dev python3-numpy  # the Python module (clients/python, docs/python.md)

@@ -48,6 +48,10 @@ std::string echo_text(std::string_view text, std::size_t max_bytes) {
   return std::string(text.substr(0, keep)) + tail;
 }
 
+bool refuses_input(gearcoupling_ReplyStatus status) {
+  return status == gearcoupling_STATUS_INVALID_INPUT || status == gearcoupling_STATUS_UNKNOWN_COUPLING;
+}
+
 const char* to_string(gearcoupling_ReplyStatus status) {
   switch (status) {
     case gearcoupling_STATUS_OK: return "STATUS_OK";

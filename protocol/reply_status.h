@@ -34,6 +34,11 @@ std::string echo_text(std::string_view text, std::size_t max_bytes = kMaxEchoByt
 /// "STATUS_INVALID_INPUT", ...
 const char* to_string(gearcoupling_ReplyStatus status);
 
+/// Whether `status` refuses the request's input (STATUS_INVALID_INPUT, STATUS_UNKNOWN_COUPLING):
+/// the client's doing, not a failure of the service. The service's status counts these apart
+/// (CalculationStats.refused), and so does the dashboard's query panel.
+bool refuses_input(gearcoupling_ReplyStatus status);
+
 /// A coupling name not in the service's catalogue (field "coupling.catalogue_name").
 class UnknownCoupling : public ModelError {
  public:

@@ -201,7 +201,6 @@ void Service::answer(const gearcoupling_Correlation& correlation,
   auto sample = std::make_shared<protocol::OwnedSample<typename T::WireReply>>(T::reply_type());
   typename T::WireReply& reply = sample->get();
   reply.correlation = correlation;
-  bool ok = false;
   try {
     if (malformed) std::rethrow_exception(malformed);
     const typename T::Result result =
@@ -216,7 +215,6 @@ void Service::answer(const gearcoupling_Correlation& correlation,
     reply.status = gearcoupling_STATUS_OK;
     reply.field = protocol::wire_string("");
     reply.message = protocol::wire_string("");
-    ok = true;
   } catch (...) {
     const protocol::ReplyError error = protocol::reply_error_from(std::current_exception());
     reply.status = error.status;
@@ -231,7 +229,7 @@ void Service::answer(const gearcoupling_Correlation& correlation,
 
   write_reply<kCalculation>(correlation, std::shared_ptr<const void>(sample, &reply));
   const double service_time_s = std::chrono::duration<double>(Clock::now() - received).count();
-  stats_.record(kCalculation, ok, service_time_s);
+  stats_.record(kCalculation, reply_outcome(reply.status), service_time_s);
   // Guarded: the arguments (hex_id formats a string) would otherwise be built for every reply,
   // on the round trip's own thread, with debug logging off.
   if (spdlog::should_log(spdlog::level::debug)) {
@@ -383,9 +381,9 @@ void Service::log_stats() const {
   std::string line;
   for (Calculation calculation : protocol::kAllCalculations) {
     const CalculationSnapshot& s = snapshot[protocol::index_of(calculation)];
-    if (s.served + s.failed == 0) continue;
-    line += fmt::format(" {}: served={} failed={} p50={:.1f}us p99={:.1f}us;",
-                        protocol::to_string(calculation), s.served, s.failed,
+    if (s.served + s.failed + s.refused == 0) continue;
+    line += fmt::format(" {}: served={} refused={} failed={} p50={:.1f}us p99={:.1f}us;",
+                        protocol::to_string(calculation), s.served, s.refused, s.failed,
                         s.p50_service_time_s * 1e6, s.p99_service_time_s * 1e6);
   }
   const AdmissionDrops drops = reply_writers_.drops();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "protocol/reply_status.h"
+
 namespace gc::service {
 namespace {
 
@@ -14,10 +16,19 @@ double percentile(const std::vector<double>& sorted, double p) {
 
 }  // namespace
 
-void ServiceStats::record(protocol::Calculation calculation, bool ok, double service_time_s) {
+ReplyOutcome reply_outcome(gearcoupling_ReplyStatus status) {
+  if (status == gearcoupling_STATUS_OK) return ReplyOutcome::served;
+  return protocol::refuses_input(status) ? ReplyOutcome::refused : ReplyOutcome::failed;
+}
+
+void ServiceStats::record(protocol::Calculation calculation, ReplyOutcome outcome,
+                          double service_time_s) {
   std::lock_guard lock(mutex_);
   PerCalculation& c = calculations_[protocol::index_of(calculation)];
-  (ok ? c.served : c.failed) += 1;
+  (outcome == ReplyOutcome::served    ? c.served
+   : outcome == ReplyOutcome::refused ? c.refused
+                                      : c.failed) += 1;
+  c.service_time_sum_s += service_time_s;
   if (c.window.size() < kWindow) {
     c.window.push_back(service_time_s);
   } else {
@@ -33,6 +44,8 @@ std::array<CalculationSnapshot, 5> ServiceStats::snapshot() const {
     const PerCalculation& c = calculations_[i];
     out[i].served = c.served;
     out[i].failed = c.failed;
+    out[i].refused = c.refused;
+    out[i].service_time_sum_s = c.service_time_sum_s;
     if (!c.window.empty()) {
       std::vector<double> sorted = c.window;
       std::sort(sorted.begin(), sorted.end());

@@ -53,7 +53,7 @@ void StatusPublisher::publish(bool accepting) {
     s.calculations._buffer[i] = gearcoupling_CalculationStats{
         protocol::wire_string(std::string(protocol::to_string(calculation))),
         snapshot[i].served, snapshot[i].failed, snapshot[i].p50_service_time_s,
-        snapshot[i].p99_service_time_s};
+        snapshot[i].p99_service_time_s, snapshot[i].refused, snapshot[i].service_time_sum_s};
   }
 
   const auto& couplings = catalogue_.couplings();

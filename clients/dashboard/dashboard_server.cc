@@ -182,6 +182,17 @@ std::string DashboardServer::metrics() {
   own.family("gearcoupling_dashboard_max_cells", "gauge",
              "Test cells the board holds at most (--max-cells).");
   own.sample("gearcoupling_dashboard_max_cells", {}, static_cast<double>(options_.max_cells));
+  own.family("gearcoupling_dashboard_queries_total", "counter",
+             "Query-panel queries by outcome: answered; refused (the user's input: a bad "
+             "parameter or one the model refuses); failed (no instance answered, or DDS "
+             "Security refused the panel).");
+  const QueryCounts queries = query_.counts();
+  for (const auto& [outcome, count] : {std::pair{"answered", queries.answered},
+                                       std::pair{"refused", queries.refused},
+                                       std::pair{"failed", queries.failed}}) {
+    own.sample("gearcoupling_dashboard_queries_total", {{"outcome", outcome}},
+               static_cast<double>(count));
+  }
   own.family("gearcoupling_dashboard_updates_total", "counter",
              "Live updates published to the connected browsers.");
   own.sample("gearcoupling_dashboard_updates_total", {}, static_cast<double>(updates_published_));

@@ -28,9 +28,14 @@ struct ClientOptions {
 struct CalculationStatus {
   std::string calculation;          ///< "tooth_contact", ...
   std::uint64_t served = 0;         ///< OK replies
-  std::uint64_t failed = 0;         ///< error replies
-  double p50_service_time_s = 0.0;  ///< over its last 4096 requests [s]
+  std::uint64_t failed = 0;         ///< the service's failures (not converged, model or
+                                    ///< internal error, deadline exceeded)
+  double p50_service_time_s = 0.0;  ///< over its last 4096 requests [s]; 0 before any
   double p99_service_time_s = 0.0;
+  std::uint64_t refused = 0;        ///< the client's input refused (invalid, unknown coupling)
+  double service_time_sum_s = 0.0;  ///< every request's since the instance started [s]
+  /// Whether it was ever called: its quantiles mean nothing before.
+  bool called() const { return served + failed + refused > 0; }
 };
 
 /// One catalogue coupling as the status announces it.

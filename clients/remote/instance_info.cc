@@ -22,7 +22,7 @@ InstanceInfo instance_info_from_wire(const gearcoupling_ServiceStatus& status) {
   for (uint32_t k = 0; k < status.calculations._length; ++k) {
     const gearcoupling_CalculationStats& s = status.calculations._buffer[k];
     info.calculations.push_back({text(s.calculation), s.served, s.failed, s.p50_service_time_s,
-                                 s.p99_service_time_s});
+                                 s.p99_service_time_s, s.refused, s.service_time_sum_s});
   }
   for (uint32_t k = 0; k < status.catalogue._length; ++k) {
     const gearcoupling_CatalogueEntry& entry = status.catalogue._buffer[k];

@@ -10,6 +10,7 @@
 #include "live/live_topics.h"
 #include "protocol/names.h"
 #include "clients/status/listening_reader.h"
+#include "clients/status/model_health.h"
 
 namespace gc::status {
 
@@ -63,6 +64,7 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   counts.set_refused_out_of_order(in.counts.refused_out_of_order);
   counts.set_lost(in.counts.lost);
   counts.set_runs(in.counts.runs);
+  out.set_model_health(std::string(to_string(model_health(out.model(), in.window_samples))));
 }
 
 }  // namespace
@@ -259,6 +261,7 @@ std::vector<v1::TestCellRecord> CellBoard::collect(bool drain) {
     }
     v1::TestCellRecord& record = cells.emplace_back(entry.record);
     record.set_state(state);
+    if (!entry.has_health) record.set_model_health(std::string(to_string(ModelHealth::unknown)));
     record.set_health_age_s(
         entry.has_health ? std::chrono::duration<double>(now - entry.health_received).count() : -1.0);
     if (drain && entry.aggregate.count > 0) {

@@ -36,7 +36,7 @@ struct CellBoardOptions {
   /// may publish health or residuals cannot grow the board, its JSON or /metrics without bound,
   /// whatever forget_after is. A cell costs the dashboard 5.7 kB resident (its record, strings
   /// cut at kMaxTextBytes, its aggregate, Cyclone's instances), ~650 B of each update's JSON and
-  /// 1 to 1.8 kB of /metrics (docs/dashboard.md, "Bounds"): 64, a test hall, keep all small.
+  /// about 1.5 kB of /metrics (docs/dashboard.md, "Bounds"): 64, a test hall, keep all small.
   std::size_t max_cells = 64;
   /// Read the residual topic too (the aggregates of drain()). Off for a reader of the health
   /// alone (swap-model under an operator identity, whose permissions grant the health topic

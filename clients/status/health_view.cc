@@ -23,6 +23,7 @@ HealthView health_view(const ::gearcoupling::v1::TestCellRecord& record) {
     v.systematic_nm[c] = channels[c]->systematic_nm();
     v.at_noise_level[c] = channels[c]->at_noise_level();
   }
+  v.model_health = model_health(record.model(), record.window_samples());
   if (record.has_previous_model()) {
     v.previous_model_name = record.previous_model().model_name();
     v.previous_rmse_nm[0] = record.previous_model().msy().rmse_nm();

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "clients/status/model_health.h"
 #include "idl/live_status.pb.h"
 
 namespace gc::status {
@@ -25,6 +26,7 @@ struct HealthView {
   std::uint64_t model_evaluated = 0;
   double rmse_nm[2] = {}, bias_nm[2] = {}, noise_nm[2] = {}, systematic_nm[2] = {};
   bool at_noise_level[2] = {};
+  ModelHealth model_health = ModelHealth::unknown;   ///< the badge (model_health.h)
   std::optional<std::string> previous_model_name;
   double previous_rmse_nm[2] = {};
   std::string worst_region, last_refusal, last_model_refusal;

@@ -32,8 +32,12 @@ v1::ServiceInstanceRecord to_message(const InstanceView& instance) {
     figures->set_calculation(c.calculation);
     figures->set_served(c.served);
     figures->set_failed(c.failed);
-    figures->set_p50_service_time_s(c.p50_service_time_s);
-    figures->set_p99_service_time_s(c.p99_service_time_s);
+    figures->set_refused(c.refused);
+    figures->set_service_time_sum_s(c.service_time_sum_s);
+    if (c.called()) {
+      figures->set_p50_service_time_s(c.p50_service_time_s);
+      figures->set_p99_service_time_s(c.p99_service_time_s);
+    }
   }
   for (const client::CatalogueCoupling& coupling : info.couplings) {
     v1::CatalogueCouplingRecord* entry = record.add_catalogue();

@@ -1,13 +1,18 @@
 #include "clients/status/status_metrics.h"
 
+#include <cmath>
+
+#include "clients/status/model_health.h"
 #include "clients/status/prometheus_text.h"
 #include "protocol/names.h"
 
 namespace gc::status {
 namespace {
 
+/// "service_instance", not "instance": Prometheus sets "instance" to the scrape target (this
+/// dashboard) and would rename ours "exported_instance".
 Labels instance_labels(const InstanceView& instance) {
-  return {{"instance", protocol::hex_id(instance.info.id)}, {"host", instance.info.host}};
+  return {{"service_instance", protocol::hex_id(instance.info.id)}, {"host", instance.info.host}};
 }
 
 Labels calculation_labels(const InstanceView& instance, const client::CalculationStatus& c) {
@@ -39,48 +44,83 @@ void instance_gauges(const std::vector<InstanceView>& instances, PrometheusText&
   }
 }
 
-void request_counters(const std::vector<InstanceView>& instances, PrometheusText& out) {
-  out.family("gearcoupling_requests_served_total", "counter",
-             "Requests answered with STATUS_OK, per instance and calculation.");
+/// One counter family over every instance's calculations: `count` of each.
+void calculation_counter(const std::vector<InstanceView>& instances, std::string_view name,
+                         std::string_view help, std::uint64_t client::CalculationStatus::*count,
+                         PrometheusText& out) {
+  out.family(name, "counter", help);
   for (const InstanceView& i : instances) {
     for (const auto& c : i.info.calculations) {
-      out.sample("gearcoupling_requests_served_total", calculation_labels(i, c),
-                 static_cast<double>(c.served));
-    }
-  }
-  out.family("gearcoupling_requests_failed_total", "counter",
-             "Requests answered with an error status, per instance and calculation.");
-  for (const InstanceView& i : instances) {
-    for (const auto& c : i.info.calculations) {
-      out.sample("gearcoupling_requests_failed_total", calculation_labels(i, c),
-                 static_cast<double>(c.failed));
+      out.sample(name, calculation_labels(i, c), static_cast<double>(c.*count));
     }
   }
 }
 
-/// A summary of quantiles only: the status carries p50 and p99 over the last 4096 requests,
-/// and the request count, but no sum of service times.
+void request_counters(const std::vector<InstanceView>& instances, PrometheusText& out) {
+  calculation_counter(instances, "gearcoupling_requests_served_total",
+                      "Requests answered with STATUS_OK, per instance and calculation.",
+                      &client::CalculationStatus::served, out);
+  calculation_counter(instances, "gearcoupling_requests_refused_total",
+                      "Requests whose input the service refused (invalid input, unknown "
+                      "coupling): the client's, not failures of the service.",
+                      &client::CalculationStatus::refused, out);
+  calculation_counter(instances, "gearcoupling_requests_failed_total",
+                      "Requests the service failed (not converged, model or internal error, "
+                      "deadline exceeded), per instance and calculation.",
+                      &client::CalculationStatus::failed, out);
+}
+
+/// Quantiles over the instance's last 4096 requests (NaN while none came, as the format says
+/// of an empty summary), _sum and _count over every request since it started.
 void service_time_summary(const std::vector<InstanceView>& instances, PrometheusText& out) {
-  out.family("gearcoupling_service_time_seconds", "summary",
-             "Service time per request over the instance's last (up to) 4096 requests.");
+  constexpr std::string_view kName = "gearcoupling_service_time_seconds";
+  out.family(kName, "summary",
+             "Service time per request: quantiles over the instance's last (up to) 4096 "
+             "requests, sum and count since it started.");
   for (const InstanceView& i : instances) {
     for (const auto& c : i.info.calculations) {
-      Labels p50 = calculation_labels(i, c);
-      p50.emplace_back("quantile", "0.5");
-      out.sample("gearcoupling_service_time_seconds", p50, c.p50_service_time_s);
-      Labels p99 = calculation_labels(i, c);
-      p99.emplace_back("quantile", "0.99");
-      out.sample("gearcoupling_service_time_seconds", p99, c.p99_service_time_s);
+      for (const auto& [quantile, seconds] :
+           {std::pair{"0.5", c.p50_service_time_s}, std::pair{"0.99", c.p99_service_time_s}}) {
+        Labels labels = calculation_labels(i, c);
+        labels.emplace_back("quantile", quantile);
+        out.sample(kName, labels, c.called() ? seconds : std::nan(""));
+      }
+      out.sample("gearcoupling_service_time_seconds_sum", calculation_labels(i, c),
+                 c.service_time_sum_s);
+      out.sample("gearcoupling_service_time_seconds_count", calculation_labels(i, c),
+                 static_cast<double>(c.served + c.failed + c.refused));
     }
   }
 }
 
 Labels cell_labels(const v1::TestCellRecord& cell) { return {{"test_cell", cell.test_cell()}}; }
 
-void cell_counters(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
+void cell_gauges(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
   out.family("gearcoupling_cell_up", "gauge",
              "1 while the monitor reports the test cell alive, 0 once stale or gone.");
   for (const auto& cell : cells) out.sample("gearcoupling_cell_up", cell_labels(cell), cell.state() == "alive");
+  out.family("gearcoupling_cell_model_info", "gauge",
+             "1, labelled by the model in force for the test cell (none before its health).");
+  for (const auto& cell : cells) {
+    if (!cell.has_model() || cell.model().model_name().empty()) continue;
+    Labels labels = cell_labels(cell);
+    labels.emplace_back("model", cell.model().model_name());
+    out.sample("gearcoupling_cell_model_info", labels, 1.0);
+  }
+  out.family("gearcoupling_cell_model_health", "gauge",
+             "1 for the test cell's model health (the dashboard's badge: at_noise_level, "
+             "systematic, far_off, unknown), 0 for the others.");
+  for (const auto& cell : cells) {
+    for (const ModelHealth health : {ModelHealth::unknown, ModelHealth::at_noise_level,
+                                     ModelHealth::systematic, ModelHealth::far_off}) {
+      Labels labels = cell_labels(cell);
+      labels.emplace_back("health", std::string(to_string(health)));
+      out.sample("gearcoupling_cell_model_health", labels, cell.model_health() == to_string(health));
+    }
+  }
+}
+
+void cell_counters(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
   out.family("gearcoupling_cell_samples_taken_total", "counter",
              "Measurement samples the monitor received for the test cell.");
   for (const auto& cell : cells) {
@@ -132,6 +172,9 @@ void cell_errors(const std::vector<v1::TestCellRecord>& cells, PrometheusText& o
   channel_gauge(cells, "gearcoupling_cell_rmse_newton_metres",
                 "Rolling RMSE of the model's moment over the monitor's window [N m].",
                 [](const v1::ChannelHealthRecord& h) { return h.rmse_nm(); }, out);
+  channel_gauge(cells, "gearcoupling_cell_bias_newton_metres",
+                "Mean error of the model's moment (model - measured) over the window [N m].",
+                [](const v1::ChannelHealthRecord& h) { return h.bias_nm(); }, out);
   channel_gauge(cells, "gearcoupling_cell_noise_newton_metres",
                 "Noise level of the measured moment over the window [N m].",
                 [](const v1::ChannelHealthRecord& h) { return h.noise_nm(); }, out);
@@ -148,6 +191,7 @@ std::string metrics_text(const std::vector<InstanceView>& instances,
   instance_gauges(instances, out);
   request_counters(instances, out);
   service_time_summary(instances, out);
+  cell_gauges(cells, out);
   cell_counters(cells, out);
   cell_errors(cells, out);
   return out.text();

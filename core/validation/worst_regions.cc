@@ -13,21 +13,11 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
-struct SeenRange {
-  double min = std::numeric_limits<double>::infinity();
-  double max = -std::numeric_limits<double>::infinity();
-  int populated = 0;
-};
-
-SeenRange seen_range(const ErrorBinning& binning, std::size_t min_count) {
-  SeenRange range;
-  for (const ErrorBin& bin : binning.bins()) {
-    if (bin.errors.count() < min_count) continue;
-    range.min = std::min(range.min, bin.seen_min);
-    range.max = std::max(range.max, bin.seen_max);
-    ++range.populated;
-  }
-  return range;
+int populated_bins(const ErrorBinning& binning, std::size_t min_count) {
+  return static_cast<int>(std::count_if(binning.bins().begin(), binning.bins().end(),
+                                        [min_count](const ErrorBin& bin) {
+                                          return bin.errors.count() >= min_count;
+                                        }));
 }
 
 // RMSE of everything outside `bin`, from the totals: sum of squares minus the bin's.
@@ -49,6 +39,16 @@ std::string level_word(double position, const char* low, const char* mid, const 
   return position < 1.0 / 3.0 ? low : position > 2.0 / 3.0 ? high : mid;
 }
 
+// Where bin `index` lies in its binning's fixed span (torque 0 .. torque_span x T_ref,
+// misalignment 0 .. xi): from the edges, not from the inputs seen, so that a bin gets the same
+// word in a whole recording (validate) and in any window of it (the live monitor).
+double bin_position(const ErrorBinning& binning, std::size_t index) {
+  const std::vector<ErrorBin>& bins = binning.bins();
+  const double lowest = bins.front().lower, span = bins.back().upper - lowest;
+  const ErrorBin& bin = bins[index];
+  return span > 0.0 ? (0.5 * (bin.lower + bin.upper) - lowest) / span : 0.5;
+}
+
 std::string printf_string(const char* format, double a, double b) {
   char text[96];
   std::snprintf(text, sizeof text, format, a, b);
@@ -64,19 +64,15 @@ std::vector<RegionError> worst_regions(const ValidationAccumulator& validation, 
       10, static_cast<std::size_t>(min_share * static_cast<double>(overall.count)));
   std::vector<RegionError> regions;
   for (const ErrorBinning& binning : validation.binnings()) {
-    const SeenRange range = seen_range(binning, min_count);
-    if (range.populated < 2) continue;
+    if (populated_bins(binning, min_count) < 2) continue;
     std::optional<RegionError> worst;
     for (std::size_t i = 0; i < binning.bins().size(); ++i) {
       const ErrorBin& bin = binning.bins()[i];
       if (bin.errors.count() < min_count) continue;
       const ErrorMetrics metrics = bin.errors[channel].metrics();
       if (worst && metrics.rmse_nm <= worst->metrics.rmse_nm) continue;
-      const double middle = 0.5 * (bin.seen_min + bin.seen_max);
-      const double span = range.max - range.min;
       worst = RegionError{binning.dimension(), channel, i, bin, metrics, overall,
-                          contrast(overall, metrics),
-                          span > 0.0 ? (middle - range.min) / span : 0.5};
+                          contrast(overall, metrics), bin_position(binning, i)};
     }
     if (worst) regions.push_back(*worst);
   }
@@ -109,7 +105,8 @@ ErrorSignature error_signature(const ValidationAccumulator& validation, Channel 
   const double noise_sq = signature.noise_estimate_nm * signature.noise_estimate_nm;
   signature.systematic_rms_nm = std::sqrt(std::max(0.0, overall.rmse_nm * overall.rmse_nm - noise_sq));
   // Below a third of the noise the systematic part adds under 6 % to the RMSE.
-  signature.at_noise_level = signature.systematic_rms_nm < signature.noise_estimate_nm / 3.0;
+  signature.at_noise_level =
+      signature.systematic_rms_nm < kAtNoiseLevelShare * signature.noise_estimate_nm;
   for (std::size_t d = 0; d < kBinDimensions.size(); ++d) {
     signature.explained_share[d] = explained_share(validation.binnings()[d], overall, channel);
   }
@@ -120,8 +117,9 @@ std::string describe_region(const RegionError& r) {
   const ErrorBin& bin = r.region;
   switch (r.dimension) {
     case BinDimension::torque:
+      // kN·m whatever the torque, as the moments of describe() and the dashboard.
       return level_word(r.position, "low", "medium", "high") + " torque (" +
-             engineering_range(bin.seen_min, bin.seen_max, "N·m") + ")";
+             engineering_range(bin.seen_min, bin.seen_max, "N·m", 1e3) + ")";
     case BinDimension::misalignment:
       return level_word(r.position, "small", "medium", "large") + " misalignment (" +
              engineering_range(bin.seen_min * kDegreesPerRadian, bin.seen_max * kDegreesPerRadian,

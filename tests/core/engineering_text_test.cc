@@ -35,6 +35,10 @@ TEST(EngineeringText, RangesShareOnePrefixAndCollapseWhenEqual) {
   EXPECT_EQ(engineering_range(1.5e5, 1.5e6, "N·m"), "0.15-1.50 MN·m");
   EXPECT_EQ(engineering_range(1.501e6, 1.499e6, "N·m"), "1.50 MN·m");
   EXPECT_EQ(engineering_range(-500.0, 750.0, "N·m"), "-500 to 750 N·m");
+  // Under a prefix of the caller's (worst regions: torques in kN·m, as the moments beside them).
+  EXPECT_EQ(engineering_range(0.625e6, 2.2e6, "N·m", 1e3), "625-2200 kN·m");
+  EXPECT_EQ(engineering_range(0.15e6, 0.3e6, "N·m", 1e3), "150-300 kN·m");
+  EXPECT_EQ(engineering_range(5e3, 9.5e3, "N·m", 1e3), "5.00-9.50 kN·m");
 }
 
 }  // namespace

@@ -21,8 +21,10 @@ InstanceView instance(std::uint64_t id, std::string host, Liveness liveness) {
   view.info.pid = 42;
   view.info.accepting = true;
   view.info.uptime_s = 12.5;
-  view.info.calculations = {{"jam_angle", 7, 1, 0.00025, 0.0015},
-                            {"tooth_contact", 3, 0, 0.002, 0.004}};
+  // served, failed, p50, p99, refused, sum of service times; restoring_torque never called.
+  view.info.calculations = {{"jam_angle", 7, 1, 0.00025, 0.0015, 2, 0.0125},
+                            {"tooth_contact", 3, 0, 0.002, 0.004, 0, 0.0075},
+                            {"restoring_torque", 0, 0, 0.0, 0.0, 0, 0.0}};
   view.liveness = liveness;
   return view;
 }
@@ -34,9 +36,12 @@ v1::TestCellRecord test_cell(std::string name) {
   cell.mutable_counts()->set_taken(40000);
   cell.mutable_counts()->set_evaluated(39990);
   cell.mutable_counts()->set_refused_by_model(10);
+  cell.mutable_model()->set_model_name("paper");
   cell.mutable_model()->mutable_msy()->set_rmse_nm(1500.0);
+  cell.mutable_model()->mutable_msy()->set_bias_nm(-1200.0);
   cell.mutable_model()->mutable_msy()->set_noise_nm(900.0);
   cell.mutable_model()->mutable_msz()->set_rmse_nm(800.0);
+  cell.set_model_health("systematic");
   return cell;
 }
 
@@ -53,22 +58,22 @@ bool has_line(const std::string& text, const std::string& line) {
 TEST(Metrics, CountersPerInstanceAndCalculationEndInTotal) {
   const std::string text = metrics();
   EXPECT_TRUE(has_line(text, "# TYPE gearcoupling_requests_served_total counter"));
-  EXPECT_TRUE(has_line(text, "gearcoupling_requests_served_total{instance=\"0000000000000abc\","
+  EXPECT_TRUE(has_line(text, "gearcoupling_requests_served_total{service_instance=\"0000000000000abc\","
                              "host=\"cell-host\",calculation=\"jam_angle\"} 7"));
-  EXPECT_TRUE(has_line(text, "gearcoupling_requests_failed_total{instance=\"0000000000000abc\","
+  EXPECT_TRUE(has_line(text, "gearcoupling_requests_failed_total{service_instance=\"0000000000000abc\","
                              "host=\"cell-host\",calculation=\"jam_angle\"} 1"));
 }
 
 TEST(Metrics, LatencyIsASummaryWithQuantileLabelsInSeconds) {
   const std::string text = metrics();
   EXPECT_TRUE(has_line(text, "# TYPE gearcoupling_service_time_seconds summary"));
-  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds{instance=\"0000000000000abc\","
+  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds{service_instance=\"0000000000000abc\","
                              "host=\"cell-host\",calculation=\"tooth_contact\",quantile=\"0.99\"} 0.004"));
 }
 
 TEST(Metrics, AStaleInstanceIsDownAndLabelValuesAreEscaped) {
   const std::string text = metrics();
-  EXPECT_TRUE(has_line(text, "gearcoupling_instance_up{instance=\"0000000000000def\","
+  EXPECT_TRUE(has_line(text, "gearcoupling_instance_up{service_instance=\"0000000000000def\","
                              "host=\"odd \\\"host\\\"\\\\\\n\"} 0"));
 }
 
@@ -81,6 +86,46 @@ TEST(Metrics, TestCellsHaveSampleCountersAndRmseWithNoisePerChannel) {
                              "channel=\"msy\"} 1500"));
   EXPECT_TRUE(has_line(text, "gearcoupling_cell_noise_newton_metres{test_cell=\"dyno-5mw\","
                              "channel=\"msy\"} 900"));
+}
+
+TEST(Metrics, NoLabelIsNamedInstanceWhichPrometheusSetsToTheTarget) {
+  const std::string text = metrics();
+  EXPECT_EQ(text.find("{instance="), std::string::npos);
+  EXPECT_EQ(text.find(",instance="), std::string::npos);
+}
+
+TEST(Metrics, TheSummaryHasSumAndCountAndNanQuantilesWhenNeverCalled) {
+  const std::string text = metrics();
+  const std::string labels = "{service_instance=\"0000000000000abc\",host=\"cell-host\",";
+  // _count: every answered request, refused ones included (7 + 1 + 2).
+  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds_count" + labels +
+                                 "calculation=\"jam_angle\"} 10"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds_sum" + labels +
+                                 "calculation=\"jam_angle\"} 0.0125"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds" + labels +
+                                 "calculation=\"restoring_torque\",quantile=\"0.99\"} NaN"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_service_time_seconds_count" + labels +
+                                 "calculation=\"restoring_torque\"} 0"));
+}
+
+TEST(Metrics, RefusedRequestsAreCountedApartFromFailedOnes) {
+  const std::string text = metrics();
+  EXPECT_TRUE(has_line(text, "gearcoupling_requests_refused_total{service_instance=\"0000000000000abc\","
+                             "host=\"cell-host\",calculation=\"jam_angle\"} 2"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_requests_failed_total{service_instance=\"0000000000000abc\","
+                             "host=\"cell-host\",calculation=\"jam_angle\"} 1"));
+}
+
+TEST(Metrics, TestCellsHaveTheirModelBiasAndHealth) {
+  const std::string text = metrics();
+  EXPECT_TRUE(has_line(text, "# TYPE gearcoupling_cell_model_info gauge"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_model_info{test_cell=\"dyno-5mw\",model=\"paper\"} 1"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_bias_newton_metres{test_cell=\"dyno-5mw\","
+                             "channel=\"msy\"} -1200"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_model_health{test_cell=\"dyno-5mw\","
+                             "health=\"systematic\"} 1"));
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_model_health{test_cell=\"dyno-5mw\","
+                             "health=\"far_off\"} 0"));
 }
 
 TEST(Metrics, PromtoolAcceptsTheText) {

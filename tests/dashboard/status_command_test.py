@@ -71,3 +71,26 @@ def test_watch_sees_a_killed_instance_turn_stale_and_a_stopped_one_stopped():
         watch.wait()
         killed.kill()
         stop(stopped)
+
+
+def test_a_refused_request_is_refused_not_failed_and_a_never_called_calculation_shows_a_dash():
+    running = service()
+    try:
+        time.sleep(1.0)
+        # An unknown coupling: the client's input, refused by the service.
+        asked = subprocess.run([CLI, "jam-angle", "--coupling", "no_such_coupling", "--remote",
+                                "--domain", str(DOMAIN)], env=ENVIRONMENT, capture_output=True, text=True,
+                               timeout=60)
+        assert asked.returncode != 0
+        time.sleep(1.5)   # the service publishes its status every second
+        report = json.loads(status("--json"))
+        (instance,) = report["instances"]
+        figures = {c["calculation"]: c for c in instance["calculations"]}
+        assert figures["jam_angle"]["refused"] == "1" and figures["jam_angle"]["failed"] == "0", figures
+        assert "p50_service_time_s" in figures["jam_angle"]
+        # Never called: no service time in the JSON, "-" in the table.
+        assert "p50_service_time_s" not in figures["restoring_torque"], figures
+        row = next(line.split() for line in status().splitlines() if " restoring_torque " in f" {line} ")
+        assert row[-2:] == ["-", "-"], row
+    finally:
+        stop(running)

@@ -48,6 +48,9 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
   EXPECT_EQ(before->model_name, "paper");
   EXPECT_FALSE(before->at_noise_level[0]);
   EXPECT_GT(before->rmse_nm[0], 2.0 * before->noise_nm[0]);  // validate: 5.72 against 1.93 kN·m
+  // The dashboard's badge: not green (issue 25: the cell once showed a green "alive" alone).
+  EXPECT_NE(before->model_health, status::ModelHealth::at_noise_level);
+  EXPECT_NE(before->model_health, status::ModelHealth::unknown);
   const auto validate = run_gearcoupling({"validate", "--data", kHiddenEccentricity, "--model", "paper"});
   ASSERT_EQ(validate.exit_code, 0) << validate.err;
   ASSERT_FALSE(before->worst_region.empty());
@@ -98,6 +101,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
     EXPECT_LT(after->rmse_nm[channel], 0.7 * after->previous_rmse_nm[channel]);  // 0.34, 0.51
   }
   EXPECT_EQ(after->worst_region, "");
+  EXPECT_EQ(after->model_health, status::ModelHealth::at_noise_level);   // the badge turns green
 }
 
 // A model out of its effect's bounds is refused by swap-model before it is published (the

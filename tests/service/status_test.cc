@@ -14,32 +14,33 @@ namespace {
 using protocol::Calculation;
 using protocol::CatalogueName;
 
-TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
+// A request the service refuses for its input (here an unknown coupling) is the client's, not a
+// failure of the service: counted as refused, not failed (issue 25).
+TEST(Service, StatusReportsCatalogueAndRequestsServedAndRefused) {
   test::ServiceProcess service({"--status-interval-s", "0.1", "--jobs", "2"});
   client::Client client({test::test_domain(), std::chrono::seconds(10)});
   for (int r = 0; r < 10; ++r) client.call<Calculation::kJamAngle>({CatalogueName{"nrel_upwind"}});
   for (int r = 0; r < 3; ++r) {
     EXPECT_THROW(client.call<Calculation::kJamAngle>({CatalogueName{"unknown"}}), ModelError);
   }
-  const auto jam_counts = [&](std::uint64_t& served, std::uint64_t& failed) {
+  client::CalculationStatus jam;
+  const auto jam_counts = [&] {
     for (const client::InstanceInfo& instance : client.instances()) {
       for (const client::CalculationStatus& c : instance.calculations) {
-        if (c.calculation == "jam_angle") {
-          served = c.served;
-          failed = c.failed;
-        }
+        if (c.calculation == "jam_angle") jam = c;
       }
     }
   };
-  std::uint64_t served = 0;
-  std::uint64_t failed = 0;
   ASSERT_TRUE(protocol::wait_until(
       [&] {
-        jam_counts(served, failed);
-        return served == 10 && failed == 3;
+        jam_counts();
+        return jam.served == 10 && jam.refused == 3;
       },
       std::chrono::steady_clock::now() + std::chrono::seconds(5)))
-      << "served " << served << " failed " << failed;
+      << "served " << jam.served << " refused " << jam.refused << " failed " << jam.failed;
+  EXPECT_EQ(jam.failed, 0u);
+  EXPECT_GT(jam.service_time_sum_s, 0.0);
+  EXPECT_LT(jam.service_time_sum_s, 13.0);
   const std::vector<client::InstanceInfo> instances = client.instances();
   ASSERT_EQ(instances.size(), 1u);
   const client::InstanceInfo& instance = instances.front();
@@ -50,6 +51,7 @@ TEST(Service, StatusReportsCatalogueAndRequestsServedAndFailed) {
   EXPECT_EQ(instance.catalogue, (std::vector<std::string>{"nrel_downwind", "nrel_upwind"}));
   ASSERT_EQ(instance.calculations.size(), 5u);
   for (const client::CalculationStatus& c : instance.calculations) {
+    EXPECT_EQ(c.called(), c.calculation == "jam_angle") << c.calculation;
     if (c.calculation != "jam_angle") continue;
     EXPECT_GT(c.p50_service_time_s, 0.0);
     EXPECT_GE(c.p99_service_time_s, c.p50_service_time_s);
