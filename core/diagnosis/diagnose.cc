@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "core/diagnosis/claim_review.h"
 #include "core/diagnosis/delay_estimate.h"
@@ -49,6 +50,10 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
   return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
 }
 
+bool has_held_shape(const EffectInfo& info) {
+  return std::any_of(info.parameters.begin(), info.parameters.end(), [](const ParameterSpec& p) { return p.refine_only; });
+}
+
 /// The registration that refits `effect`: the library's, or an expression over its own terms.
 std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
   if (effect.name() == kExpressionEffect) {
@@ -63,7 +68,8 @@ std::optional<EffectRegistration> registration_for(const Effect& effect, const D
 std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
                                             const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
                                             const Folds& folds, const ParallelFor& parallel,
-                                            const CouplingModel& given, const DiagnosisSettings& given_settings,
+                                            const CouplingModel& given, const std::set<std::string>& partly,
+                                            const DiagnosisSettings& given_settings,
                                             const std::vector<ParameterValues>& hints) {
   DiagnosisSettings settings = given_settings;
   for (const ParameterValues& hint : hints) settings.cross_validation.fit.hints.push_back(hint);
@@ -76,11 +82,12 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
   }
   if (settings.refinements) {
     for (const auto& effect : model.effects()) {
-      // Every effect of the model: the given model's, and those earlier rounds added. An effect
-      // claimed before a second one was fitted without it, and took a share of what the second
-      // explains (a thermal misalignment fitted beside an unexplained weight offset); refitted
-      // with it, both come right. Formulas added earlier are the formula stage's.
-      if (!given.has_effect(effect->name()) && effect->name() == kExpressionEffect) continue;
+      // The given model's effects, those an earlier round added with a shape held
+      // (ParameterSpec::refine_only), which only a refinement frees, and those an earlier round
+      // said explain only partly: fitted beside what they did not explain, they took a share of it
+      // (a thermal misalignment fitted beside an unexplained weight offset), and refitted once
+      // that is explained they come right. Formulas added earlier are the formula stage's.
+      if (!given.has_effect(effect->name()) && !has_held_shape(effect->info()) && !partly.count(effect->name())) continue;
       const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
       if (!registration || registration->info->parameters.empty()) continue;
       ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,
@@ -199,7 +206,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
                             std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
                             const std::vector<std::size_t>& search, const std::vector<std::size_t>& signature_rows,
                             const Folds& folds, const ParallelFor& parallel, const CouplingModel& given,
-                            const DiagnosisSettings& settings) {
+                            const std::set<std::string>& partly, const DiagnosisSettings& settings) {
   DiagnosisRound round;
   for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
   round.noise = estimate_noise(residual);
@@ -238,7 +245,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows))) {
     hints.push_back({{"delay_s", *delay}});
   }
-  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, settings, hints);
+  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, settings, hints);
   put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
   if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
   const bool effect_ok = !round.ranking.empty() && claimable(round.ranking.front(), base_ms, noise_ms, settings);
@@ -517,8 +524,10 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
                   " robust deviations from the running median of their neighbours).";
   }
   CouplingModel current = model;
+  std::set<std::string> partly;  // effects added by a round that said they explain only partly
   for (int r = 0; r < settings.max_rounds; ++r) {
-    DiagnosisRound round = search_round(current, residual, observations, rows, search, refit, folds, parallel, model, settings);
+    DiagnosisRound round =
+        search_round(current, residual, observations, rows, search, refit, folds, parallel, model, partly, settings);
     const bool claims = round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained;
     if (claims) round.claimed = refit_claim(current, round, observations, rows, residual, refit, parallel, settings);
     std::optional<ModelResiduals> next;
@@ -553,6 +562,8 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
           round.dropped.clear();
         }
       }
+      partly.erase(round.claimed->effect->name());
+      if (round.outcome == RoundOutcome::partly_explained) partly.insert(round.claimed->effect->name());
       std::erase_if(out.added, [&](const auto& e) { return e->name() == round.claimed->effect->name(); });
       out.added.push_back(round.claimed->effect);
       residual = next->residual;
