@@ -27,17 +27,25 @@ void ServiceStats::record(protocol::Calculation calculation, bool ok, double ser
 }
 
 std::array<CalculationSnapshot, 5> ServiceStats::snapshot() const {
+  // Copied under the lock, sorted outside it: record() runs on the round trip's own thread (the
+  // request listener), and a sort of 5 x 4096 service times under this lock, made by the dispatch
+  // loop once a second for the status topic, was a wait on that thread behind the dispatch loop
+  // and, on a busy host, behind whatever preempted it (docs/architecture.md, "No lock of the
+  // round trip held by periodic work").
+  std::array<PerCalculation, 5> copy;
+  {
+    std::lock_guard lock(mutex_);
+    copy = calculations_;
+  }
   std::array<CalculationSnapshot, 5> out;
-  std::lock_guard lock(mutex_);
-  for (std::size_t i = 0; i < calculations_.size(); ++i) {
-    const PerCalculation& c = calculations_[i];
+  for (std::size_t i = 0; i < copy.size(); ++i) {
+    PerCalculation& c = copy[i];
     out[i].served = c.served;
     out[i].failed = c.failed;
     if (!c.window.empty()) {
-      std::vector<double> sorted = c.window;
-      std::sort(sorted.begin(), sorted.end());
-      out[i].p50_service_time_s = percentile(sorted, 0.50);
-      out[i].p99_service_time_s = percentile(sorted, 0.99);
+      std::sort(c.window.begin(), c.window.end());
+      out[i].p50_service_time_s = percentile(c.window, 0.50);
+      out[i].p99_service_time_s = percentile(c.window, 0.99);
     }
   }
   return out;
