@@ -19,8 +19,10 @@
 # sums up the rounds of each of the four alike: p50, p99, p99.9, the maximum, the share over
 # 1 ms, the ticks skipped and the share of deadlines missed (late or skipped; the script says
 # why both count). Beside each: the time the hypervisor took the CPUs away during its runs
-# (steal, /proc/stat; a whole vCPU is sometimes taken for 100 ms, and a round trip waits) and
-# the load average when its last run ended. Then the service over the ddsperf mode with the same
+# (steal, /proc/stat; a whole vCPU is sometimes taken for 100 ms, and a round trip waits), the
+# share of deadlines missed outside those times (bench/steal_log.py logs them through the whole
+# run; bench/latency_stats.py --steal sets apart what overlapped them, ddsperf's and the
+# service's alike) and the load average when its last run ended. Then the service over the ddsperf mode with the same
 # wake-ups: call_then over listener, call() over waitset.
 #
 # CONTROL_LOOP_SECONDS (default 3): seconds per run.
@@ -49,8 +51,10 @@ late_us=${CONTROL_LOOP_LATE_US:-}
 . "$here/bench/lib/hogs.sh"
 . "$here/bench/lib/ddsperf.sh"
 service=""
+steal_logger=""
 work=$(mktemp -d)
 cleanup() {
+  if [ -n "$steal_logger" ]; then kill "$steal_logger" 2>/dev/null || true; fi
   stop_hogs
   ddsperf_pong_stop
   if [ -n "$service" ]; then kill -TERM "$service" 2>/dev/null || true; fi
@@ -74,7 +78,7 @@ stats() {
     echo "## round trips over $late_us us" >&2
     python3 "$here/bench/latency_stats.py" --rate-hz "$stats_rate" --late "$late_us" "$@" | sed -n '2,$p' >&2
   fi
-  python3 "$here/bench/latency_stats.py" --rate-hz "$stats_rate" "$@" | head -n 1 || true
+  python3 "$here/bench/latency_stats.py" --rate-hz "$stats_rate" --steal "$work/steal.log" "$@" | head -n 1 || true
 }
 
 steal_ms() {  # the time stolen from all CPUs by the hypervisor so far (ms)
@@ -134,19 +138,21 @@ ratio() {  # A B: A / B with two decimals
 }
 
 row() {  # PRIORITY HOGS RATE WHAT LINE STEAL_FILE
-  echo "| $1 | $2 | $3 | $4 | $(field "$5" n) | $(field "$5" p50) | $(field "$5" p99) | $(field "$5" p999) | $(field "$5" max) | $(field "$5" over_1ms) % | $(field "$5" skipped) | $(field "$5" missed) % | $(awk '{ s += $1 } END { print s + 0 }' "$6") ms | $(cut -d' ' -f1 /proc/loadavg) |"
+  echo "| $1 | $2 | $3 | $4 | $(field "$5" n) | $(field "$5" p50) | $(field "$5" p99) | $(field "$5" p999) | $(field "$5" max) | $(field "$5" over_1ms) % | $(field "$5" skipped) | $(field "$5" missed) % | $(field "$5" missed_unstolen) % | $(awk '{ s += $1 } END { print s + 0 }' "$6") ms | $(cut -d' ' -f1 /proc/loadavg) |"
 }
 
 ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE
-  echo "| $1 | $2 | $3 | $4 | $(ratio "$(field "$5" p50)" "$(field "$6" p50)") | $(ratio "$(field "$5" p999)" "$(field "$6" p999)") | $(field "$5" missed) % / $(field "$6" missed) % |"
+  echo "| $1 | $2 | $3 | $4 | $(ratio "$(field "$5" p50)" "$(field "$6" p50)") | $(ratio "$(field "$5" p999)" "$(field "$6" p999)") | $(field "$5" missed) % / $(field "$6" missed) % | $(field "$5" missed_unstolen) % / $(field "$6" missed_unstolen) % |"
 }
 
 echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds rounds of $seconds s per run, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | steal | load average |
-|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf |
-|---|---|---|---|---|---|---|"
+table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time |
+|---|---|---|---|---|---|---|---|"
 failed=0
+timeout 3600 python3 "$here/bench/steal_log.py" 3600 "$work/steal.log" &
+steal_logger=$!
 for priority in $priorities; do
   prefix=$(prefix_of "$priority")
   # shellcheck disable=SC2086 # the prefix is words
@@ -194,4 +200,5 @@ echo "The service against ddsperf in the mode with the same wake-ups:"
 echo
 echo "$ratios"
 echo "(goal: p99.9 within 2 x; deadlines missed at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
+echo "(steal: the hypervisor took CPUs away for $(awk '{ s += $2 } END { print s + 0 }' "$work/steal.log") ms in all, $(wc -l <"$work/steal.log") times; bench/steal_log.py)"
 exit "$failed"
