@@ -178,6 +178,7 @@ for priority in $priorities; do
         table="$table
 $(row "$priority" "$load" "$rate" "$what" "$line" "$f-$what.steal")"
         eval "line_$what=\"\$line\""
+        eval "kept_${priority}_${load}_${rate}_$what=\"\$line\""
       done
       # shellcheck disable=SC2154 # set by the eval above
       ratios="$ratios
@@ -191,6 +192,21 @@ $(ratios_row "$priority" "$load" "$rate" "call() / ddsperf waitset" "$line_call"
   service=""
 done
 
+# The prioritised service against the unprioritised ddsperf of the same run, when both passes ran.
+cross=""
+case " $priorities " in *" none "*) case " $priorities " in *" fifo "*)
+  for load in $loads; do
+    for rate in $rates; do
+      for pair in call_then:listener call:waitset; do
+        eval "service_line=\"\$kept_fifo_${load}_${rate}_${pair%%:*}\""
+        eval "ddsperf_line=\"\$kept_none_${load}_${rate}_${pair##*:}\""
+        # shellcheck disable=SC2154 # set by the evals above
+        cross="$cross
+$(ratios_row "fifo / none" "$load" "$rate" "${pair%%:*} (fifo) / ddsperf ${pair##*:} (none)" "$service_line" "$ddsperf_line")"
+      done
+    done
+  done ;; esac ;; esac
+
 echo
 echo "Every run's round trips (us; listener and waitset are ddsperf's, the whole round trip):"
 echo
@@ -198,7 +214,7 @@ echo "$table"
 echo
 echo "The service against ddsperf in the mode with the same wake-ups:"
 echo
-echo "$ratios"
+echo "$ratios$cross"
 echo "(goal: p99.9 within 2 x; deadlines missed at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
 echo "(steal: the hypervisor took CPUs away for $(awk '{ s += $2 } END { print s + 0 }' "$work/steal.log") ms in all, $(wc -l <"$work/steal.log") times; bench/steal_log.py)"
 exit "$failed"
