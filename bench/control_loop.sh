@@ -35,6 +35,8 @@
 #   - fifo: `chrt -f 10` (SCHED_FIFO 10: docs/deploy.md, "Real-time priority").
 # CONTROL_LOOP_LATE_US (unset): also list every round trip over this many us, with the time since
 #   the one before (a periodic cause shows as a steady gap).
+# CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
+#   configuration of every process, ddsperf's too, to compare another.
 # Every process is bounded in time (timeout) and uses a domain derived from this shell's pid.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
