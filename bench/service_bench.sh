@@ -37,48 +37,30 @@ loads=${SERVICE_BENCH_LOADS:-0 1 all}
 rounds=${SERVICE_BENCH_ROUNDS:-9}
 window=${SERVICE_BENCH_WINDOW:-1}
 cores=$(nproc)
-hogs=""
+. "$here/bench/lib/hogs.sh"
+. "$here/bench/lib/ddsperf.sh"
 service=""
 work=$(mktemp -d)
 cleanup() {
   rm -rf "$work"
-  for pid in $hogs; do kill "$pid" 2>/dev/null || true; done
+  stop_hogs
+  ddsperf_pong_stop
   if [ -n "$service" ]; then kill -TERM "$service" 2>/dev/null || true; fi
 }
 trap cleanup EXIT INT TERM
 
 echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $cores cores, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 
-start_hogs() {  # $1 hogs; each bounded by timeout in case this script is killed
-  hogs=""
-  i=0
-  while [ "$i" -lt "$1" ]; do
-    timeout 600 sh -c 'while :; do :; done' &
-    hogs="$hogs $!"
-    i=$((i + 1))
-  done
-}
-
-stop_hogs() {
-  for pid in $hogs; do kill "$pid" 2>/dev/null || true; done
-  for pid in $hogs; do wait "$pid" 2>/dev/null || true; done
-  hogs=""
-}
-
 # The floor: ddsperf ping/pong round trip (reliable, 12-byte samples); the median of its
-# per-second p50s over WINDOW seconds, the first second (discovery) dropped. ddsperf prints half
-# the round trip (the one-way latency: (now - source timestamp) / 2 in process_pong,
-# src/tools/ddsperf/ddsperf.c), so its figure is doubled here to compare round trip with round
-# trip. $1 is ping's mode: listener (ddsperf's default: the pong's listener sends the next ping,
-# no thread woken in between, like call_then) or waitset (a thread of ping's own waits for the
-# pong, like a blocking call()).
+# per-second p50s over WINDOW seconds, the first second (discovery) dropped, doubled (ddsperf
+# prints half the round trip, bench/lib/ddsperf.sh) to compare round trip with round trip. $1 is
+# ping's mode: listener (ddsperf's default: the pong's listener sends the next ping, no thread
+# woken in between, like call_then) or waitset (a thread of ping's own waits for the pong, like
+# a blocking call()).
 ddsperf_run() {  # $1 ping mode; prints "p50 p99" of the round trip (us)
-  timeout $((window + 12)) ddsperf -i "$domain" -D $((window + 4)) pong >/dev/null 2>&1 &
-  pong=$!
-  sleep 0.5
+  ddsperf_pong_start "$domain" $((window + 4))
   ping_out=$(timeout $((window + 10)) ddsperf -i "$domain" -D $((window + 2)) ping "$1" 2>&1 || true)
-  kill "$pong" 2>/dev/null || true
-  wait $pong 2>/dev/null || true
+  ddsperf_pong_stop
   echo "$(ddsperf_percentile "$ping_out" 50%) $(ddsperf_percentile "$ping_out" 99%)"
 }
 

@@ -38,19 +38,29 @@ void ServiceStats::record(protocol::Calculation calculation, ReplyOutcome outcom
 }
 
 std::array<CalculationSnapshot, 5> ServiceStats::snapshot() const {
+  // Copied under the lock, one calculation at a time into room made before, and sorted outside
+  // it: record() runs on the round trip's own thread (the request listener), and a sort of
+  // 5 x 4096 service times under this lock, made by the dispatch loop once a second for the
+  // status topic, was a wait of up to a millisecond on that thread behind the dispatch loop
+  // and, on a busy host, behind whatever preempted it (docs/architecture.md, "No lock of the
+  // round trip held by periodic work").
   std::array<CalculationSnapshot, 5> out;
-  std::lock_guard lock(mutex_);
+  std::vector<double> window;
+  window.reserve(kWindow);
   for (std::size_t i = 0; i < calculations_.size(); ++i) {
-    const PerCalculation& c = calculations_[i];
-    out[i].served = c.served;
-    out[i].failed = c.failed;
-    out[i].refused = c.refused;
-    out[i].service_time_sum_s = c.service_time_sum_s;
-    if (!c.window.empty()) {
-      std::vector<double> sorted = c.window;
-      std::sort(sorted.begin(), sorted.end());
-      out[i].p50_service_time_s = percentile(sorted, 0.50);
-      out[i].p99_service_time_s = percentile(sorted, 0.99);
+    {
+      std::lock_guard lock(mutex_);
+      const PerCalculation& c = calculations_[i];
+      out[i].served = c.served;
+      out[i].failed = c.failed;
+      out[i].refused = c.refused;
+      out[i].service_time_sum_s = c.service_time_sum_s;
+      window.assign(c.window.begin(), c.window.end());  // within the reserved room: no allocation
+    }
+    if (!window.empty()) {
+      std::sort(window.begin(), window.end());
+      out[i].p50_service_time_s = percentile(window, 0.50);
+      out[i].p99_service_time_s = percentile(window, 0.99);
     }
   }
   return out;

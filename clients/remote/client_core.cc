@@ -388,6 +388,17 @@ void ClientCore::take_status() {
   for (;;) {
     protocol::LoanedSamples<gearcoupling_ServiceStatus> samples(status_reader_.get());
     if (samples.size() == 0) return;
+    // Converted before taking mutex_, which every reply takes on Cyclone's receive thread
+    // (take_replies): a status sample a second, with its catalogue, is work for this thread
+    // alone, not a wait for the round trip (docs/architecture.md, "No lock of the round trip
+    // held by periodic work").
+    std::vector<InstanceInfo> infos(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const dds_sample_info_t& info = samples.info(i);
+      if (info.instance_state == DDS_IST_ALIVE && info.valid_data) {
+        infos[i] = instance_info_from_wire(samples[i]);
+      }
+    }
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const dds_sample_info_t& info = samples.info(i);
@@ -425,7 +436,7 @@ void ClientCore::take_status() {
           if (reply_readers_[c]) create_request_writer_locked(*instance, c);
         }
       }
-      instance->info = instance_info_from_wire(status);
+      instance->info = std::move(infos[i]);
     }
     instances_changed_.notify_all();
   }
