@@ -58,6 +58,9 @@ grep -q "^libgearcoupling-core 0 libgearcoupling0 (>= $version)" "$tmp/control-l
     cyclonedds.xml dashboard.conf monitor.conf service.conf)" ] ||
   fail "conffiles: $(cat "$tmp/control-gearcoupling/conffiles")"
 grep -q "adduser --system" "$tmp/control-gearcoupling/postinst" || fail "postinst makes no system user"
+# The units are stopped on removal.
+grep -q "deb-systemd-invoke stop 'gearcoupling-dashboard.service' 'gearcoupling-monitor.service' 'gearcoupling-service.service'" \
+  "$tmp/control-gearcoupling/prerm" || fail "prerm does not stop the units"
 
 # Files: each in its package.
 contents() { dpkg-deb -c "$(deb "$1")" | awk '{print $6}' | sed 's|^\./|/|'; }
