@@ -52,6 +52,7 @@ getent passwd gearcoupling >/dev/null || fail "no system user gearcoupling"
 
 # The programs, their units and configuration.
 for program in gearcoupling gearcoupling-service gearcoupling-monitor gearcoupling-dashboard; do
+  [ "$(command -v "$program")" = "/usr/bin/$program" ] || fail "$program is not /usr/bin/$program"
   [ "$("$program" --version)" = "$program $version" ] ||
     fail "$program --version: $("$program" --version 2>&1) (package $version)"
 done

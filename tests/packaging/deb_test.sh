@@ -93,6 +93,11 @@ in_package gearcoupling '/usr/bin/gearcoupling(-service|-monitor|-dashboard)?' \
 if contents libgearcoupling-dev | grep -E '/gearcoupling\.h$|client_core\.h$'; then
   fail "libgearcoupling-dev ships a header of the client's DDS side"
 fi
+# The headers include, beyond the standard library and each other, only Eigen and protobuf:
+# the -dev packages libgearcoupling-dev depends on.
+dpkg -x "$(deb libgearcoupling-dev)" "$tmp/dev"
+others=$(grep -rhoE '#include <[A-Za-z0-9_.]+/' "$tmp/dev/usr/include" | sort -u | grep -vE '<(Eigen|google)/$') || true
+[ -z "$others" ] || fail "libgearcoupling-dev's headers include $others: its -dev package belongs in Depends"
 # Each file in one package only.
 duplicates=$(for package in "${packages[@]}"; do contents "$package" | grep -v '/$'; done | sort | uniq -d)
 [ -z "$duplicates" ] || fail "files in two packages: $duplicates"
