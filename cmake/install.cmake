@@ -85,6 +85,11 @@ set(GC_BINARY_DIR \"${PROJECT_BINARY_DIR}\")
 set(GC_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
 set(GC_DOCDIR \"${CMAKE_INSTALL_DOCDIR}\")
 set(GC_UNITS \"${gc_units}\")")
+# The files written at install time go to a folder of each install's own (prefix and DESTDIR):
+# several installs of one build may run at once (the packaging tests do).
+install(CODE [[
+string(MD5 GC_INSTALL_KEY "$ENV{DESTDIR}${CMAKE_INSTALL_PREFIX}")
+set(GC_STAGING_DIR "${GC_BINARY_DIR}/install/${GC_INSTALL_KEY}")]])
 install(SCRIPT cmake/install_system_files.cmake)
 install(CODE "set(GC_PC_NAMES \"${gc_pc_names}\")
 set(GC_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")")

@@ -4,8 +4,8 @@
 #   /etc/gearcoupling/{service,monitor,dashboard}.conf and cyclonedds.xml under /usr, else
 #   <prefix>/etc/gearcoupling/
 # deploy/gearcoupling-*.service are the units as the .deb installs them (/usr/bin, /etc); other
-# prefixes get their own paths written in. GC_UNITS (the programs with a unit) comes from
-# install(CODE) in cmake/install.cmake.
+# prefixes get their own paths written in. GC_UNITS (the programs with a unit) and GC_STAGING_DIR
+# come from install(CODE) in cmake/install.cmake.
 if(CMAKE_INSTALL_PREFIX STREQUAL "/usr")
   set(etc_dir "/etc/gearcoupling")
 else()
@@ -17,8 +17,8 @@ foreach(program IN LISTS GC_UNITS)
   string(REPLACE "/usr/bin/" "${CMAKE_INSTALL_PREFIX}/${GC_BINDIR}/" unit "${unit}")
   string(REPLACE "/usr/share/doc/gearcoupling/" "${CMAKE_INSTALL_PREFIX}/${GC_DOCDIR}/" unit "${unit}")
   string(REPLACE "/etc/gearcoupling/" "${etc_dir}/" unit "${unit}")
-  file(WRITE "${GC_BINARY_DIR}/install/${program}.service" "${unit}")
-  file(INSTALL "${GC_BINARY_DIR}/install/${program}.service"
+  file(WRITE "${GC_STAGING_DIR}/${program}.service" "${unit}")
+  file(INSTALL "${GC_STAGING_DIR}/${program}.service"
     DESTINATION "${CMAKE_INSTALL_PREFIX}/lib/systemd/system")
 endforeach()
 
