@@ -8,7 +8,8 @@
 #   - every installed program prints the package's version;
 #   - gearcoupling-service, started with its unit's command line as the unit's user, says it uses
 #     the installed /etc/gearcoupling/cyclonedds.xml; `gearcoupling jam-angle --remote` and
-#     Python's Client answer through it exactly as the core in process; so after a reload (SIGHUP);
+#     Python's Client answer through it exactly as the core in process; so after a reload (SIGHUP),
+#     which reads the installed configuration again;
 #   - gearcoupling-monitor and gearcoupling-dashboard start from their units' command lines and
 #     configuration; the dashboard's /metrics shows the service's instance;
 #   - a find_package(gearcoupling) consumer and a pkg-config one build against /usr with
@@ -100,13 +101,21 @@ print("python: jam angle", remote, "deg through the service")
 }
 remote_call "first call"
 echo "$local_answer"
-# A reload makes a new participant on a new domain of the installed configuration.
+# A reload makes a new participant on a new domain, which reads the installed configuration again:
+# here, edited to trace Cyclone's configuration to the service's log.
+if grep -q "config: Domain/" "$deb_dir/service.log"; then fail "Cyclone traced before the edit"; fi
+sed -i 's|<Domain id="any">|<Domain id="any"><Tracing><Verbosity>config</Verbosity><OutputFile>stderr</OutputFile></Tracing>|' \
+  /etc/gearcoupling/cyclonedds.xml
 kill -HUP "$service"
 for _ in $(seq 100); do
   grep -q "reloaded: new participant" "$deb_dir/service.log" && break
   sleep 0.1
 done
 grep -q "reloaded: new participant" "$deb_dir/service.log" || fail "no reload on SIGHUP"
+grep -q "config: Domain/Tracing/OutputFile/#text: stderr" "$deb_dir/service.log" ||
+  fail "the reload did not read /etc/gearcoupling/cyclonedds.xml again"
+sed -i 's|<Tracing><Verbosity>config</Verbosity><OutputFile>stderr</OutputFile></Tracing>||' \
+  /etc/gearcoupling/cyclonedds.xml
 remote_call "after SIGHUP"
 
 # The monitor and the dashboard, as their units start them, with their configuration edited as
