@@ -31,6 +31,7 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
   std::vector<std::string> cell_models;
   app.set_version_flag("--version", "gearcoupling-monitor " GC_VERSION);
   app.set_config("--config", "", kConfigHelp);
+  app.allow_config_extras(false);  // a misspelt name in the file is an error, not ignored
   app.add_option("--domain", o.domain, "DDS domain id")->capture_default_str();
   app.add_option("--model", o.default_model,
                  "model of every test cell not named by --cell: a .textproto file, or a name in "

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
                  "read flags from FILE (TOML: `name = value` a line, the long flag without --, "
                  "e.g. `listen = \"127.0.0.1:8080\"`); flags on the command line win. Its unit "
                  "reads /etc/gearcoupling/dashboard.conf");
+  app.allow_config_extras(false);  // a misspelt name in the file is an error, not ignored
   app.add_option("--domain", options.domain, "DDS domain id; the network comes from CYCLONEDDS_URI, else the installed cyclonedds.xml")
       ->check(CLI::Range(0, gc::protocol::kMaxDomainId));
   app.add_option("--listen", listen,
