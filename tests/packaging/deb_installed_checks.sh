@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Part of ctest packaging.deb (deb_test.sh runs it under `unshare --mount --net`): the .debs in
+# Part of ctest packaging.deb (deb_test.sh runs it under `unshare --mount --net --pid`): the .debs in
 # DEB_DIR installed with dpkg at their real paths, as on a test cell's host, without touching this
 # host. /usr, /etc and /var are overlays whose changes land in DEB_DIR/overlay and vanish with
 # the mount namespace; /run is empty (no systemd to call); the network namespace has only
@@ -144,7 +144,7 @@ grep -q "on domain 0, model paper_downwind by default" "$deb_dir/monitor.log" ||
 # Building against the installed -dev package, without Cyclone's -dev package.
 DEBIAN_FRONTEND=noninteractive dpkg -r --force-depends cyclonedds-dev >"$deb_dir/dpkg-remove.log" 2>&1 ||
   fail "removing cyclonedds-dev in the overlay"
-cp -r "$source/tests/packaging/consumer" "$deb_dir/consumer"
+cp -r "$source/tests/packaging/consumer" "$deb_dir/consumer" || fail "no consumer project in $source"
 cmake -S "$deb_dir/consumer" -B "$deb_dir/consumer/build" -DCMAKE_BUILD_TYPE=Release \
   >"$deb_dir/consumer.log" 2>&1 || fail "find_package(gearcoupling) from /usr: $(tail -5 "$deb_dir/consumer.log")"
 cmake --build "$deb_dir/consumer/build" >>"$deb_dir/consumer.log" 2>&1 || fail "the consumer does not build"

@@ -4,7 +4,7 @@
 # `cmake --install` of this build under /usr, no rebuild); lintian finds no error and no warning
 # in them (overrides carry their reason in debian/*.lintian-overrides); their control data and
 # file lists are checked; then deb_installed_checks.sh installs them with dpkg at their real
-# paths inside a private mount and network namespace (needs root, as CI has): the first remote
+# paths inside private mount, network and PID namespaces (needs root, as CI has): the first remote
 # call with CYCLONEDDS_URI unset, the units' command lines, building against -dev, the purge.
 #   deb_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -132,7 +132,8 @@ if [ "$(id -u)" -ne 0 ]; then
   echo "SKIP: installing the packages needs root (a private mount namespace with overlays)"
   exit 77
 fi
-unshare --mount --net --propagation private \
+# A PID namespace too: whatever the checks started dies with them, even if they fail midway.
+unshare --mount --net --pid --fork --propagation private \
   bash "$(dirname "$0")/deb_installed_checks.sh" "$tmp" "$source" "$version" ||
   fail "installed packages (deb_installed_checks.sh)"
 echo "PASS: the four .debs built, lintian-clean, installed, served, built against and purged"
