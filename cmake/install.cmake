@@ -1,6 +1,6 @@
 # cmake --install (docs/deploy.md): the programs, the public libraries with their headers, the
 # CMake package (find_package(gearcoupling)) and pkg-config files, the bundled data, and the
-# deployment files. The .deb (cmake/package.cmake) is this install under /usr.
+# deployment files. The Debian packages (debian/) are this install under /usr, split.
 include(CMakePackageConfigHelpers)
 
 set(gc_public_libraries gc_core gc_codec)
@@ -41,22 +41,22 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/gearcoupling-config-versi
 install(FILES ${PROJECT_BINARY_DIR}/gearcoupling-config.cmake
   ${PROJECT_BINARY_DIR}/gearcoupling-config-version.cmake DESTINATION ${gc_cmake_dir})
 
-# pkg-config: gearcoupling-core, -codec, -client; relocatable (paths from ${pcfiledir}).
-file(RELATIVE_PATH gc_prefix_from_pcfiledir
-  ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
-string(REGEX REPLACE "/$" "" gc_prefix_from_pcfiledir ${gc_prefix_from_pcfiledir})
+# pkg-config: gearcoupling-core, -codec, -client. Each names only the pkg-config modules its
+# headers need (the client's need no Cyclone: it links libddsc privately). The prefix is written
+# at install time (cmake/install_pkg_config.cmake), absolute, as Debian's own .pc files have it:
+# `cmake --install --prefix P` gets P, the .deb /usr.
 set(gc_pc_core_requires "eigen3")
 set(gc_pc_codec_requires "gearcoupling-core protobuf")
-set(gc_pc_client_requires "gearcoupling-core CycloneDDS")
+set(gc_pc_client_requires "gearcoupling-core")
+set(gc_pc_prefix "@GC_PC_PREFIX@")  # left for install time
+set(gc_pc_names "")
 foreach(target IN LISTS gc_public_libraries)
   get_target_property(gc_pc_name ${target} EXPORT_NAME)
   set(gc_pc_requires ${gc_pc_${gc_pc_name}_requires})
   configure_file(cmake/gearcoupling.pc.in
-    ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc @ONLY)
-  install(FILES ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc
-    DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+    ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc.in @ONLY)
+  list(APPEND gc_pc_names gearcoupling-${gc_pc_name})
 endforeach()
-
 # Bundled couplings, models and recordings, where codec::bundled_data_dir looks for them.
 install(DIRECTORY data/couplings data/models DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling)
 install(DIRECTORY data/recordings DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling
@@ -65,9 +65,16 @@ install(DIRECTORY data/recordings DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupl
 # Deployment: every Cyclone configuration and the DDS Security tools as examples; the systemd
 # unit and the default configuration in etc/gearcoupling (/etc under /usr), written at install
 # time because they name the install prefix (cmake/install_system_files.cmake).
-install(FILES deploy/cyclonedds-loopback.xml deploy/cyclonedds-lan.example.xml
-  deploy/cyclonedds-lan-multicast.xml deploy/cyclonedds-secure.example.xml deploy/service.conf
-  deploy/gearcoupling-service.service
+set(gc_units "")
+if(GC_BUILD_SERVICE)
+  set(gc_units gearcoupling-service gearcoupling-monitor gearcoupling-dashboard)
+endif()
+list(TRANSFORM gc_units APPEND .service OUTPUT_VARIABLE gc_unit_files)
+list(TRANSFORM gc_unit_files PREPEND deploy/)
+install(FILES deploy/cyclonedds-loopback.xml deploy/cyclonedds-loopback-client.xml
+  deploy/cyclonedds-lan.example.xml deploy/cyclonedds-lan-multicast.xml
+  deploy/cyclonedds-secure.example.xml deploy/service.conf deploy/monitor.conf
+  deploy/dashboard.conf ${gc_unit_files}
   DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling/deploy)
 install(PROGRAMS deploy/security/make-security.sh
   DESTINATION ${CMAKE_INSTALL_DATADIR}/gearcoupling/deploy/security)
@@ -76,8 +83,17 @@ install(FILES deploy/security/governance.xml
 install(CODE "set(GC_SOURCE_DIR \"${PROJECT_SOURCE_DIR}\")
 set(GC_BINARY_DIR \"${PROJECT_BINARY_DIR}\")
 set(GC_BINDIR \"${CMAKE_INSTALL_BINDIR}\")
-set(GC_DOCDIR \"${CMAKE_INSTALL_DOCDIR}\")")
+set(GC_DOCDIR \"${CMAKE_INSTALL_DOCDIR}\")
+set(GC_UNITS \"${gc_units}\")")
+# The files written at install time go to a folder of each install's own (prefix and DESTDIR):
+# several installs of one build may run at once (the packaging tests do).
+install(CODE [[
+string(MD5 GC_INSTALL_KEY "$ENV{DESTDIR}${CMAKE_INSTALL_PREFIX}")
+set(GC_STAGING_DIR "${GC_BINARY_DIR}/install/${GC_INSTALL_KEY}")]])
 install(SCRIPT cmake/install_system_files.cmake)
+install(CODE "set(GC_PC_NAMES \"${gc_pc_names}\")
+set(GC_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")")
+install(SCRIPT cmake/install_pkg_config.cmake)
 
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -16,7 +16,8 @@ packages=(
   prometheus      # promtool checks /metrics in the suite (tests/dashboard/)
   python3-prometheus-client  # its text parser reads /metrics in the suite (tests/dashboard/)
   clang libclang-rt-14-dev  # the libFuzzer targets of fuzz/ (tests/run_fuzz.sh)
-  dpkg-dev file pkg-config  # the .deb (cpack, dpkg-shlibdeps) and tests/packaging
+  dpkg-dev file pkg-config  # tests/packaging
+  debhelper dh-python help2man lintian iproute2  # the .debs (debian/: dpkg-buildpackage) and their test
   python3-dev pybind11-dev python3-numpy  # the Python module (clients/python, docs/python.md)
   python3-pytest python3-pandas python3-matplotlib  # its tests and examples
   openssl         # deploy/security/make-security.sh (CA, certificates, signed documents, CRL)

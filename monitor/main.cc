@@ -19,12 +19,19 @@
 
 namespace {
 
+constexpr const char* kConfigHelp =
+    "read flags from FILE (TOML: `name = value` a line, the long flag without --, e.g. `domain = "
+    "0`, `cell = [\"dyno1=paper\"]`); flags on the command line win. Its unit reads "
+    "/etc/gearcoupling/monitor.conf";
 
 gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::string& log_level) {
   gc::live::MonitorOptions o;
   o.models_dir = gc::codec::bundled_data_dir("models");
   o.catalog_dir = gc::codec::default_catalog_dir();
   std::vector<std::string> cell_models;
+  app.set_version_flag("--version", "gearcoupling-monitor " GC_VERSION);
+  app.set_config("--config", "", kConfigHelp);
+  app.allow_config_extras(false);  // a misspelt name in the file is an error, not ignored
   app.add_option("--domain", o.domain, "DDS domain id")->capture_default_str();
   app.add_option("--model", o.default_model,
                  "model of every test cell not named by --cell: a .textproto file, or a name in "

@@ -19,8 +19,11 @@ std::filesystem::path loaded_from_dir() {
     return {};
   }
   std::error_code error;
-  const std::filesystem::path file = std::filesystem::absolute(info.dli_fname, error);
-  return error ? std::filesystem::path() : file.parent_path().lexically_normal();
+  // Canonical: a library the loader found through a symlinked folder (/lib on a merged /usr,
+  // where ld.so.cache points) is under its real prefix (/usr).
+  const std::filesystem::path dir =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(info.dli_fname, error).parent_path(), error);
+  return error ? std::filesystem::path() : dir;
 }
 
 // The prefix `dir` is `<prefix>/<relative>` of; nullopt when it is not.

@@ -15,6 +15,7 @@
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "parallel/shutdown_signals.h"
+#include "protocol/dds_config.h"
 #include "protocol/dds_entity.h"
 #include "protocol/names.h"
 #include "service/service.h"
@@ -52,27 +53,31 @@ int main(int argc, char** argv) {
   spdlog::flush_on(spdlog::level::info);
 
   try {
+    // CYCLONEDDS_URI, else the installed configuration (docs/deploy.md, "Which Cyclone
+    // configuration"); chosen once, so that a reload keeps it.
+    const gc::protocol::DdsConfig dds = gc::protocol::dds_config();
     const std::filesystem::path catalogue_dir = config.catalogue_dir.empty()
                                                     ? gc::codec::default_catalog_dir()
                                                     : std::filesystem::path(config.catalogue_dir);
     spdlog::info("config: domain={} threads={} catalogue_dir={} log_level={} status_interval={}s "
                  "stats_interval={}s lease={}s reply_match_timeout={}s reply_block={}s departed_hold={}s "
                  "shutdown_grace={}s deadline={}s "
-                 "CYCLONEDDS_URI={}",
+                 "DDS configuration: {}",
                  config.domain, config.threads, catalogue_dir.string(), config.log_level,
                  config.status_interval_s, config.stats_log_interval_s, config.liveliness_lease_s,
                  config.reply_match_timeout_s, config.reply_block_s, config.departed_hold_s,
                  config.shutdown_grace_s, config.calculation_deadline_s,
-                 std::getenv("CYCLONEDDS_URI") ? std::getenv("CYCLONEDDS_URI") : "(unset)");
-    if (std::getenv("CYCLONEDDS_URI") == nullptr) {
-      spdlog::warn("CYCLONEDDS_URI is not set: Cyclone's defaults apply (every interface, "
-                   "multicast); deploy/cyclonedds-loopback.xml keeps DDS on loopback");
+                 gc::protocol::describe(dds));
+    if (dds.source == gc::protocol::DdsConfigSource::kCycloneDefault) {
+      spdlog::warn("no CYCLONEDDS_URI and no installed etc/gearcoupling/cyclonedds.xml: Cyclone's "
+                   "defaults apply (every interface, multicast); deploy/cyclonedds-loopback.xml "
+                   "keeps DDS on loopback");
     }
     const gc::service::Catalogue catalogue(gc::codec::load_coupling_catalog(catalogue_dir));
     // SIGHUP: a new Service, so a new participant (docs/security.md, "Revoking an identity").
     for (int generation = 0;; ++generation) {
       const auto made = std::chrono::steady_clock::now();
-      gc::service::Service service(config, catalogue);
+      gc::service::Service service(config, catalogue, dds);
       if (generation > 0) {
         spdlog::info("reloaded: new participant, instance {} ({:.0f} ms to make it)",
                      gc::protocol::hex_id(service.instance_id()),

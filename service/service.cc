@@ -76,13 +76,11 @@ auto within_deadline(Calculation calculation, double deadline_s, Clock::time_poi
 
 }  // namespace
 
-Service::Service(const ServiceConfig& config, Catalogue catalogue)
+Service::Service(const ServiceConfig& config, Catalogue catalogue, const protocol::DdsConfig& dds)
     : config_(config),
       catalogue_(std::move(catalogue)),
       instance_id_(protocol::random_id()),
-      participant_(check_dds(dds_create_participant(static_cast<dds_domainid_t>(config.domain),
-                                                    nullptr, nullptr),
-                             "dds_create_participant")),
+      participant_(protocol::create_participant(config.domain, dds)),
       request_topics_(protocol::make_request_topics(participant_.get())),
       reply_topics_(protocol::make_reply_topics(participant_.get())),
       reply_writers_(participant_.get(), protocol::handles(reply_topics_),
@@ -95,6 +93,9 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue)
       status_(participant_.get(), instance_id_, worker_count(config.threads),
               config.liveliness_lease_s, catalogue_, stats_),
       pool_(worker_count(config.threads)) {
+  if (dds.source == protocol::DdsConfigSource::kInstalled) {
+    domain_ = Entity(check_dds(dds_get_parent(participant_.get()), "dds_get_parent(participant)"));
+  }
   const protocol::Qos partition = protocol::partition_qos(protocol::request_partition(instance_id_));
   request_subscriber_ = Entity(check_dds(
       dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));

@@ -28,9 +28,10 @@ namespace gc::service {
 
 class Service {
  public:
-  /// Joins DDS domain config.domain (network settings from CYCLONEDDS_URI) and creates every
-  /// entity. Throws protocol::DdsError when DDS cannot start.
-  Service(const ServiceConfig& config, Catalogue catalogue);
+  /// Joins DDS domain config.domain with the Cyclone configuration `dds` (protocol/dds_config.h:
+  /// CYCLONEDDS_URI, else the installed one) and creates every entity. Throws protocol::DdsError
+  /// when DDS cannot start.
+  Service(const ServiceConfig& config, Catalogue catalogue, const protocol::DdsConfig& dds);
   ~Service();
   Service(const Service&) = delete;
   Service& operator=(const Service&) = delete;
@@ -76,6 +77,11 @@ class Service {
   ServiceConfig config_;
   Catalogue catalogue_;
   std::uint64_t instance_id_;
+  /// The domain this Service made for the installed configuration (protocol::create_participant
+  /// makes it explicitly, and Cyclone keeps an explicit domain after its last participant):
+  /// deleted after the participant, so that the next Service (a reload) reads the configuration
+  /// again. Empty when Cyclone made the domain itself (CYCLONEDDS_URI, or its default).
+  protocol::Entity domain_;
   protocol::Entity participant_;
   std::array<protocol::Entity, 5> request_topics_;
   std::array<protocol::Entity, 5> reply_topics_;

@@ -57,7 +57,13 @@ int main(int argc, char** argv) {
       "gearcoupling-dashboard: the service instances, the live test cells and a query panel in "
       "the browser, and /metrics for Prometheus (docs/dashboard.md). Reads DDS; writes only the "
       "query panel's requests."};
-  app.add_option("--domain", options.domain, "DDS domain id; the network comes from CYCLONEDDS_URI")
+  app.set_version_flag("--version", "gearcoupling-dashboard " GC_VERSION);
+  app.set_config("--config", "",
+                 "read flags from FILE (TOML: `name = value` a line, the long flag without --, "
+                 "e.g. `listen = \"127.0.0.1:8080\"`); flags on the command line win. Its unit "
+                 "reads /etc/gearcoupling/dashboard.conf");
+  app.allow_config_extras(false);  // a misspelt name in the file is an error, not ignored
+  app.add_option("--domain", options.domain, "DDS domain id; the network comes from CYCLONEDDS_URI, else the installed cyclonedds.xml")
       ->check(CLI::Range(0, gc::protocol::kMaxDomainId));
   app.add_option("--listen", listen,
                  "ADDR:PORT to serve on; localhost only by default, port 0 picks a free one "

@@ -1,122 +1,139 @@
 #!/usr/bin/env bash
-# ctest packaging.deb: cpack makes the .deb from this build; its control data (dependencies,
-# conffiles, the maintainer script making the system user) and file list are checked; dpkg -x
-# unpacks it into a scratch root, whose gearcoupling-service runs with the unpacked configuration
-# (/etc/gearcoupling: loopback) on a domain of its own, finding the unpacked catalogue, and
-# answers the unpacked CLI exactly as the CLI answers in process.
-#   deb_test.sh BUILD_DIR
+# ctest packaging.deb: the Debian packages of debian/ (libgearcoupling0, libgearcoupling-dev,
+# python3-gearcoupling, gearcoupling) made from this build by dpkg-buildpackage (GC_BUILD_DIR:
+# `cmake --install` of this build under /usr, no rebuild); lintian finds no error and no warning
+# in them (overrides carry their reason in debian/*.lintian-overrides); their control data and
+# file lists are checked; then deb_installed_checks.sh installs them with dpkg at their real
+# paths inside private mount, network and PID namespaces (needs root, as CI has): the first remote
+# call with CYCLONEDDS_URI unset, the units' command lines, building against -dev, the purge.
+#   deb_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
-build=$1
+build=$1 source=$2
 . "$(dirname "$0")/scratch.sh"
 scratch gc_deb
 
-cpack --config "$build/CPackConfig.cmake" -B "$tmp/cpack" >/dev/null
-deb=$(echo "$tmp"/cpack/gearcoupling_*.deb)
-[ -f "$deb" ] || fail "no .deb made"
-dpkg-deb --info "$deb" >/dev/null
-
-# Control data.
-dpkg-deb -e "$deb" "$tmp/control"
-depends=$(dpkg-deb -f "$deb" Depends)
-for package in adduser libddsc0debian libprotobuf32 libspdlog1.10-fmt9 libfmt9 libstdc++6; do
-  [[ ", $depends," == *", $package "* || ", $depends," == *", $package,"* ]] ||
-    fail "Depends lacks $package: $depends"
+# dpkg-buildpackage writes beside debian/: a scratch copy of it, not the source tree.
+mkdir "$tmp/src"
+cp -r "$source/debian" "$tmp/src/debian"
+(cd "$tmp/src" && GC_BUILD_DIR=$build dpkg-buildpackage -b -uc -us >"$tmp/dpkg-buildpackage.log" 2>&1) ||
+  { tail -30 "$tmp/dpkg-buildpackage.log" >&2; fail "dpkg-buildpackage"; }
+version=$(dpkg-parsechangelog -l "$source/debian/changelog" -S Version)
+arch=$(dpkg --print-architecture)
+deb() { echo "$tmp/${1}_${version}_${arch}.deb"; }
+packages=(libgearcoupling0 libgearcoupling-dev python3-gearcoupling gearcoupling)
+for package in "${packages[@]}"; do
+  [ -f "$(deb "$package")" ] || fail "no $package .deb"
 done
-[ "$(cat "$tmp/control/conffiles")" = "$(printf '/etc/gearcoupling/service.conf\n/etc/gearcoupling/cyclonedds.xml')" ] ||
-  fail "conffiles: $(cat "$tmp/control/conffiles")"
-grep -q "adduser --system" "$tmp/control/postinst" || fail "postinst makes no system user"
-grep -q "^libgearcoupling-core 0 " "$tmp/control/shlibs" || fail "shlibs: $(cat "$tmp/control/shlibs")"
 
-# Files.
-root=$tmp/root
-dpkg -x "$deb" "$root"
-libdir=$(dirname "$(find "$root/usr/lib" -name libgearcoupling-core.so.0)")
-for file in usr/bin/gearcoupling usr/bin/gearcoupling-service usr/bin/gearcoupling-monitor \
-    usr/lib/systemd/system/gearcoupling-service.service \
-    etc/gearcoupling/service.conf etc/gearcoupling/cyclonedds.xml \
-    usr/share/gearcoupling/couplings/nrel_upwind.textproto \
-    usr/share/gearcoupling/couplings/nrel_downwind.textproto \
-    usr/share/gearcoupling/models/paper.textproto \
-    usr/share/gearcoupling/deploy/cyclonedds-lan.example.xml \
-    usr/share/gearcoupling/deploy/security/make-security.sh \
-    usr/include/gearcoupling/clients/remote/client.h \
-    usr/share/bash-completion/completions/gearcoupling \
-    usr/include/gearcoupling/core/jam_angle.h usr/include/gearcoupling/idl/coupling.pb.h \
-    usr/share/doc/gearcoupling/deploy.md; do
-  [ -e "$root/$file" ] || fail "missing /$file"
-done
-# The client's header needs no Cyclone header and nothing idlc generated (docs/deploy.md).
-[ ! -e "$root/usr/include/gearcoupling/gearcoupling.h" ] || fail "idlc's gearcoupling.h is packaged"
-for name in core codec client; do
-  [ "$(readlink "$libdir/libgearcoupling-$name.so.0")" = "libgearcoupling-$name.so.0.1.0" ] ||
-    fail "libgearcoupling-$name.so.0 is not the versioned library"
-  objdump -p "$libdir/libgearcoupling-$name.so.0" | grep -q "SONAME *libgearcoupling-$name.so.0\$" ||
-    fail "libgearcoupling-$name: SONAME"
-  [ -f "$libdir/pkgconfig/gearcoupling-$name.pc" ] || fail "no gearcoupling-$name.pc"
-done
-[ -f "$libdir/cmake/gearcoupling/gearcoupling-config.cmake" ] || fail "no CMake package"
-if grep -rl "$build" "$libdir/cmake" "$libdir/pkgconfig"; then fail "build paths in the package"; fi
+# lintian on everything built (the .changes: the packages and the .buildinfo): no error, no
+# warning. (As root it says that it would rather not be: that line is not a finding.)
+lintian --fail-on error,warning "$tmp"/gearcoupling_"$version"_"$arch".changes >"$tmp/lintian.out" 2>&1 ||
+  { cat "$tmp/lintian.out" >&2; fail "lintian"; }
+grep -v "running with root privileges" "$tmp/lintian.out" | sed 's/^/lintian: /' || true
+if ls "$tmp"/*.ddeb "$tmp"/*-dbgsym_*.deb 2>/dev/null; then fail "-dbgsym packages of a build without debug information"; fi
 
-# The unit: the package's paths, a fixed system user (DDS Security's key must be readable by it,
-# docs/security.md), hardening.
-unit=$root/usr/lib/systemd/system/gearcoupling-service.service
-for line in "ExecStart=/usr/bin/gearcoupling-service --config /etc/gearcoupling/service.conf" \
-    "Environment=CYCLONEDDS_URI=file:///etc/gearcoupling/cyclonedds.xml" \
-    "User=gearcoupling" "NoNewPrivileges=yes" "ProtectSystem=strict" "ProtectHome=yes" \
-    "PrivateTmp=yes" "CapabilityBoundingSet=" \
-    "RestrictAddressFamilies=AF_INET AF_INET6 AF_UNIX AF_NETLINK"; do
-  grep -qxF "$line" "$unit" || fail "unit lacks: $line"
-done
-if grep -q "^DynamicUser" "$unit"; then fail "unit uses DynamicUser"; fi
-# systemd's own reading of it (a copy whose ExecStart is the unpacked binary): no unknown key, no
-# value it cannot parse.
-if command -v systemd-analyze >/dev/null; then
-  sed "s|/usr/bin/|$root/usr/bin/|" "$unit" >"$tmp/gearcoupling-service.service"
-  verify=$(systemd-analyze verify "$tmp/gearcoupling-service.service" 2>&1) || true
-  [ -z "$verify" ] || fail "systemd-analyze verify: $verify"
-else
-  echo "systemd-analyze not installed: the unit's syntax is not verified"
-fi
-
-# Run from the scratch root.
-domain=$((216 + $$ % 15))  # 216-230: see find_package_test.sh
-export CYCLONEDDS_URI=file://$root/etc/gearcoupling/cyclonedds.xml
-unset GEARCOUPLING_CATALOG GEARCOUPLING_MODELS
-"$root/usr/bin/gearcoupling-service" --config "$root/etc/gearcoupling/service.conf" \
-  --domain "$domain" 2>"$tmp/service.log" &
-service=$!
-cli=$root/usr/bin/gearcoupling
-remote=$("$cli" jam-angle --coupling nrel_downwind --remote --domain "$domain" --timeout-s 30) ||
-  fail "remote jam-angle"
-local=$("$cli" jam-angle --coupling nrel_downwind)
-echo "$remote"
-[ "$remote" = "$local" ] || fail "remote and in-process answers differ: $local"
-grep -q "catalogue_dir=$root/usr/share/gearcoupling/couplings " "$tmp/service.log" ||
-  fail "the service did not find the unpacked catalogue"
-kill -TERM "$service"
-status=0
-wait "$service" || status=$?
-service=""
-[ "$status" -eq 0 ] || fail "gearcoupling-service exited $status on SIGTERM"
-
-# The unpacked CLI finds the unpacked models and recordings too.
-"$cli" validate --model paper \
-  --data "$root/usr/share/gearcoupling/recordings/paper_torque_ramp.csv" >"$tmp/validate.out" ||
-  fail "validate with the bundled model: $(cat "$tmp/validate.out")"
-# The Python module, where Debian's python3 reads modules for /usr, using the unpacked libraries
-# and data (built with GC_BUILD_PYTHON, docs/python.md).
-if grep -q "^GC_BUILD_PYTHON:BOOL=ON" "$build/CMakeCache.txt"; then
-  package=$root/usr/lib/python3/dist-packages/gearcoupling
-  for file in __init__.py _results.py __init__.pyi py.typed; do
-    [ -f "$package/$file" ] || fail "missing /usr/lib/python3/dist-packages/gearcoupling/$file"
+# Control data. Each package's Depends: those dpkg-shlibdeps found, and the -dev packages of
+# what the headers include (no Cyclone: client.h includes none of its headers).
+depends() { dpkg-deb -f "$(deb "$1")" Depends; }
+has() {  # has PACKAGE DEPENDENCY...
+  local package=$1 dependency list
+  list=", $(depends "$package"),"
+  shift
+  for dependency in "$@"; do
+    [[ "$list" == *", $dependency "* || "$list" == *", $dependency,"* ]] ||
+      fail "$package: Depends lacks $dependency: $(depends "$package")"
   done
-  ls "$package"/_gearcoupling.cpython-*.so >/dev/null || fail "no Python extension module"
-  (cd "$tmp" && PYTHONPATH=$root/usr/lib/python3/dist-packages /usr/bin/python3 -c '
-import sys, gearcoupling as gc
-root = sys.argv[1]
-assert gc.__file__.startswith(root), gc.__file__
-assert str(gc.bundled_data_dir("couplings")) == root + "/usr/share/gearcoupling/couplings"
-print("python:", gc.jam_angle("nrel_downwind").angle_deg, gc.Model("paper").effects)
-' "$root") || fail "the unpacked Python module does not run"
+}
+has libgearcoupling0 libddsc0debian libprotobuf32 libstdc++6
+has libgearcoupling-dev libgearcoupling0 libeigen3-dev libprotobuf-dev
+[[ "$(depends libgearcoupling-dev)" == *"libgearcoupling0 (= $version)"* ]] ||
+  fail "libgearcoupling-dev does not depend on its libgearcoupling0: $(depends libgearcoupling-dev)"
+if [[ "$(depends libgearcoupling-dev)" == *cyclonedds* ]]; then fail "libgearcoupling-dev needs Cyclone"; fi
+has python3-gearcoupling python3 python3-numpy libgearcoupling0
+has gearcoupling adduser libgearcoupling0 libspdlog1.10-fmt9 libfmt9
+for package in "${packages[@]}"; do dpkg-deb -e "$(deb "$package")" "$tmp/control-$package"; done
+grep -q "^libgearcoupling-core 0 libgearcoupling0 (>= $version)" "$tmp/control-libgearcoupling0/shlibs" ||
+  fail "shlibs: $(cat "$tmp/control-libgearcoupling0/shlibs")"
+[ "$(sort "$tmp/control-gearcoupling/conffiles")" = "$(printf '/etc/gearcoupling/%s\n' \
+    cyclonedds.xml dashboard.conf monitor.conf service.conf)" ] ||
+  fail "conffiles: $(cat "$tmp/control-gearcoupling/conffiles")"
+grep -q "adduser --system" "$tmp/control-gearcoupling/postinst" || fail "postinst makes no system user"
+# The units are stopped on removal.
+grep -q "deb-systemd-invoke stop 'gearcoupling-dashboard.service' 'gearcoupling-monitor.service' 'gearcoupling-service.service'" \
+  "$tmp/control-gearcoupling/prerm" || fail "prerm does not stop the units"
+
+# Files: each in its package.
+contents() { dpkg-deb -c "$(deb "$1")" | awk '{print $6}' | sed 's|^\./|/|'; }
+in_package() {  # in_package PACKAGE PATH-PATTERN...
+  local package=$1 pattern list
+  list=$(contents "$package")
+  shift
+  for pattern in "$@"; do
+    grep -qxE "$pattern" <<<"$list" || fail "$package lacks $pattern"
+  done
+}
+in_package libgearcoupling0 '/usr/lib/[^/]+/libgearcoupling-(core|codec|client)\.so\.0\.1\.0' \
+  '/usr/share/doc/libgearcoupling0/copyright'
+in_package libgearcoupling-dev '/usr/lib/[^/]+/libgearcoupling-core\.so' \
+  '/usr/include/gearcoupling/clients/remote/client\.h' '/usr/include/gearcoupling/core/jam_angle\.h' \
+  '/usr/include/gearcoupling/idl/coupling\.pb\.h' \
+  '/usr/lib/[^/]+/cmake/gearcoupling/gearcoupling-config\.cmake' \
+  '/usr/lib/[^/]+/pkgconfig/gearcoupling-(core|codec|client)\.pc'
+in_package python3-gearcoupling '/usr/lib/python3/dist-packages/gearcoupling/__init__\.py' \
+  '/usr/lib/python3/dist-packages/gearcoupling/_gearcoupling\.cpython-[0-9]+-[^/]+\.so'
+in_package gearcoupling '/usr/bin/gearcoupling(-service|-monitor|-dashboard)?' \
+  '/lib/systemd/system/gearcoupling-(service|monitor|dashboard)\.service' \
+  '/etc/gearcoupling/(service|monitor|dashboard)\.conf' '/etc/gearcoupling/cyclonedds\.xml' \
+  '/usr/share/gearcoupling/couplings/nrel_(up|down)wind\.textproto' \
+  '/usr/share/gearcoupling/models/paper\.textproto' \
+  '/usr/share/gearcoupling/deploy/cyclonedds-loopback-client\.xml' \
+  '/usr/share/gearcoupling/deploy/security/make-security\.sh' \
+  '/usr/share/bash-completion/completions/gearcoupling' '/usr/share/doc/gearcoupling/deploy\.md'
+# The client's headers need no Cyclone header and nothing idlc generated (docs/deploy.md).
+if contents libgearcoupling-dev | grep -E '/gearcoupling\.h$|client_core\.h$'; then
+  fail "libgearcoupling-dev ships a header of the client's DDS side"
 fi
-echo "PASS: the .deb unpacked and served"
+# The headers include, beyond the standard library and each other, only Eigen and protobuf:
+# the -dev packages libgearcoupling-dev depends on.
+dpkg -x "$(deb libgearcoupling-dev)" "$tmp/dev"
+others=$(grep -rhoE '#include <[A-Za-z0-9_.]+/' "$tmp/dev/usr/include" | sort -u | grep -vE '<(Eigen|google)/$') || true
+[ -z "$others" ] || fail "libgearcoupling-dev's headers include $others: its -dev package belongs in Depends"
+# Each file in one package only.
+duplicates=$(for package in "${packages[@]}"; do contents "$package" | grep -v '/$'; done | sort | uniq -d)
+[ -z "$duplicates" ] || fail "files in two packages: $duplicates"
+
+# The units: the package's paths, the fixed system user, hardening; systemd's own reading of each
+# (a copy whose ExecStart is the unpacked binary): no unknown key, no value it cannot parse.
+root=$tmp/root
+dpkg -x "$(deb gearcoupling)" "$root"
+for program in gearcoupling-service gearcoupling-monitor gearcoupling-dashboard; do
+  unit=$root/lib/systemd/system/$program.service
+  config=${program#gearcoupling-}
+  for line in "ExecStart=/usr/bin/$program --config /etc/gearcoupling/$config.conf" \
+      "User=gearcoupling" "NoNewPrivileges=yes" "ProtectSystem=strict" "ProtectHome=yes" \
+      "PrivateTmp=yes" "CapabilityBoundingSet=" \
+      "RestrictAddressFamilies=AF_INET AF_INET6 AF_UNIX AF_NETLINK"; do
+    grep -qxF "$line" "$unit" || fail "$program.service lacks: $line"
+  done
+  if grep -q "^DynamicUser\|^Environment=CYCLONEDDS_URI" "$unit"; then
+    fail "$program.service uses DynamicUser or sets CYCLONEDDS_URI (the programs find the installed file)"
+  fi
+  if command -v systemd-analyze >/dev/null; then
+    sed "s|/usr/bin/|$root/usr/bin/|" "$unit" >"$tmp/$program.service"
+    verify=$(systemd-analyze verify "$tmp/$program.service" 2>&1) || true
+    [ -z "$verify" ] || fail "systemd-analyze verify $program.service: $verify"
+  else
+    echo "systemd-analyze not installed: the units' syntax is not verified"
+  fi
+done
+
+# Installed for real, in namespaces of its own.
+if [ "$(id -u)" -ne 0 ]; then
+  echo "SKIP: installing the packages needs root (a private mount namespace with overlays)"
+  exit 77
+fi
+# A PID namespace too: whatever the checks started dies with them, even if they fail midway.
+unshare --mount --net --pid --fork --propagation private \
+  bash "$(dirname "$0")/deb_installed_checks.sh" "$tmp" "$source" "$version" ||
+  fail "installed packages (deb_installed_checks.sh)"
+echo "PASS: the four .debs built, lintian-clean, installed, served, built against and purged"
