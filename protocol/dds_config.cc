@@ -1,30 +1,17 @@
 #include "protocol/dds_config.h"
 
-#include <dlfcn.h>
-
 #include <cstdlib>
 #include <system_error>
 
 #include <fmt/format.h>
 
+#include "platform/loaded_from_dir.h"
+
 namespace gc::protocol {
 namespace {
 
-// The folder of the file (libgearcoupling-client or a program) this code was loaded from; empty
-// when the loader cannot say.
-std::filesystem::path loaded_from_dir() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<const void*>(&loaded_from_dir), &info) == 0 ||
-      info.dli_fname == nullptr) {
-    return {};
-  }
-  std::error_code error;
-  // Canonical: a library the loader found through a symlinked folder (/lib on a merged /usr,
-  // where ld.so.cache points) is under its real prefix (/usr).
-  const std::filesystem::path dir =
-      std::filesystem::weakly_canonical(std::filesystem::absolute(info.dli_fname, error).parent_path(), error);
-  return error ? std::filesystem::path() : dir;
-}
+// The folder this library (or the program it is linked into) was loaded from.
+std::filesystem::path loaded_from_dir() { return platform::loaded_from_dir(reinterpret_cast<const void*>(&loaded_from_dir)); }
 
 // The prefix `dir` is `<prefix>/<relative>` of; nullopt when it is not.
 std::optional<std::filesystem::path> prefix_of(const std::filesystem::path& dir,

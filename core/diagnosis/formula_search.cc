@@ -56,10 +56,27 @@ Eigen::VectorXd solve_on(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, con
   return c;
 }
 
+/// How much of what a term explains counts when forward selection compares it with the others: a
+/// shaft-order term whose amplitude follows torque or speed is one more assumption than the plain
+/// order, and on a recording where that input barely moves the two columns nearly coincide, the
+/// scaled one winning on noise (and extrapolating with the input). It must explain a quarter more.
+constexpr double kModulatedTermWeight = 0.8;
+
+std::vector<double> term_weights(const std::vector<std::string>& names) {
+  std::vector<double> weights;
+  for (const std::string& name : names) {
+    const ExpressionTerm* term = find_expression_term(name);
+    const bool modulated = term && term->modulation != ExpressionTerm::Modulation::none;
+    weights.push_back(modulated ? kModulatedTermWeight : 1.0);
+  }
+  return weights;
+}
+
 /// Forward selection (orthogonal matching pursuit): at each step the column whose part orthogonal
-/// to the columns chosen so far explains most of what is left. Columns that the chosen ones
-/// already span are never taken.
-std::vector<Eigen::Index> forward_order(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, int steps) {
+/// to the columns chosen so far explains most of what is left, weighted by `weights`. Columns that
+/// the chosen ones already span are never taken.
+std::vector<Eigen::Index> forward_order(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, int steps,
+                                        const std::vector<double>& weights) {
   std::vector<Eigen::Index> order;
   Eigen::MatrixXd q = x;
   Eigen::VectorXd r = y;
@@ -73,7 +90,7 @@ std::vector<Eigen::Index> forward_order(const Eigen::MatrixXd& x, const Eigen::V
       // duplicate: its small remainder fits noise, and the pair cancels with large coefficients
       // that do not predict (T sign(dzeta/dt) M beside sign(dzeta/dt) M on sweeps at one torque).
       if (used[static_cast<std::size_t>(j)] || n2 <= kLeastNewShare * x.col(j).squaredNorm()) continue;
-      const double gain = std::pow(q.col(j).dot(r), 2) / n2;
+      const double gain = weights[static_cast<std::size_t>(j)] * std::pow(q.col(j).dot(r), 2) / n2;
       if (gain > best_gain) { best_gain = gain; best = j; }
     }
     if (best < 0) break;
@@ -370,6 +387,7 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
       (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();
   const Eigen::MatrixXd z = design.columns * scale.cwiseInverse().asDiagonal();
   const Eigen::VectorXd y = stacked(residual);
+  const std::vector<double> weights = term_weights(design.terms);
   // The path: formulas of 0, 1, ... max_terms terms, each fold choosing its own terms on its
   // training rows, scored on its held-out rows.
   // Forward selection is greedy, so the formula of m terms is the first m of the longest: each
@@ -378,7 +396,7 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   std::vector<std::pair<double, double>> scores;
   for (int m = 0; m <= settings.max_terms; ++m) {
     const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](std::size_t f, const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
-      if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms);
+      if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms, weights);
       return first_terms(order[f], static_cast<std::size_t>(m), z.cols());
     });
     scores.push_back(block_mean_square(r, folds));
@@ -395,7 +413,7 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   // SINDy): a term that only the fit on every row picks first has fitted what the held-out blocks
   // do not repeat (a pair of travel-sign terms did, beside a speed drag, which every fold chose).
   // The fit on every row orders the rest when no term has a majority.
-  std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen)), chosen, z.cols());
+  std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen), weights), chosen, z.cols());
   std::vector<int> votes(static_cast<std::size_t>(z.cols()), 0);
   for (const auto& fold_order : order) {
     for (std::size_t k = 0; k < std::min(chosen, fold_order.size()); ++k) ++votes[static_cast<std::size_t>(fold_order[k])];

@@ -27,9 +27,6 @@ namespace {
 // After must not exceed the baseline by more than this share: two fits of the same data differ by
 // about this much from numerical detail alone.
 constexpr double kBaselineTolerance = 0.01;
-// The one case that does not beat SINDy since steps joined the formula (issue 22), held to doing
-// no harm (docs/diagnosis.md, "Open cases").
-constexpr const char* kStepTakesARandomWalk = "channel_gain_offset";
 // Issue 8: the reduction within 5 percentage points of what the noise allows.
 constexpr double kFloorMargin = 0.05;
 
@@ -234,16 +231,7 @@ TEST_P(Generalisation, NamesThePhysicsBeatsSindyAndReachesTheNoiseFloorOnHeldOut
 
   EXPECT_TRUE(row.named) << "the verdict does not name the hidden physics: " << why;
   EXPECT_EQ(s.unpredicted, 0u) << "the final model refuses held-out rows the base model predicts";
-  if (c.name == kStepTakesARandomWalk) {
-    // Open (docs/diagnosis.md, "Open cases"): the noise's random-walk zero drift has a wander that
-    // a step term fits forward within the recording, and the next recording's drift is another;
-    // the step costs 2 points against SINDy. It must do no harm, and this is taken off once it
-    // passes.
-    EXPECT_FALSE(row.beats_baseline) << c.name << " beats SINDy now: take it off kStepTakesARandomWalk";
-    EXPECT_LT(s.after_nm, s.before_nm);
-  } else {
-    EXPECT_TRUE(row.beats_baseline) << "held-out RMSE " << s.after_nm << " N·m against SINDy's " << s.baseline_nm;
-  }
+  EXPECT_TRUE(row.beats_baseline) << "held-out RMSE " << s.after_nm << " N·m against SINDy's " << s.baseline_nm;
   EXPECT_TRUE(row.near_floor) << "held-out reduction " << 100 * gained << " % against " << 100 * possible
                               << " % the noise allows (" << s.before_nm << " -> " << s.after_nm << ", floor "
                               << s.floor_nm << " N·m)";
