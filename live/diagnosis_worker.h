@@ -1,0 +1,82 @@
+// The monitor's diagnoses, off the hot path: one background thread at a low CPU priority (its own
+// nice value, 19 by default: on a busy CPU it gets about 1.5 % of what a nice-0 thread gets, and
+// the monitor's thread is never preempted for it), one diagnosis at a time across all test cells, a bounded queue of
+// at most one job per test cell. The monitor's thread submits jobs and takes the outcomes; it
+// never waits for a diagnosis (docs/architecture.md, "The learning loop").
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/recorded_sample.h"
+#include "live/cell_model.h"
+#include "live/proposal.h"
+
+namespace gc::live {
+
+struct DiagnosisJob {
+  std::string test_cell;
+  std::uint64_t cell_generation = 0;   ///< the cell's incarnation: a cell gone and back is new
+  CellModel base;                      ///< the model in force when the job was made
+  std::vector<RecordedSample> samples; ///< the cell's rolling window
+  /// Set: a recheck of this standing proposal on newer samples, not a diagnosis.
+  std::optional<Proposal> recheck;
+};
+
+struct DiagnosisOutcome {
+  std::string test_cell;
+  std::uint64_t cell_generation = 0;
+  CellModel base;
+  std::optional<Proposal> proposal;    ///< a diagnosis that found something (id left 0)
+  /// A recheck: the proposal it rechecked, and both models' RMSE on the newer samples [N·m].
+  std::optional<Proposal> rechecked;
+  std::optional<double> base_rmse_nm, proposed_rmse_nm;
+  std::string note;                    ///< what it found when no proposal, or its error
+  double cpu_s = 0.0;                  ///< CPU time of the job's thread [s]
+  std::size_t samples = 0;             ///< in the job's window
+};
+
+class DiagnosisWorker {
+ public:
+  /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19); `done` is
+  /// called from the worker thread after each outcome is ready (e.g. to wake the monitor's waitset).
+  DiagnosisWorker(std::size_t queue, int nice, std::function<void()> done);
+  /// Waits for the running job to finish (a diagnosis takes seconds); queued ones are dropped.
+  ~DiagnosisWorker();
+  DiagnosisWorker(const DiagnosisWorker&) = delete;
+  DiagnosisWorker& operator=(const DiagnosisWorker&) = delete;
+
+  /// Queues `job`; false when the queue is full or that test cell has a job queued or running.
+  bool submit(DiagnosisJob job);
+  /// Whether `test_cell` has a job queued or running.
+  bool busy(const std::string& test_cell);
+  /// The outcomes ready since the last call.
+  std::vector<DiagnosisOutcome> take_outcomes();
+
+ private:
+  void run();
+
+  std::size_t queue_limit_;
+  int nice_;
+  std::function<void()> done_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<DiagnosisJob> queue_;
+  std::string running_;                 // test cell of the job running, "" when idle
+  std::vector<DiagnosisOutcome> outcomes_;
+  bool stopping_ = false;
+  std::thread thread_;                  // last: started when the rest is ready
+};
+
+/// Runs `job` on the calling thread (what the worker does with it).
+DiagnosisOutcome run_job(const DiagnosisJob& job);
+
+}  // namespace gc::live

