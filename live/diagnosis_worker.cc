@@ -29,8 +29,8 @@ void lower_priority(int nice) {
   }
 }
 
-void diagnose_into(const DiagnosisJob& job, DiagnosisOutcome& out) {
-  const Diagnosis diagnosis = diagnose(*job.base.model, job.samples);
+void diagnose_into(const DiagnosisJob& job, const ParallelFor& parallel, DiagnosisOutcome& out) {
+  const Diagnosis diagnosis = diagnose(*job.base.model, job.samples, parallel);
   out.proposal = proposal_from(diagnosis, job.base, job.test_cell, job.samples);
   if (!out.proposal) out.note = diagnosis.summary;
 }
@@ -43,7 +43,7 @@ void recheck_into(const DiagnosisJob& job, DiagnosisOutcome& out) {
 
 }  // namespace
 
-DiagnosisOutcome run_job(const DiagnosisJob& job) {
+DiagnosisOutcome run_job(const DiagnosisJob& job, const ParallelFor& parallel) {
   DiagnosisOutcome out;
   out.test_cell = job.test_cell;
   out.cell_generation = job.cell_generation;
@@ -53,7 +53,7 @@ DiagnosisOutcome run_job(const DiagnosisJob& job) {
     if (job.recheck) {
       recheck_into(job, out);
     } else {
-      diagnose_into(job, out);
+      diagnose_into(job, parallel, out);
     }
   } catch (const std::exception& error) {
     out.proposal.reset();
@@ -72,6 +72,7 @@ DiagnosisWorker::DiagnosisWorker(std::size_t queue, int nice, std::function<void
       thread_([this] { run(); }) {}
 
 DiagnosisWorker::~DiagnosisWorker() {
+  cancel_ = true;
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -101,6 +102,11 @@ bool DiagnosisWorker::submit(DiagnosisJob job) {
   return true;
 }
 
+std::string DiagnosisWorker::running() {
+  std::lock_guard lock(mutex_);
+  return running_;
+}
+
 std::vector<DiagnosisOutcome> DiagnosisWorker::take_outcomes() {
   std::lock_guard lock(mutex_);
   std::vector<DiagnosisOutcome> out;
@@ -118,9 +124,15 @@ void DiagnosisWorker::run() {
     queue_.pop_front();
     running_ = job.test_cell;
     lock.unlock();
-    DiagnosisOutcome outcome = run_job(job);
+    // Serial, and cancelled at the next loop once the worker stops: the monitor's stop (or
+    // SIGHUP) never waits for a whole diagnosis.
+    DiagnosisOutcome outcome = run_job(job, [this](std::size_t count, const auto& body) {
+      if (cancel_) throw std::runtime_error("diagnosis cancelled: the monitor is stopping");
+      if (count > 0) body(0, count);
+    });
     lock.lock();
     running_.clear();
+    if (stopping_) return;
     outcomes_.push_back(std::move(outcome));
     lock.unlock();
     done_();

@@ -5,6 +5,7 @@
 // never waits for a diagnosis (docs/architecture.md, "The learning loop").
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/diagnosis/parallel_for.h"
 #include "core/recorded_sample.h"
 #include "live/cell_model.h"
 #include "live/proposal.h"
@@ -49,7 +51,8 @@ class DiagnosisWorker {
   /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19); `done` is
   /// called from the worker thread after each outcome is ready (e.g. to wake the monitor's waitset).
   DiagnosisWorker(std::size_t queue, int nice, std::function<void()> done);
-  /// Waits for the running job to finish (a diagnosis takes seconds); queued ones are dropped.
+  /// Stops the running job at its next loop of model evaluations (a diagnosis takes seconds; its
+  /// loops milliseconds) and drops the queued ones.
   ~DiagnosisWorker();
   DiagnosisWorker(const DiagnosisWorker&) = delete;
   DiagnosisWorker& operator=(const DiagnosisWorker&) = delete;
@@ -58,6 +61,8 @@ class DiagnosisWorker {
   bool submit(DiagnosisJob job);
   /// Whether `test_cell` has a job queued or running.
   bool busy(const std::string& test_cell);
+  /// The test cell whose job runs now, "" when idle.
+  std::string running();
   /// The outcomes ready since the last call.
   std::vector<DiagnosisOutcome> take_outcomes();
 
@@ -73,10 +78,12 @@ class DiagnosisWorker {
   std::string running_;                 // test cell of the job running, "" when idle
   std::vector<DiagnosisOutcome> outcomes_;
   bool stopping_ = false;
+  std::atomic<bool> cancel_{false};     // read by the running diagnosis' loops
   std::thread thread_;                  // last: started when the rest is ready
 };
 
-/// Runs `job` on the calling thread (what the worker does with it).
-DiagnosisOutcome run_job(const DiagnosisJob& job);
+/// Runs `job` on the calling thread (what the worker does with it), the diagnosis' loops through
+/// `parallel`.
+DiagnosisOutcome run_job(const DiagnosisJob& job, const ParallelFor& parallel = serial_for());
 
 }  // namespace gc::live

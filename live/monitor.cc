@@ -437,7 +437,8 @@ void Monitor::publish_health() {
 
 MonitorCounters Monitor::counters() const {
   return {cells_.size(), options_.max_cells, refused_batches_, refused_samples_, refused_foreign_,
-          proposals_published_, proposals_withdrawn_, diagnoses_run_, diagnoses_dropped_};
+          proposals_published_, proposals_withdrawn_, diagnoses_run_, diagnoses_dropped_,
+          worker_ ? worker_->running() : std::string()};
 }
 
 void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport& health,

@@ -34,6 +34,7 @@ void write_monitor_status(dds_entity_t writer, std::uint64_t monitor_id,
   out.proposals_withdrawn = c.proposals_withdrawn;
   out.diagnoses_run = c.diagnoses_run;
   out.diagnoses_dropped = c.diagnoses_dropped;
+  out.diagnosing = const_cast<char*>(c.diagnosing.c_str());
   out.swaps = audit.total();
   out.recent_swaps._buffer = swaps.data();
   out.recent_swaps._length = out.recent_swaps._maximum = static_cast<std::uint32_t>(swaps.size());

@@ -5,6 +5,7 @@
 #include <dds/dds.h>
 
 #include <cstdint>
+#include <string>
 
 #include "live/swap_audit.h"
 
@@ -15,6 +16,7 @@ struct MonitorCounters {
   std::uint64_t refused_cell_batches = 0, refused_cell_samples = 0, refused_foreign = 0;
   std::uint64_t proposals_published = 0, proposals_withdrawn = 0;
   std::uint64_t diagnoses_run = 0, diagnoses_dropped = 0;
+  std::string diagnosing;   ///< the test cell being diagnosed now, "" when none
 };
 
 void write_monitor_status(dds_entity_t writer, std::uint64_t monitor_id,

@@ -18,6 +18,8 @@ namespace {
 volatile std::sig_atomic_t interrupted = 0;
 
 std::vector<FlagSpec> proposals_flags() {
+  FlagSpec catalogue = catalogue_flag();
+  catalogue.refused = "not taken by proposals: a proposal's model names its coupling itself";
   return {
       {"test-cell", "ID", "only this test cell's proposal (\"\": every test cell's)", ""},
       {"watch", "", "print again whenever a proposal changes, until Ctrl-C (or --count prints)",
@@ -27,6 +29,7 @@ std::vector<FlagSpec> proposals_flags() {
        "1.5", false, '\0', {"discovery"}},
       json_flag(),
       live_domain_flag(),
+      catalogue,
   };
 }
 

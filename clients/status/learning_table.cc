@@ -12,9 +12,10 @@ namespace v1 = ::gearcoupling::v1;
 std::string knm(double nm) { return fmt::format("{:.2f}", nm / 1e3); }
 
 std::string parameter_text(const v1::ProposedParameterRecord& p) {
-  if (p.held()) return fmt::format("{}.{} = {:.6g} {} (held)", p.effect(), p.name(), p.value(), p.unit());
-  return fmt::format("{}.{} = {:.6g} +/- {:.2g} {}{}", p.effect(), p.name(), p.value(),
-                     p.standard_error(), p.unit(), p.plausible() ? "" : " (implausible)");
+  const std::string unit = p.unit() == "-" ? "" : " " + p.unit();
+  if (p.held()) return fmt::format("{}.{} = {:.6g}{} (held)", p.effect(), p.name(), p.value(), unit);
+  return fmt::format("{}.{} = {:.6g} +/- {:.2g}{}{}", p.effect(), p.name(), p.value(),
+                     p.standard_error(), unit, p.plausible() ? "" : " (implausible)");
 }
 
 void print_swaps(const std::vector<v1::MonitorRecord>& monitors, std::FILE* out) {

@@ -7,6 +7,7 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <chrono>
+#include <functional>
 #include <thread>
 
 #include "tests/live/live_fixture.h"
@@ -146,6 +147,87 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
   bool applied = false;
   for (const auto& p : status.proposals()) applied |= p.test_cell() == cell && p.state() == "applied";
   EXPECT_TRUE(applied);
+}
+
+/// The monitor's status from `status --json` (one monitor on the test's domain), after
+/// `ready` holds for it or 30 s.
+v1::LiveStatus wait_for_status(const std::function<bool(const v1::LiveStatus&)>& ready) {
+  v1::LiveStatus status;
+  const auto until = std::chrono::steady_clock::now() + 30s;
+  do {
+    const auto shown = run_gearcoupling(on_test_domain({"status", "--json", "--discovery-s", "0.5"}));
+    EXPECT_EQ(shown.exit_code, 0) << shown.err;
+    status = parse_json_line<v1::LiveStatus>(shown.out);
+    if (status.monitors_size() == 1 && ready(status)) break;
+  } while (std::chrono::steady_clock::now() < until);
+  return status;
+}
+
+void replay_hidden(const std::string& cell) {
+  const auto replay = run_gearcoupling(on_test_domain(
+      {"replay", "--in", kHiddenEccentricity, "--test-cell", cell, "--speed", "20", "--wait-s", "20"}));
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+}
+
+// Two cells beyond the noise at once: one diagnosis at a time, both get their proposal.
+TEST_F(LiveTest, TwoCellsDiagnosedAtOnceEachGetTheirProposal) {
+  auto monitor = start_monitor(monitor_args());
+  std::thread a([] { replay_hidden("cell-a"); });
+  replay_hidden("cell-b");
+  a.join();
+  for (const std::string cell : {"cell-a", "cell-b"}) {
+    const auto p = wait_for_proposal(cell, [](const v1::ProposalRecord&) { return true; }, 60s);
+    ASSERT_TRUE(p.has_value()) << cell;
+    EXPECT_EQ(p->effects(), "eccentricity") << cell;
+    EXPECT_EQ(p->state(), "standing") << cell;
+  }
+  const v1::LiveStatus status = wait_for_status([](const v1::LiveStatus&) { return true; });
+  ASSERT_EQ(status.monitors_size(), 1);
+  EXPECT_EQ(status.monitors(0).diagnoses_run(), 2u);
+  EXPECT_EQ(status.monitors(0).proposals_published(), 2u);
+  EXPECT_EQ(status.monitors(0).diagnoses_dropped(), 0u);
+}
+
+// A cell disposed while it is diagnosed gets no proposal; the monitor serves on.
+TEST_F(LiveTest, ACellGoneDuringItsDiagnosisGetsNoProposal) {
+  // Diagnosed at its first health with 400 samples, disposed 1 s after its last sample: long
+  // before a diagnosis of seconds ends.
+  auto monitor = start_monitor({"--window-s", "20", "--health-period-s", "0.1", "--stale-s", "0.5",
+                                "--dispose-s", "1", "--diagnose-after-s", "0"});
+  replay_hidden("fleeting");
+  const v1::LiveStatus status = wait_for_status(
+      [](const v1::LiveStatus& s) { return s.monitors(0).diagnoses_run() >= 1; });
+  ASSERT_EQ(status.monitors_size(), 1);
+  EXPECT_EQ(status.monitors(0).diagnoses_run(), 1u);
+  EXPECT_EQ(status.monitors(0).cells(), 0u);
+  EXPECT_EQ(status.monitors(0).proposals_published(), 0u);
+  EXPECT_EQ(status.proposals_size(), 0);
+  EXPECT_TRUE(monitor->running());
+}
+
+// A model swap while the cell is diagnosed: whatever the diagnosis found was about the model
+// replaced, so no proposal for it stands.
+TEST_F(LiveTest, ASwapDuringADiagnosisLeavesNoProposalForTheModelReplaced) {
+  auto monitor = start_monitor(monitor_args());
+  const std::string cell = "swapped";
+  replay_hidden(cell);
+  const v1::LiveStatus diagnosing = wait_for_status(
+      [&](const v1::LiveStatus& s) { return s.monitors(0).diagnosing() == cell; });
+  ASSERT_EQ(diagnosing.monitors(0).diagnosing(), cell);
+  const auto swap = run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", cell, "--model", "paper_downwind", "--wait-s", "10"}));
+  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+  const v1::LiveStatus status = wait_for_status(
+      [](const v1::LiveStatus& s) { return s.monitors(0).diagnoses_run() >= 1; });
+  ASSERT_EQ(status.monitors_size(), 1);
+  EXPECT_GE(status.monitors(0).diagnoses_run(), 1u);
+  EXPECT_EQ(status.monitors(0).swaps(), 1u);
+  // Dropped (the swap came first) or withdrawn (the proposal came first): never standing.
+  for (const auto& p : status.proposals()) {
+    EXPECT_NE(p.state(), "standing") << p.state_reason();
+    EXPECT_EQ(p.base_model(), "paper");
+  }
+  EXPECT_TRUE(monitor->running());
 }
 
 }  // namespace

@@ -156,6 +156,16 @@ TEST(DiagnosisWorker, OneJobPerCellAndABoundedQueue) {
   EXPECT_FALSE(worker.busy("a"));
 }
 
+TEST(DiagnosisWorker, StoppingCancelsTheRunningDiagnosisAndDropsItsOutcome) {
+  std::atomic<int> done{0};
+  {
+    DiagnosisWorker worker(1, 19, [&] { ++done; });
+    ASSERT_TRUE(worker.submit({"a", 1, paper(), hidden_eccentricity(), std::nullopt}));
+    std::this_thread::sleep_for(50ms);   // running, seconds from its end
+  }
+  EXPECT_EQ(done.load(), 0);
+}
+
 TEST(SwapAudit, KeepsTheLatestSwapsAndFollowsTheModelInForce) {
   SwapAudit audit;
   for (std::size_t i = 0; i < SwapAudit::kKept + 3; ++i) {
