@@ -131,7 +131,7 @@ TEST(Proposal, ReplacesOnlyWhenItRemovesMoreOfTheError) {
 
 TEST(DiagnosisWorker, OneJobPerCellAndABoundedQueue) {
   std::atomic<int> done{0};
-  DiagnosisWorker worker(2, 19, [&] { ++done; });
+  DiagnosisWorker worker(2, 0, [&] { ++done; });
   const CellModel model = paper();
   const auto samples = hidden_eccentricity();
   Proposal recheck;
