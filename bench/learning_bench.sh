@@ -31,10 +31,10 @@ for run in $(seq 1 "$runs"); do
   start=$(date +%s.%N)
   for _ in $(seq 1 120); do
     json=$("$cli" proposals --test-cell "$cell" --json --discovery-s 0.5 --domain "$domain")
-    if echo "$json" | grep -q '"state":"standing"'; then break; fi
+    if printf "%s\n" "$json" | grep -q '"state":"standing"'; then break; fi
   done
   seen=$(date +%s.%N)
-  echo "$json" | python3 -c "
+  printf "%s\n" "$json" | python3 -c "
 import json, sys
 p = json.load(sys.stdin)['proposals']
 p = p[0] if p else {}

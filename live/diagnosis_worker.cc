@@ -1,5 +1,7 @@
 #include "live/diagnosis_worker.h"
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <time.h>
@@ -8,6 +10,8 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
+#include <stdexcept>
 
 #include "core/diagnosis/diagnose.h"
 #include "core/model_error.h"
@@ -21,9 +25,12 @@ double thread_cpu_s() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-/// This thread at nice `nice` (Linux: a thread's own nice value, its process's other threads
-/// unchanged). Logged, not fatal, when refused.
+/// This thread under the normal policy (a monitor run under SCHED_FIFO, `chrt -f`, must not pass
+/// its real-time priority on to the diagnosis) at nice `nice` (Linux: a thread's own nice value,
+/// its process's other threads unchanged). Logged, not fatal, when refused.
 void lower_priority(int nice) {
+  sched_param normal{};
+  pthread_setschedparam(pthread_self(), SCHED_OTHER, &normal);
   if (setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice) != 0) {
     spdlog::warn("diagnosis thread: nice {} refused; it runs at the monitor's priority", nice);
   }
@@ -65,9 +72,11 @@ DiagnosisOutcome run_job(const DiagnosisJob& job, const ParallelFor& parallel) {
   return out;
 }
 
-DiagnosisWorker::DiagnosisWorker(std::size_t queue, int nice, std::function<void()> done)
+DiagnosisWorker::DiagnosisWorker(std::size_t queue, int nice, double cpu_share,
+                                 std::function<void()> done)
     : queue_limit_(std::max<std::size_t>(queue, 1)),
       nice_(nice),
+      cpu_share_(std::clamp(cpu_share, 0.01, 1.0)),
       done_(std::move(done)),
       thread_([this] { run(); }) {}
 
@@ -114,6 +123,20 @@ std::vector<DiagnosisOutcome> DiagnosisWorker::take_outcomes() {
   return out;
 }
 
+void DiagnosisWorker::throttled_loop(std::size_t count,
+                                     const std::function<void(std::size_t, std::size_t)>& body) {
+  // Cancelled at the next loop once the worker stops: the monitor's stop (or SIGHUP) never
+  // waits for a whole diagnosis.
+  if (cancel_) throw std::runtime_error("diagnosis cancelled: the monitor is stopping");
+  if (count == 0) return;
+  const double cpu0 = thread_cpu_s();
+  body(0, count);
+  if (cpu_share_ >= 1.0) return;
+  const double rest_s = (thread_cpu_s() - cpu0) * (1.0 / cpu_share_ - 1.0);
+  std::unique_lock lock(mutex_);
+  wake_.wait_for(lock, std::chrono::duration<double>(rest_s), [&] { return stopping_; });
+}
+
 void DiagnosisWorker::run() {
   lower_priority(nice_);
   std::unique_lock lock(mutex_);
@@ -124,11 +147,8 @@ void DiagnosisWorker::run() {
     queue_.pop_front();
     running_ = job.test_cell;
     lock.unlock();
-    // Serial, and cancelled at the next loop once the worker stops: the monitor's stop (or
-    // SIGHUP) never waits for a whole diagnosis.
     DiagnosisOutcome outcome = run_job(job, [this](std::size_t count, const auto& body) {
-      if (cancel_) throw std::runtime_error("diagnosis cancelled: the monitor is stopping");
-      if (count > 0) body(0, count);
+      throttled_loop(count, body);
     });
     lock.lock();
     running_.clear();

@@ -1,6 +1,6 @@
-// The monitor's diagnoses, off the hot path: one background thread at a low CPU priority (its own
-// nice value, 19 by default: on a busy CPU it gets about 1.5 % of what a nice-0 thread gets, and
-// the monitor's thread is never preempted for it), one diagnosis at a time across all test cells, a bounded queue of
+// The monitor's diagnoses, off the hot path: one background thread at a bounded CPU share (after
+// each loop of model evaluations it sleeps in proportion to the CPU the loop took: a share of 0.25
+// runs 1 ms in 4) and a low priority (its own nice value, 19 by default), one diagnosis at a time across all test cells, a bounded queue of
 // at most one job per test cell. The monitor's thread submits jobs and takes the outcomes; it
 // never waits for a diagnosis (docs/architecture.md, "The learning loop").
 #pragma once
@@ -48,9 +48,10 @@ struct DiagnosisOutcome {
 
 class DiagnosisWorker {
  public:
-  /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19); `done` is
-  /// called from the worker thread after each outcome is ready (e.g. to wake the monitor's waitset).
-  DiagnosisWorker(std::size_t queue, int nice, std::function<void()> done);
+  /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19) and uses at most
+  /// `cpu_share` (0 < share <= 1) of a core over each loop; `done` is called from the worker
+  /// thread after each outcome is ready (e.g. to wake the monitor's waitset).
+  DiagnosisWorker(std::size_t queue, int nice, double cpu_share, std::function<void()> done);
   /// Stops the running job at its next loop of model evaluations (a diagnosis takes seconds; its
   /// loops milliseconds) and drops the queued ones.
   ~DiagnosisWorker();
@@ -69,8 +70,13 @@ class DiagnosisWorker {
  private:
   void run();
 
+  /// The diagnosis' loops: serial, each followed by a sleep that keeps the thread within
+  /// cpu_share_, cancelled (an exception) once the worker stops.
+  void throttled_loop(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+
   std::size_t queue_limit_;
   int nice_;
+  double cpu_share_;
   std::function<void()> done_;
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -143,7 +143,7 @@ Monitor::Monitor(const MonitorOptions& options)
   if (options_.learning.enabled) {
     const dds_entity_t guard = outcomes_ready_.get();
     worker_ = std::make_unique<DiagnosisWorker>(options_.learning.queue, options_.learning.nice,
-                                                [guard] { dds_set_guardcondition(guard, true); });
+                                                options_.learning.cpu_share, [guard] { dds_set_guardcondition(guard, true); });
   }
 }
 

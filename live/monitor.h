@@ -33,6 +33,11 @@ struct LearningOptions {
   double recheck_s = 30.0;      ///< a standing proposal is rechecked on newer samples this often [s]
   std::size_t queue = 4;        ///< diagnoses waiting at most (one runs at a time)
   int nice = 19;                ///< the diagnosis thread's nice value, 0 to 19
+  /// The diagnosis thread's CPU at most, as a share of one core (it sleeps between its loops of
+  /// model evaluations in proportion to their CPU time): 0.25 keeps 3/4 of a core for the
+  /// monitor's thread and the rest of the host whatever the scheduler does with nice values
+  /// (with autogroup, a thread's nice matters only against its own process's threads).
+  double cpu_share = 0.25;
 };
 
 /// Who swapped a model and from what: the swap writer's USER_DATA ("by=USER@HOST;source=..."

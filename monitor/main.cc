@@ -70,6 +70,9 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
   app.add_option("--diagnosis-queue", o.learning.queue,
                  "diagnoses waiting at most (one runs at a time, at --diagnosis-nice)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{4096}))->capture_default_str();
+  app.add_option("--diagnosis-cpu-share", o.learning.cpu_share,
+                 "the diagnosis thread's CPU at most, as a share of one core (it sleeps between "
+                 "its loops in proportion)")->check(CLI::Range(0.01, 1.0))->capture_default_str();
   app.add_option("--diagnosis-nice", o.learning.nice,
                  "nice value of the diagnosis thread (the monitor's own thread keeps its priority)")
       ->check(CLI::Range(0, 19))->capture_default_str();

@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "codec/result_json.h"
+#include "protocol/dds_error.h"
 
 namespace gc::dashboard {
 namespace {
@@ -36,9 +37,16 @@ std::string dashboard_name() {
 ProposalApplier::ProposalApplier(dds_entity_t participant, status::MonitorBoard& proposals,
                                  std::vector<std::string> operator_cells)
     : proposals_(proposals), cells_(std::move(operator_cells)) {
-  if (!cells_.empty()) {
+  if (cells_.empty()) return;
+  try {
     swaps_ = std::make_unique<live::ModelSwapPublisher>(participant, cells_,
                                                         "by=" + dashboard_name() + ";source=dashboard");
+  } catch (const protocol::DdsError& error) {
+    throw std::runtime_error(fmt::format(
+        "--operator-cells {}: this dashboard's DDS identity may not publish model swaps for these "
+        "test cells; applying a proposal needs an operator identity granted them "
+        "(make-security.sh --operator NAME --cells ...; docs/security.md). DDS said: {}",
+        fmt::join(cells_, ","), error.what()));
   }
 }
 

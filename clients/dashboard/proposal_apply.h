@@ -21,7 +21,8 @@ namespace gc::dashboard {
 class ProposalApplier {
  public:
   /// `operator_cells` empty: read-only. Otherwise one model writer per cell on `participant`
-  /// (throws protocol::DdsError when the identity may not, e.g. a dashboard-* identity).
+  /// (throws std::runtime_error naming --operator-cells and why when the identity may not, e.g.
+  /// a dashboard-* identity).
   ProposalApplier(dds_entity_t participant, status::MonitorBoard& proposals,
                   std::vector<std::string> operator_cells);
 

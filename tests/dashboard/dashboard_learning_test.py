@@ -100,7 +100,7 @@ def loop():
     try:
         start(children, [MONITOR, "--domain", str(DOMAIN), "--model", "paper", "--window-s", "20",
                          "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
-                         "--diagnose-after-s", "1"], stderr=subprocess.DEVNULL)
+                         "--diagnose-after-s", "1", "--diagnosis-nice", "0"], stderr=subprocess.DEVNULL)
         operator_url = start_dashboard(children, "--operator-cells", TEST_CELL)
         read_only_url = start_dashboard(children)
         driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)

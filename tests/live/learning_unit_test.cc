@@ -131,7 +131,7 @@ TEST(Proposal, ReplacesOnlyWhenItRemovesMoreOfTheError) {
 
 TEST(DiagnosisWorker, OneJobPerCellAndABoundedQueue) {
   std::atomic<int> done{0};
-  DiagnosisWorker worker(2, 0, [&] { ++done; });
+  DiagnosisWorker worker(2, 0, 1.0, [&] { ++done; });
   const CellModel model = paper();
   const auto samples = hidden_eccentricity();
   Proposal recheck;
@@ -159,7 +159,7 @@ TEST(DiagnosisWorker, OneJobPerCellAndABoundedQueue) {
 TEST(DiagnosisWorker, StoppingCancelsTheRunningDiagnosisAndDropsItsOutcome) {
   std::atomic<int> done{0};
   {
-    DiagnosisWorker worker(1, 19, [&] { ++done; });
+    DiagnosisWorker worker(1, 19, 0.25, [&] { ++done; });
     ASSERT_TRUE(worker.submit({"a", 1, paper(), hidden_eccentricity(), std::nullopt}));
     std::this_thread::sleep_for(50ms);   // running, seconds from its end
   }

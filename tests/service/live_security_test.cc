@@ -127,7 +127,8 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
 // Issue 25: the monitor's proposal reaches the operator and a dashboard alike; only the operator
 // may apply it (a swap of its text), and the monitor then marks it applied.
 TEST_F(LiveRoles, OnlyTheOperatorMayApplyTheMonitorsProposal) {
-  const auto monitor = start_monitor({"--diagnose-after-s", "1", "--stale-s", "60", "--dispose-s", "120"});
+  const auto monitor = start_monitor({"--diagnose-after-s", "1", "--diagnosis-nice", "0",
+                                      "--stale-s", "60", "--dispose-s", "120"});
   const test::LocalDomain cell_domain(kCellDomain, cell_->uri("cell-c"));
   const Entity cell = cell_domain.participant();
   live::ReplayOptions replay;
