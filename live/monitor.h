@@ -63,7 +63,10 @@ struct MonitorOptions {
   /// first time and then at most once a minute; a cell's place is free again once disposed
   /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
   /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
-  /// test hall, keep the monitor within 3 MB whatever names arrive. What swaps leave per test
+  /// test hall, keep the monitor within 3 MB whatever names arrive; plus, for a cell that
+  /// streams, its diagnosis window (at most cell.diagnosis_samples x 192 B: 384 kB at the
+  /// default 2000, 25 MB for 64 streaming cells) and the copies queued for the diagnosis (at
+  /// most learning.queue + 1 windows). What swaps leave per test
   /// cell (model, decimation, refusal) is kept for at most 2 max_cells cells (make_room).
   std::size_t max_cells = 64;
   LearningOptions learning;
