@@ -10,6 +10,8 @@
 #include <functional>
 #include <thread>
 
+#include "gearcoupling.h"
+#include "live/live_qos.h"
 #include "tests/live/live_fixture.h"
 
 namespace gc::test {
@@ -231,6 +233,45 @@ TEST_F(LiveTest, ASwapDuringADiagnosisLeavesNoProposalForTheModelReplaced) {
     EXPECT_EQ(p.base_model(), "paper");
   }
   EXPECT_TRUE(monitor->running());
+}
+
+// Issue 23's leftover: the test cells refused beyond --max-cells and the batches written from
+// another cell's partition, counted where a client reads them (status --json), not only logged.
+TEST_F(LiveTest, TheMonitorsRefusalsAreInItsStatus) {
+  auto monitor = start_monitor({"--max-cells", "1", "--stale-s", "60", "--dispose-s", "120"});
+  const std::string paper = GC_SOURCE_DIR "/data/recordings/paper_torque_ramp.csv";
+  for (const std::string cell : {"followed", "refused"}) {
+    const auto replay = run_gearcoupling(on_test_domain(
+        {"replay", "--in", paper, "--test-cell", cell, "--speed", "50", "--wait-s", "20"}));
+    ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  }
+  // A batch naming test cell "followed", written from test cell "other"'s partition.
+  const protocol::Entity topic = live::make_measurement_topic(participant_.get());
+  const protocol::Entity publisher = live::make_cell_publisher(participant_.get(), "other");
+  const protocol::Entity writer(protocol::check_dds(
+      dds_create_writer(publisher.get(), topic.get(), live::measurement_writer_qos().get(), nullptr),
+      "dds_create_writer"));
+  ASSERT_TRUE(live::wait_for_readers(writer.get(), 1, 10s));
+  gearcoupling_Measurement m{};
+  m.sequence_number = 1;
+  m.torque_nm = 1.5e6;
+  gearcoupling_MeasurementBatch batch{};
+  std::copy_n("followed", 9, batch.test_cell);
+  batch.run_id = 7;
+  batch.samples._buffer = &m;
+  batch.samples._length = batch.samples._maximum = 1;
+  ASSERT_EQ(dds_write(writer.get(), &batch), DDS_RETCODE_OK);
+
+  const v1::LiveStatus status = wait_for_status([](const v1::LiveStatus& s) {
+    return s.monitors(0).refused_cell_samples() == kRecordingSamples && s.monitors(0).refused_foreign() == 1;
+  });
+  ASSERT_EQ(status.monitors_size(), 1);
+  const v1::MonitorRecord& m0 = status.monitors(0);
+  EXPECT_EQ(m0.max_cells(), 1u);
+  EXPECT_EQ(m0.cells(), 1u);
+  EXPECT_GE(m0.refused_cell_batches(), 1u);
+  EXPECT_EQ(m0.refused_cell_samples(), kRecordingSamples);
+  EXPECT_EQ(m0.refused_foreign(), 1u);
 }
 
 }  // namespace
