@@ -4,12 +4,11 @@
 
 #include "gearcoupling.h"
 #include "live/health_wire.h"
+#include "live/wire_text.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::live {
 namespace {
-
-char* lend(const std::string& text) { return const_cast<char*>(text.c_str()); }
 
 gearcoupling_SwapRecord swap_wire(const SwapEntry& e) {
   return {lend(e.test_cell), unix_seconds(e.at), lend(e.by), lend(e.source), e.proposal_id,

@@ -4,18 +4,11 @@
 #include <vector>
 
 #include "live/health_wire.h"
+#include "live/wire_text.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::live {
 namespace {
-
-char* lend(const std::string& text) { return const_cast<char*>(text.c_str()); }
-
-void set_test_cell(char (&out)[65], const std::string& test_cell) {
-  const std::size_t n = std::min<std::size_t>(test_cell.size(), 64);
-  std::copy_n(test_cell.c_str(), n, out);
-  out[n] = '\0';
-}
 
 gearcoupling_ProposalState state_wire(ProposalState state) {
   switch (state) {

@@ -7,6 +7,7 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <chrono>
+#include <csignal>
 #include <functional>
 #include <thread>
 
@@ -91,6 +92,12 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
   EXPECT_TRUE(has_uncertainty);
   EXPECT_GT(proposal->diagnosis_cpu_s(), 0.0);
 
+  // --watch prints it, then again at each change: applied below (--count 2 ends it there).
+  const std::string watch_log = cli::testing::temp_path("watch");
+  ChildProcess watch({GC_GEARCOUPLING_PATH, "proposals", "--test-cell", cell, "--watch", "--count", "2",
+                      "--json", "--discovery-s", "0.5", "--domain", std::to_string(test_domain())},
+                     watch_log, {}, "", true);
+
   // The text view says the same.
   const auto text = run_gearcoupling(on_test_domain({"proposals", "--test-cell", cell, "--discovery-s", "0.5"}));
   ASSERT_EQ(text.exit_code, 0) << text.err;
@@ -105,6 +112,10 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
       {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "20"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
+  EXPECT_EQ(watch.wait_exit(20.0), 0);
+  const std::string watched = read_file(watch_log);
+  EXPECT_NE(watched.find("\"state\":\"standing\""), std::string::npos) << watched;
+  EXPECT_NE(watched.find("\"state\":\"applied\""), std::string::npos) << watched;
 
   // 3. The test cell runs on: within one window both channels are at the noise level.
   const auto again = run_gearcoupling(on_test_domain(
@@ -233,6 +244,19 @@ TEST_F(LiveTest, ASwapDuringADiagnosisLeavesNoProposalForTheModelReplaced) {
     EXPECT_EQ(p.base_model(), "paper");
   }
   EXPECT_TRUE(monitor->running());
+}
+
+// Stopping the monitor while it diagnoses: the diagnosis is cancelled at its next loop, the
+// monitor ends at once and cleanly.
+TEST_F(LiveTest, TheMonitorStopsPromptlyInTheMiddleOfADiagnosis) {
+  auto monitor = start_monitor(monitor_args());
+  const std::string cell = "interrupted";
+  replay_hidden(cell);
+  const v1::LiveStatus diagnosing = wait_for_status(
+      [&](const v1::LiveStatus& s) { return s.monitors(0).diagnosing() == cell; });
+  ASSERT_EQ(diagnosing.monitors(0).diagnosing(), cell);
+  monitor->signal(SIGTERM);
+  EXPECT_EQ(monitor->wait_exit(5.0), 0);
 }
 
 // Issue 23's leftover: the test cells refused beyond --max-cells and the batches written from
