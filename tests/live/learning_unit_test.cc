@@ -170,8 +170,9 @@ TEST(SwapAudit, KeepsTheLatestSwapsAndFollowsTheModelInForce) {
   SwapAudit audit;
   for (std::size_t i = 0; i < SwapAudit::kKept + 3; ++i) {
     SwapEntry entry;
-    entry.test_cell = "cell" + std::to_string(i % 2);
-    entry.model_after = "m" + std::to_string(i);
+    entry.test_cell = i % 2 == 0 ? "cell0" : "cell1";
+    entry.model_after = "m";
+    entry.model_after += std::to_string(i);
     audit.add(entry);
   }
   EXPECT_EQ(audit.entries().size(), SwapAudit::kKept);
