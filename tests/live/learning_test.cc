@@ -2,8 +2,10 @@
 // running the library's model; within 30 s `proposals --json` shows a proposal naming the hidden
 // effect; `swap-model --proposal ID` puts it in force; within one health window of new samples
 // both channels are at the noise level, and `status --json` shows the swap in the audit trail.
-// Then the robustness cases: a cell gone mid-diagnosis gets no proposal, two cells diagnosed at
-// once both get theirs, and a swap while a diagnosis runs leaves no stale proposal.
+// Then: two cells diagnosed at once both get theirs, a cell gone mid-diagnosis gets none, a swap
+// while a diagnosis runs leaves no proposal standing for the model replaced, later data that
+// contradicts a proposal withdraws it, a stop mid-diagnosis is prompt, and the monitor's
+// refusals (issue 23) are in its status.
 #include <google/protobuf/util/json_util.h>
 
 #include <chrono>
