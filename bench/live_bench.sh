@@ -8,8 +8,10 @@
 # LIVE_BENCH_CELLS (4), LIVE_BENCH_RATE (10000), LIVE_BENCH_SECONDS (10),
 # LIVE_BENCH_BATCHES ("1000 0"), LIVE_BENCH_SWAP_MS (0; 100: a model swap to every cell every
 # 100 ms), LIVE_BENCH_RT (empty; "1": monitor and publishers under
-# SCHED_FIFO priority 10 with chrt, as on a test cell's own host). Bounded in time; domain
-# derived from this shell's pid.
+# SCHED_FIFO priority 10 with chrt, as on a test cell's own host), LIVE_BENCH_MONITOR_ARGS (empty;
+# more flags of gearcoupling-monitor, e.g. "--model paper_downwind --diagnose-after-s 1
+# --rediagnose-s 0": every cell's error beyond the noise, so diagnoses run back to back the
+# whole time). Bounded in time; domain derived from this shell's pid.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -25,7 +27,8 @@ monitor=""
 cleanup() { if [ -n "$monitor" ]; then kill -TERM "$monitor" 2>/dev/null || true; fi; }
 trap cleanup EXIT INT TERM
 for batch in $batches; do
-  $rt "$build/monitor/gearcoupling-monitor" --domain "$domain" --log-level warn &
+  # shellcheck disable=SC2086 # LIVE_BENCH_MONITOR_ARGS is a list of flags
+  $rt "$build/monitor/gearcoupling-monitor" --domain "$domain" --log-level info ${LIVE_BENCH_MONITOR_ARGS:-} &
   monitor=$!
   sleep 1
   timeout $((seconds + 60)) $rt "$build/bench/gc_bench_live" --domain "$domain" --cells "$cells" \

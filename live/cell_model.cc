@@ -5,13 +5,21 @@
 #include "core/model_error.h"
 
 namespace gc::live {
+namespace {
+
+CellModel from_file(codec::ModelFile file) {
+  return {file.name, file.description, file.coupling,
+          std::make_shared<const CouplingModel>(std::move(file.model)),
+          std::chrono::system_clock::now()};
+}
+
+}  // namespace
 
 CellModel parse_cell_model(std::string_view text, std::string_view source_name,
                            const std::filesystem::path& catalog_dir) {
   // No base directory: a coupling_file relative to nothing cannot be found, and says so.
   codec::ModelFile file = codec::parse_model_text(text, source_name, catalog_dir, "/nonexistent");
-  return {file.name, std::make_shared<const CouplingModel>(std::move(file.model)),
-          std::chrono::system_clock::now()};
+  return from_file(std::move(file));
 }
 
 CellModel load_cell_model(const std::string& file_or_name, const std::filesystem::path& models_dir,
@@ -22,8 +30,7 @@ CellModel load_cell_model(const std::string& file_or_name, const std::filesystem
   const std::filesystem::path path =
       is_file ? std::filesystem::path(file_or_name) : models_dir / (file_or_name + ".textproto");
   codec::ModelFile file = codec::load_model_description(path, catalog_dir);
-  return {file.name, std::make_shared<const CouplingModel>(std::move(file.model)),
-          std::chrono::system_clock::now()};
+  return from_file(std::move(file));
 }
 
 }  // namespace gc::live

@@ -14,6 +14,8 @@ namespace gc::live {
 
 struct CellModel {
   std::string name;                              ///< ModelConfig.name, or the file's stem
+  std::string description;                       ///< ModelConfig.description
+  std::string coupling;                          ///< the catalogue name, as written
   std::shared_ptr<const CouplingModel> model;
   std::chrono::system_clock::time_point since;   ///< when it came into force
 };

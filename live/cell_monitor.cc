@@ -11,7 +11,8 @@ namespace gc::live {
 CellMonitor::CellMonitor(CellModel model, const CellMonitorOptions& options)
     : options_(options),
       model_(std::move(model)),
-      windows_{Window{ValidationAccumulator(binning())}, Window{ValidationAccumulator(binning())}} {}
+      windows_{Window{ValidationAccumulator(binning())}, Window{ValidationAccumulator(binning())}},
+      recent_(options.diagnosis_samples, options.diagnosis_window_s) {}
 
 BinningOptions CellMonitor::binning() const {
   BinningOptions binning;
@@ -38,6 +39,7 @@ SampleOutcome CellMonitor::take(std::uint64_t run_id, std::uint64_t sequence_num
     last_time_s_.reset();
     derived_.emplace(options_.loading_dead_band_rad, options_.still_after_s);
     restart_windows();
+    recent_.clear();
   }
   if (sequence_number <= last_sequence_ ||
       (sample && last_time_s_ && sample->input.time_s < *last_time_s_)) {
@@ -74,6 +76,7 @@ SampleOutcome CellMonitor::take(std::uint64_t run_id, std::uint64_t sequence_num
   ++counts_.evaluated;
   ++evaluated_under_model_;
   add_to_windows(*sample, predicted);
+  recent_.add(*sample);
   return SampleOutcome::evaluated;
 }
 

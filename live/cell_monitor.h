@@ -14,6 +14,7 @@
 #include "core/recorded_sample.h"
 #include "core/validation/error_bins.h"
 #include "live/cell_model.h"
+#include "live/sample_window.h"
 
 namespace gc::live {
 
@@ -26,6 +27,10 @@ struct CellMonitorOptions {
   /// ends, so it is configured (docs/recordings.md has the trade-off).
   double loading_dead_band_rad = LoadingDirectionOptions{}.min_dead_band_rad;
   double still_after_s = LoadingDirectionOptions{}.still_after_s;   ///< [s]
+  /// The rolling window the monitor's diagnosis runs on (live/sample_window.h): at most this
+  /// many evaluated samples of the current run, spanning at least diagnosis_window_s [s].
+  std::size_t diagnosis_samples = 2000;
+  double diagnosis_window_s = 10.0;
 };
 
 /// What happened to one sample.
@@ -78,6 +83,8 @@ class CellMonitor {
 
   HealthReport health(std::chrono::system_clock::time_point now) const;
   const CellModel& model() const { return model_; }
+  /// The latest evaluated samples of the current run, derived inputs filled in.
+  const SampleWindow& recent_samples() const { return recent_; }
   std::uint64_t run_id() const { return run_id_; }
 
  private:
@@ -102,6 +109,7 @@ class CellMonitor {
   std::optional<analysis::DerivedInputs> derived_;
   std::optional<double> window_origin_s_;
   std::array<Window, 2> windows_;
+  SampleWindow recent_;
   SampleCountsSnapshot counts_;
   std::string last_refusal_, last_model_refusal_;
 };

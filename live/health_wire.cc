@@ -2,12 +2,11 @@
 
 #include <algorithm>
 
+#include "live/wire_text.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::live {
 namespace {
-
-char* lend(const std::string& text) { return const_cast<char*>(text.c_str()); }
 
 gearcoupling_ChannelHealth channel_wire(const ChannelFigures& figures) {
   return {figures.rmse_nm, figures.bias_nm, figures.noise_nm, figures.systematic_nm,
@@ -17,12 +16,6 @@ gearcoupling_ChannelHealth channel_wire(const ChannelFigures& figures) {
 gearcoupling_ModelPeriod period_wire(const ModelPeriodReport& period) {
   return {lend(period.model_name), unix_seconds(period.since), period.in_force_s,
           period.evaluated, channel_wire(period.channels[0]), channel_wire(period.channels[1])};
-}
-
-void set_test_cell(char (&out)[65], const std::string& test_cell) {
-  const std::size_t n = std::min<std::size_t>(test_cell.size(), 64);
-  std::copy_n(test_cell.c_str(), n, out);
-  out[n] = '\0';
 }
 
 }  // namespace

@@ -11,6 +11,9 @@ inline constexpr const char* kMeasurementTopic = "gearcoupling/live/measurement"
 inline constexpr const char* kResidualTopic = "gearcoupling/live/residual";
 inline constexpr const char* kHealthTopic = "gearcoupling/live/health";
 inline constexpr const char* kModelTopic = "gearcoupling/live/model";
+/// The monitor's proposals (one per test cell) and its own status with the audit trail of swaps.
+inline constexpr const char* kProposalTopic = "gearcoupling/live/proposal";
+inline constexpr const char* kMonitorTopic = "gearcoupling/live/monitor";
 /// Health and residuals; and measurements and model swaps of publishers older than per-cell
 /// partitions (still read in plain mode; under DDS Security no grant lets anyone publish them here).
 inline constexpr const char* kLivePartition = "gearcoupling.live";

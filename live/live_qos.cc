@@ -47,5 +47,7 @@ protocol::Qos health_writer_qos() {
 }
 
 protocol::Qos model_qos() { return health_reader_qos(); }
+protocol::Qos proposal_qos() { return health_reader_qos(); }
+protocol::Qos monitor_status_qos() { return health_reader_qos(); }
 
 }  // namespace gc::live

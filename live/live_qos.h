@@ -20,5 +20,9 @@ protocol::Qos health_reader_qos();
 /// Model swaps: RELIABLE, KEEP_LAST 1 per test cell, TRANSIENT_LOCAL, so a monitor that
 /// (re)starts gets each cell's latest model.
 protocol::Qos model_qos();
+/// Proposals and the monitor's status: as the health (RELIABLE, KEEP_LAST 1 per key,
+/// TRANSIENT_LOCAL: a late reader gets every cell's proposal and the audit trail at once).
+protocol::Qos proposal_qos();
+protocol::Qos monitor_status_qos();
 
 }  // namespace gc::live

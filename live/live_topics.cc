@@ -1,5 +1,7 @@
 #include "live/live_topics.h"
 
+#include <fmt/format.h>
+
 #include <string>
 #include <vector>
 
@@ -42,6 +44,14 @@ Entity make_model_topic(dds_entity_t participant) {
   return make_topic(participant, gearcoupling_ModelSwap_desc, kModelTopic, model_qos());
 }
 
+Entity make_proposal_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_ModelProposal_desc, kProposalTopic, proposal_qos());
+}
+Entity make_monitor_status_topic(dds_entity_t participant) {
+  return make_topic(participant, gearcoupling_MonitorStatus_desc, kMonitorTopic,
+                    monitor_status_qos());
+}
+
 Entity make_live_publisher(dds_entity_t participant) {
   const protocol::Qos partition = protocol::partition_qos(kLivePartition);
   return Entity(check_dds(dds_create_publisher(participant, partition.get(), nullptr),
@@ -82,6 +92,21 @@ std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_han
     }
     dds_free(names);
   }
+  dds_builtintopic_free_endpoint(endpoint);
+  return out;
+}
+
+WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication) {
+  WriterInfo out;
+  dds_builtintopic_endpoint_t* endpoint = dds_get_matched_publication_data(reader, publication);
+  if (endpoint == nullptr) return out;
+  void* data = nullptr;
+  size_t size = 0;
+  if (endpoint->qos != nullptr && dds_qget_userdata(endpoint->qos, &data, &size) && data != nullptr) {
+    out.user_data.assign(static_cast<const char*>(data), size);
+    dds_free(data);
+  }
+  for (unsigned char byte : endpoint->participant_key.v) out.participant += fmt::format("{:02x}", byte);
   dds_builtintopic_free_endpoint(endpoint);
   return out;
 }

@@ -20,6 +20,8 @@ protocol::Entity make_measurement_topic(dds_entity_t participant);
 protocol::Entity make_residual_topic(dds_entity_t participant);
 protocol::Entity make_health_topic(dds_entity_t participant);
 protocol::Entity make_model_topic(dds_entity_t participant);
+protocol::Entity make_proposal_topic(dds_entity_t participant);
+protocol::Entity make_monitor_status_topic(dds_entity_t participant);
 
 /// A publisher / subscriber in the partition "gearcoupling.live".
 protocol::Entity make_live_publisher(dds_entity_t participant);
@@ -34,6 +36,13 @@ protocol::Entity make_subscriber_in(dds_entity_t participant,
 /// The partitions of `publication`, a writer matched with `reader` (a sample's
 /// publication_handle); empty when it is no longer matched.
 std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_handle_t publication);
+
+/// What the matched writer `publication` of `reader` says of itself: its USER_DATA as text and
+/// its participant's GUID (32 hex digits); empty when it is no longer matched.
+struct WriterInfo {
+  std::string user_data, participant;
+};
+WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication);
 
 /// Waits until `writer` has at least `readers` matched readers (a sample written before a
 /// reader is matched is lost to it). Returns whether it had them within `timeout`.

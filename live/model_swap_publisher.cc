@@ -11,9 +11,11 @@
 namespace gc::live {
 
 ModelSwapPublisher::ModelSwapPublisher(dds_entity_t participant,
-                                       const std::vector<std::string>& test_cells)
+                                       const std::vector<std::string>& test_cells,
+                                       const std::string& user_data)
     : topic_(make_model_topic(participant)) {
   const protocol::Qos qos = model_qos();
+  if (!user_data.empty()) dds_qset_userdata(qos.get(), user_data.data(), user_data.size());
   for (const std::string& test_cell : test_cells) {
     if (writers_.count(test_cell) != 0) continue;
     CellWriter w;

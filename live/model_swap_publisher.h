@@ -20,7 +20,10 @@ class ModelSwapPublisher {
   /// (cell_partition): under DDS Security an operator identity may create writers only for the
   /// cells it is granted (creating another fails, NOT_ALLOWED_BY_SECURITY). Throws InvalidInput
   /// naming "test_cell" for a bad name.
-  ModelSwapPublisher(dds_entity_t participant, const std::vector<std::string>& test_cells);
+  /// `user_data`, "by=WHO;source=WHAT", goes in every writer's USER_DATA: the monitor's audit
+  /// trail names who swapped and from what (a proposal, a file); "" says nothing.
+  ModelSwapPublisher(dds_entity_t participant, const std::vector<std::string>& test_cells,
+                     const std::string& user_data = "");
   /// Publishes `model_text` (empty: only the decimation) for `test_cell`, one of the
   /// constructor's; `residual_decimation` 0 keeps the monitor's. Throws InvalidInput naming
   /// "test_cell" for a bad name or one not given to the constructor.

@@ -1,5 +1,6 @@
 #include "live/monitor.h"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <vector>
@@ -7,6 +8,7 @@
 #include "core/model_error.h"
 #include "gearcoupling.h"
 #include "live/health_wire.h"
+#include "live/proposal_wire.h"
 #include "live/live_names.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
@@ -22,9 +24,17 @@ using Clock = std::chrono::steady_clock;
 
 struct Monitor::Cell {
   CellMonitor monitor;
+  std::uint64_t generation = 0;
   Clock::time_point last_sample = Clock::now();
   std::uint64_t decimation_count = 0;
   std::vector<gearcoupling_Residual> residuals = {};
+  // The learning loop: since when the error is beyond the noise (under this model, this run),
+  // the latest diagnosis and recheck submitted, and the latest proposal published.
+  std::optional<Clock::time_point> systematic_since = std::nullopt;
+  std::optional<Clock::time_point> diagnosed_at = std::nullopt, rechecked_at = std::nullopt;
+  std::optional<Clock::time_point> onset_of_diagnosis = std::nullopt;
+  std::optional<Proposal> proposal = std::nullopt;
+  std::uint64_t evaluated_at_proposal = 0;
 };
 
 namespace {
@@ -33,6 +43,41 @@ Entity make_writer(dds_entity_t publisher, dds_entity_t topic, const protocol::Q
                    const char* what) {
   return Entity(check_dds(dds_create_writer(publisher, topic, qos.get(), nullptr), what));
 }
+
+double seconds_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+/// Rows a diagnosis needs at least (diagnose refuses fewer: 4 * folds * blocks per fold).
+std::size_t min_diagnosis_samples() {
+  const CrossValidationSettings cv = DiagnosisSettings{}.cross_validation;
+  return 4 * static_cast<std::size_t>(cv.folds) * static_cast<std::size_t>(cv.blocks_per_fold);
+}
+
+std::string hex16(std::uint64_t value) { return fmt::format("{:016x}", value); }
+
+/// The value of `key` in a swap writer's USER_DATA "by=...;source=...", "" when absent.
+std::string user_data_value(const std::string& user_data, const std::string& key) {
+  std::size_t at = 0;
+  while (at < user_data.size()) {
+    const std::size_t end = std::min(user_data.find(';', at), user_data.size());
+    const std::string item = user_data.substr(at, end - at);
+    if (item.rfind(key + "=", 0) == 0) return item.substr(key.size() + 1);
+    at = end + 1;
+  }
+  return "";
+}
+
+}  // namespace
+
+SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication) {
+  const WriterInfo info = writer_info(reader, publication);
+  SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source")};
+  if (origin.by.empty()) origin.by = info.participant.empty() ? "unknown" : "participant " + info.participant;
+  return origin;
+}
+
+namespace {
 
 std::uint64_t realtime_ns() {
   return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -81,10 +126,24 @@ Monitor::Monitor(const MonitorOptions& options)
                                  "dds_create_writer(residual)");
   health_writer_ = make_writer(publisher_.get(), health_topic_.get(), health_writer_qos(),
                                "dds_create_writer(health)");
+  proposal_topic_ = make_proposal_topic(participant);
+  monitor_topic_ = make_monitor_status_topic(participant);
+  proposal_writer_ = make_writer(publisher_.get(), proposal_topic_.get(), proposal_qos(),
+                                 "dds_create_writer(proposal)");
+  monitor_writer_ = make_writer(publisher_.get(), monitor_topic_.get(), monitor_status_qos(),
+                                "dds_create_writer(monitor status)");
   waitset_ = Entity(check_dds(dds_create_waitset(participant), "dds_create_waitset"));
   for (dds_entity_t reader : {measurement_reader_.get(), model_reader_.get()}) {
     check_dds(dds_set_status_mask(reader, DDS_DATA_AVAILABLE_STATUS), "dds_set_status_mask");
     check_dds(dds_waitset_attach(waitset_.get(), reader, reader), "dds_waitset_attach");
+  }
+  outcomes_ready_ = Entity(check_dds(dds_create_guardcondition(participant), "dds_create_guardcondition"));
+  check_dds(dds_waitset_attach(waitset_.get(), outcomes_ready_.get(), outcomes_ready_.get()),
+            "dds_waitset_attach(guard)");
+  if (options_.learning.enabled) {
+    const dds_entity_t guard = outcomes_ready_.get();
+    worker_ = std::make_unique<DiagnosisWorker>(options_.learning.queue, options_.learning.nice,
+                                                options_.learning.cpu_share, [guard] { dds_set_guardcondition(guard, true); });
   }
 }
 
@@ -93,8 +152,13 @@ Monitor::~Monitor() {
   for (dds_entity_t reader : {measurement_reader_.get(), model_reader_.get()}) {
     dds_set_listener(reader, nullptr);
   }
-  // Gracefully gone: every cell's health disposed, so dashboards drop them at once.
-  for (const auto& [test_cell, cell] : cells_) dispose_health(health_writer_.get(), test_cell);
+  worker_.reset();   // waits for a diagnosis running
+  // Gracefully gone: every cell's health and proposal disposed, so dashboards drop them at once.
+  for (const auto& [test_cell, cell] : cells_) {
+    dispose_health(health_writer_.get(), test_cell);
+    if (cell->proposal) dispose_proposal(proposal_writer_.get(), test_cell);
+  }
+  dispose_monitor_status(monitor_writer_.get(), monitor_id_);
 }
 
 void Monitor::stop() {
@@ -113,6 +177,7 @@ void Monitor::run() {
     // Models first: a swap takes effect between two batches, never within one.
     take_models();
     take_measurements();
+    take_outcomes();
     if (Clock::now() >= next_health) {
       publish_health();
       next_health += period;
@@ -136,7 +201,8 @@ Monitor::Cell* Monitor::cell(const std::string& test_cell) {
     }
     spdlog::info("test cell {}: first sample, model {}", test_cell, model_for(test_cell).name);
     found = cells_.emplace(test_cell, std::make_unique<Cell>(Cell{
-                                          CellMonitor(model_for(test_cell), options_.cell)}))
+                                          CellMonitor(model_for(test_cell), options_.cell),
+                                          next_generation_++}))
                 .first;
     const auto refusal = model_refusals_.find(test_cell);
     if (refusal != model_refusals_.end()) {
@@ -264,10 +330,13 @@ void Monitor::take_models() {
       const auto existing = cells_.find(test_cell);
       try {
         CellModel model = parsed_model(text, test_cell);
-        spdlog::info("test cell {}: model {} in force", test_cell, model.name);
+        const SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        spdlog::info("test cell {}: model {} in force (by {})", test_cell, model.name, origin.by);
         models_[test_cell] = model;
         model_refusals_.erase(test_cell);
-        if (existing != cells_.end()) existing->second->monitor.swap_model(std::move(model));
+        Cell* cell = existing != cells_.end() ? existing->second.get() : nullptr;
+        audit_swap(test_cell, cell, model, text, origin);
+        if (cell != nullptr) cell->monitor.swap_model(std::move(model));
       } catch (const ModelError& error) {
         spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
         if (existing != cells_.end()) {
@@ -351,13 +420,175 @@ void Monitor::publish_health() {
     if (silent_s >= options_.dispose_s) {
       spdlog::info("test cell {}: nothing for {:.1f} s, health disposed", it->first, silent_s);
       dispose_health(health_writer_.get(), it->first);
+      if (it->second->proposal) dispose_proposal(proposal_writer_.get(), it->first);
+      audit_.freeze(it->first);
       it = cells_.erase(it);
       continue;
     }
-    write_health(health_writer_.get(), it->first, monitor_id_, silent_s >= options_.stale_s,
-                 it->second->monitor.health(wall));
+    const HealthReport health = it->second->monitor.health(wall);
+    const bool stale = silent_s >= options_.stale_s;
+    write_health(health_writer_.get(), it->first, monitor_id_, stale, health);
+    audit_.follow(it->first, health);
+    if (worker_) learn(it->first, *it->second, health, stale);
     ++it;
   }
+  write_monitor_status(monitor_writer_.get(), monitor_id_, counters(), audit_);
+}
+
+MonitorCounters Monitor::counters() const {
+  return {cells_.size(), options_.max_cells, refused_batches_, refused_samples_, refused_foreign_,
+          proposals_published_, proposals_withdrawn_, diagnoses_run_, diagnoses_dropped_,
+          worker_ ? worker_->running() : std::string()};
+}
+
+void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport& health,
+                    bool stale) {
+  const auto now = Clock::now();
+  const LearningOptions& o = options_.learning;
+  const std::size_t needed = min_diagnosis_samples();
+  const bool systematic = health.window_samples >= needed &&
+                          (!health.model.channels[0].at_noise_level ||
+                           !health.model.channels[1].at_noise_level);
+  if (!systematic) {
+    cell.systematic_since.reset();
+  } else if (!cell.systematic_since) {
+    cell.systematic_since = now;
+  }
+  const SampleWindow& window = cell.monitor.recent_samples();
+  if (stale || window.size() < needed || worker_->busy(test_cell)) return;
+  auto due = [&](const std::optional<Clock::time_point>& last, double period_s) {
+    return !last || seconds_between(*last, now) >= period_s;
+  };
+  DiagnosisJob job{test_cell, cell.generation, cell.monitor.model(), {}, std::nullopt};
+  if (cell.proposal && cell.proposal->state == ProposalState::standing &&
+      health.counts.evaluated - cell.evaluated_at_proposal >= needed &&
+      due(cell.rechecked_at ? cell.rechecked_at : cell.diagnosed_at, o.recheck_s)) {
+    job.recheck = cell.proposal;
+    cell.rechecked_at = now;
+  } else if (cell.systematic_since && seconds_between(*cell.systematic_since, now) >= o.diagnose_after_s &&
+             due(cell.diagnosed_at, o.rediagnose_s)) {
+    cell.diagnosed_at = now;
+    cell.onset_of_diagnosis = cell.systematic_since;
+  } else {
+    return;
+  }
+  job.samples = window.samples();
+  const bool recheck = job.recheck.has_value();
+  if (!worker_->submit(std::move(job))) {
+    ++diagnoses_dropped_;
+    spdlog::debug("test cell {}: diagnosis queue full, {} dropped", test_cell,
+                  recheck ? "recheck" : "diagnosis");
+    return;
+  }
+  spdlog::info("test cell {}: {} on {} samples", test_cell,
+               recheck ? "rechecking proposal " + hex16(cell.proposal->id)
+                       : "error beyond the noise for " +
+                             fmt::format("{:.1f} s, diagnosing", seconds_between(*cell.systematic_since, now)),
+               window.size());
+}
+
+void Monitor::take_outcomes() {
+  if (!worker_) return;
+  bool triggered = false;
+  dds_take_guardcondition(outcomes_ready_.get(), &triggered);
+  for (DiagnosisOutcome& outcome : worker_->take_outcomes()) take_outcome(std::move(outcome));
+}
+
+void Monitor::take_outcome(DiagnosisOutcome outcome) {
+  ++diagnoses_run_;
+  const auto found = cells_.find(outcome.test_cell);
+  // A cell gone (or gone and back) while it was diagnosed gets nothing; nor does a cell whose
+  // model was swapped meanwhile: what was found is about a model no longer in force.
+  if (found == cells_.end() || found->second->generation != outcome.cell_generation) {
+    spdlog::info("test cell {}: gone during its diagnosis; nothing proposed", outcome.test_cell);
+    return;
+  }
+  Cell& cell = *found->second;
+  if (cell.monitor.model().model != outcome.base.model) {
+    spdlog::info("test cell {}: model swapped during its diagnosis; nothing proposed",
+                 outcome.test_cell);
+    return;
+  }
+  if (outcome.rechecked) {
+    if (!cell.proposal || cell.proposal->id != outcome.rechecked->id ||
+        cell.proposal->state != ProposalState::standing) {
+      return;
+    }
+    if (!outcome.base_rmse_nm || !outcome.proposed_rmse_nm) return;
+    spdlog::info("test cell {}: proposal {} rechecked: RMSE {:.0f} N·m with it, {:.0f} without",
+                 outcome.test_cell, hex16(cell.proposal->id), *outcome.proposed_rmse_nm,
+                 *outcome.base_rmse_nm);
+    if (*outcome.proposed_rmse_nm < *outcome.base_rmse_nm) return;
+    cell.proposal->state = ProposalState::withdrawn;
+    cell.proposal->state_reason = fmt::format(
+        "contradicted by later data: on the latest {} samples its RMSE {:.0f} N·m is not below "
+        "the model's {:.0f} N·m", outcome.samples,
+        *outcome.proposed_rmse_nm, *outcome.base_rmse_nm);
+    ++proposals_withdrawn_;
+    publish_proposal(cell);
+    return;
+  }
+  if (!outcome.proposal) {
+    spdlog::info("test cell {}: diagnosis proposes nothing ({:.1f} s CPU): {}", outcome.test_cell,
+                 outcome.cpu_s, outcome.note);
+    return;
+  }
+  Proposal& p = *outcome.proposal;
+  p.id = protocol::random_id();
+  p.proposed_at = std::chrono::system_clock::now();
+  p.diagnosis_cpu_s = outcome.cpu_s;
+  if (cell.onset_of_diagnosis) p.onset_to_proposal_s = seconds_between(*cell.onset_of_diagnosis, Clock::now());
+  if (cell.proposal && !replaces(p, *cell.proposal)) {
+    spdlog::info("test cell {}: diagnosis found {} ({:.0f} % less error), not better than proposal "
+                 "{} ({:.0f} %)", outcome.test_cell, p.effects, 100.0 * p.reduction(),
+                 hex16(cell.proposal->id), 100.0 * cell.proposal->reduction());
+    return;
+  }
+  spdlog::info("test cell {}: proposal {}: {} ({}), held-out RMSE {:.0f} -> {:.0f} N·m, {:.1f} s CPU",
+               outcome.test_cell, hex16(p.id), p.effects, p.kind, p.before_rmse_nm,
+               p.after_rmse_nm, p.diagnosis_cpu_s);
+  cell.proposal = std::move(p);
+  cell.evaluated_at_proposal = cell.monitor.health(std::chrono::system_clock::now()).counts.evaluated;
+  cell.rechecked_at.reset();
+  publish_proposal(cell);
+}
+
+void Monitor::publish_proposal(Cell& cell) {
+  if (cell.proposal->state == ProposalState::standing) ++proposals_published_;
+  write_proposal(proposal_writer_.get(), monitor_id_, *cell.proposal);
+}
+
+void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellModel& model,
+                         const std::string& text, const SwapOrigin& origin) {
+  SwapEntry entry;
+  entry.test_cell = test_cell;
+  entry.at = std::chrono::system_clock::now();
+  entry.by = origin.by;
+  entry.source = origin.source.empty() ? "model text" : origin.source;
+  entry.model_after = model.name;
+  if (cell != nullptr) {
+    const HealthReport before = cell->monitor.health(entry.at);
+    entry.model_before = before.model.model_name;
+    for (std::size_t c = 0; c < 2; ++c) entry.before_rmse_nm[c] = before.model.channels[c].rmse_nm;
+    cell->systematic_since.reset();
+    std::optional<Proposal>& p = cell->proposal;
+    if (p && p->state == ProposalState::standing) {
+      if (p->model_text == text) {
+        p->state = ProposalState::applied;
+        p->state_reason = "applied by " + origin.by;
+        entry.proposal_id = p->id;
+        entry.source = "proposal " + hex16(p->id);
+      } else {
+        p->state = ProposalState::withdrawn;
+        p->state_reason = "its base model " + p->base_model + " was replaced by " + model.name;
+        ++proposals_withdrawn_;
+      }
+      publish_proposal(*cell);
+    }
+  }
+  spdlog::info("test cell {}: swap {} -> {} by {} from {}", test_cell, entry.model_before,
+               entry.model_after, entry.by, entry.source);
+  audit_.add(std::move(entry));
 }
 
 }  // namespace gc::live

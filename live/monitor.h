@@ -14,9 +14,38 @@
 #include <vector>
 
 #include "live/cell_monitor.h"
+#include "live/diagnosis_worker.h"
+#include "live/monitor_status_wire.h"
+#include "live/swap_audit.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::live {
+
+/// The learning loop (docs/architecture.md, "The learning loop"): when a test cell's error stays
+/// beyond the noise, the monitor diagnoses its rolling window in the background and proposes a
+/// model (live/diagnosis_worker.h, live/proposal.h).
+struct LearningOptions {
+  bool enabled = true;
+  /// A cell's health must show an error beyond the noise (either channel) for this long, wall
+  /// clock, before its first diagnosis [s].
+  double diagnose_after_s = 10.0;
+  double rediagnose_s = 60.0;   ///< a cell's next diagnosis no sooner after the last [s]
+  double recheck_s = 30.0;      ///< a standing proposal is rechecked on newer samples this often [s]
+  std::size_t queue = 4;        ///< diagnoses waiting at most (one runs at a time)
+  int nice = 19;                ///< the diagnosis thread's nice value, 0 to 19
+  /// The diagnosis thread's CPU at most, as a share of one core (it sleeps between its loops of
+  /// model evaluations in proportion to their CPU time): 0.25 keeps 3/4 of a core for the
+  /// monitor's thread and the rest of the host whatever the scheduler does with nice values
+  /// (with autogroup, a thread's nice matters only against its own process's threads).
+  double cpu_share = 0.25;
+};
+
+/// Who swapped a model and from what: the swap writer's USER_DATA ("by=USER@HOST;source=..."
+/// as gearcoupling swap-model sets it), else its participant's GUID.
+struct SwapOrigin {
+  std::string by, source;
+};
+SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication);
 
 struct MonitorOptions {
   std::uint32_t domain = 0;
@@ -34,9 +63,13 @@ struct MonitorOptions {
   /// first time and then at most once a minute; a cell's place is free again once disposed
   /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
   /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
-  /// test hall, keep the monitor within 3 MB whatever names arrive. What swaps leave per test
+  /// test hall, keep the monitor within 3 MB whatever names arrive; plus, for a cell that
+  /// streams, its diagnosis window (at most cell.diagnosis_samples x 192 B: 384 kB at the
+  /// default 2000, 25 MB for 64 streaming cells) and the copies queued for the diagnosis (at
+  /// most learning.queue + 1 windows). What swaps leave per test
   /// cell (model, decimation, refusal) is kept for at most 2 max_cells cells (make_room).
   std::size_t max_cells = 64;
+  LearningOptions learning;
 };
 
 class Monitor {
@@ -63,6 +96,17 @@ class Monitor {
   void take_models();
   void take_measurements();
   void publish_health();
+  /// Submits a diagnosis of `cell`, or a recheck of its standing proposal, when due.
+  void learn(const std::string& test_cell, Cell& cell, const HealthReport& health, bool stale);
+  /// Publishes what the worker found (on the monitor's thread).
+  void take_outcomes();
+  void take_outcome(DiagnosisOutcome outcome);
+  /// The swap of `test_cell` to `model` (already in force), in the audit trail and in the
+  /// state of the cell's proposal.
+  void audit_swap(const std::string& test_cell, Cell* cell, const CellModel& model,
+                  const std::string& text, const SwapOrigin& origin);
+  void publish_proposal(Cell& cell);
+  MonitorCounters counters() const;
   /// `test_cell`'s state, made when new; nullptr when max_cells cells are followed and it is
   /// not configured (counted and logged by refuse_cell).
   Cell* cell(const std::string& test_cell);
@@ -98,7 +142,9 @@ class Monitor {
   protocol::Entity subscriber_, publisher_;
   protocol::Entity measurement_topic_, residual_topic_, health_topic_, model_topic_;
   protocol::Entity measurement_reader_, model_reader_, residual_writer_, health_writer_;
+  protocol::Entity proposal_topic_, monitor_topic_, proposal_writer_, monitor_writer_;
   protocol::Entity waitset_;
+  protocol::Entity outcomes_ready_;   // guard condition: the worker finished a job
   std::atomic<bool> stopping_{false};
   std::uint64_t refused_batches_ = 0, refused_samples_ = 0, dropped_swaps_ = 0;
   std::uint64_t refused_batches_logged_ = 0;
@@ -109,6 +155,11 @@ class Monitor {
   std::mutex writer_partitions_mutex_;
   std::map<dds_instance_handle_t, std::vector<std::string>> writer_partitions_;
   std::chrono::steady_clock::time_point refusals_logged_at_{};
+  SwapAudit audit_;
+  std::uint64_t proposals_published_ = 0, proposals_withdrawn_ = 0;
+  std::uint64_t diagnoses_run_ = 0, diagnoses_dropped_ = 0;
+  std::uint64_t next_generation_ = 1;
+  std::unique_ptr<DiagnosisWorker> worker_;   // last: stopped first, before what it wakes
 };
 
 }  // namespace gc::live

@@ -56,9 +56,37 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
                  "test cells followed at once besides those of --cell; a new one beyond it is "
                  "refused and counted until a followed one is disposed")
       ->check(CLI::Range(std::size_t{1}, std::size_t{4096}))->capture_default_str();
+  bool no_diagnosis = false;
+  app.add_flag("--no-diagnosis", no_diagnosis,
+               "never diagnose nor propose models (the learning loop off)");
+  app.add_option("--diagnose-after-s", o.learning.diagnose_after_s,
+                 "diagnose a test cell whose error stays beyond the noise this long (wall clock) [s]")
+      ->check(CLI::Range(0.0, 86400.0))->capture_default_str();
+  app.add_option("--rediagnose-s", o.learning.rediagnose_s,
+                 "a test cell's next diagnosis no sooner than this after the last [s]")
+      ->check(CLI::Range(0.0, 86400.0))->capture_default_str();
+  app.add_option("--recheck-s", o.learning.recheck_s,
+                 "recheck a standing proposal on newer samples this often; withdrawn when they "
+                 "contradict it [s]")->check(CLI::Range(0.1, 86400.0))->capture_default_str();
+  app.add_option("--diagnosis-samples", o.cell.diagnosis_samples,
+                 "a test cell's rolling window for the diagnosis: at most this many samples")
+      ->check(CLI::Range(std::size_t{400}, std::size_t{100000}))->capture_default_str();
+  app.add_option("--diagnosis-window-s", o.cell.diagnosis_window_s,
+                 "the rolling window spans at least this much measurement time (thinned to "
+                 "--diagnosis-samples) [s]")->check(CLI::Range(1e-3, 1e6))->capture_default_str();
+  app.add_option("--diagnosis-queue", o.learning.queue,
+                 "diagnoses waiting at most (one runs at a time, at --diagnosis-nice)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4096}))->capture_default_str();
+  app.add_option("--diagnosis-cpu-share", o.learning.cpu_share,
+                 "the diagnosis thread's CPU at most, as a share of one core (it sleeps between "
+                 "its loops in proportion)")->check(CLI::Range(0.01, 1.0))->capture_default_str();
+  app.add_option("--diagnosis-nice", o.learning.nice,
+                 "nice value of the diagnosis thread (the monitor's own thread keeps its priority)")
+      ->check(CLI::Range(0, 19))->capture_default_str();
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
   app.parse(argc, argv);
+  o.learning.enabled = !no_diagnosis;
   for (const std::string& item : cell_models) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) {

@@ -42,6 +42,7 @@ const Subcommand& replay_subcommand();
 const Subcommand& record_subcommand();
 const Subcommand& swap_model_subcommand();
 const Subcommand& status_subcommand();
+const Subcommand& proposals_subcommand();
 
 /// Every subcommand, in the order of the overview.
 std::span<const Subcommand* const> subcommands();

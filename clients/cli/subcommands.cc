@@ -11,7 +11,7 @@ std::span<const Subcommand* const> subcommands() {
       &synth_subcommand(),            &validate_subcommand(),  &diagnose_subcommand(),
 #ifdef GC_CLI_LIVE
       &replay_subcommand(),           &record_subcommand(),    &swap_model_subcommand(),
-      &status_subcommand(),
+      &status_subcommand(),           &proposals_subcommand(),
 #endif
   };
   return all;

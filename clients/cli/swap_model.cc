@@ -1,6 +1,8 @@
-// gearcoupling swap-model: a new model for a live test cell (live/model_swap_publisher.h),
-// checked here as --model is, then by the monitor; waits for the monitor's health to show it.
+// gearcoupling swap-model: a new model for a live test cell (live/model_swap_publisher.h), a
+// model file checked here as --model is, or a monitor's proposal (--proposal), then checked by the
+// monitor; waits for the monitor's health to show it.
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
@@ -8,6 +10,7 @@
 #include "clients/cli/model_flags.h"
 #include "clients/cli/subcommand.h"
 #include "clients/status/cell_board.h"
+#include "clients/status/monitor_board.h"
 #include "live/live_topics.h"
 #include "live/model_swap_publisher.h"
 
@@ -17,7 +20,11 @@ namespace {
 std::vector<FlagSpec> swap_model_flags() {
   return {
       {"test-cell", "ID", "the test cell whose model to change", std::nullopt},
-      model_flag(),
+      {"model", "FILE|NAME",
+       "model configuration: a .textproto file, or a name in data/models ($GEARCOUPLING_MODELS); "
+       "or give --proposal", ""},
+      {"proposal", "ID", "put the monitor's proposal ID in force (gearcoupling proposals lists them)",
+       ""},
       {"decimate", "N", "also publish one residual per N evaluated samples (0: keep)", "0"},
       {"wait-s", "s", "seconds to wait for the monitor's health to show the model in force", "10",
        false, '\0', {"wait"}},
@@ -33,13 +40,60 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
+/// "USER@HOST" of this process, for the monitor's audit trail.
+std::string operator_name() {
+  const char* user = std::getenv("USER");
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  return std::string(user != nullptr && *user != '\0' ? user : "uid" + std::to_string(getuid())) + "@" + host;
+}
+
+/// What to put in force: the model's name and file text, and where it came from.
+struct SwapText {
+  std::string model_name, text, source;
+};
+
+/// The standing proposal `id` of `test_cell`, waiting up to `wait` for it to be seen. Throws
+/// UsageError naming --proposal when there is none or it is not standing.
+SwapText proposal_text(dds_entity_t participant, const std::string& test_cell, const std::string& id,
+                       std::chrono::milliseconds wait) {
+  status::MonitorBoard board(participant);
+  const auto found = board.wait_for(
+      test_cell, [&](const status::v1::ProposalRecord& p) { return p.proposal_id() == id; }, wait);
+  if (!found) {
+    throw UsageError(fmt::format("--proposal {}: test cell {} has no proposal (none seen within "
+                                 "--wait-s {} s)", id, test_cell, wait.count() / 1e3));
+  }
+  if (found->proposal_id() != id) {
+    throw UsageError(fmt::format("--proposal {}: not test cell {}'s proposal; its proposal is {} ({})",
+                                 id, test_cell, found->proposal_id(), found->state()));
+  }
+  if (found->state() != "standing") {
+    throw UsageError(fmt::format("--proposal {}: {}: {}", id, found->state(), found->state_reason()));
+  }
+  return {found->model_name(), found->model_text(), "proposal " + id};
+}
+
+SwapText file_text(const Flags& flags) {
   // Checked here first, so a typo is an error at once rather than a refusal in the health.
   const codec::ModelFile model = load_model_flag(flags);
+  const std::filesystem::path path = model_flag_path(flags);
+  return {model.name, read_text(path), "file " + path.string()};
+}
+
+int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
+  const bool by_proposal = !flags.text("proposal").empty();
+  if (by_proposal == !flags.text("model").empty()) {
+    throw UsageError("give --model FILE|NAME or --proposal ID (one of them)");
+  }
   const std::string& test_cell = flags.text("test-cell");
   const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait-s") * 1e3));
   const protocol::Entity participant = live::make_participant(domain_from(flags));
-  live::ModelSwapPublisher swaps(participant.get(), {test_cell});
+  const SwapText swap = by_proposal ? proposal_text(participant.get(), test_cell,
+                                                    flags.text("proposal"), wait)
+                                    : file_text(flags);
+  live::ModelSwapPublisher swaps(participant.get(), {test_cell},
+                                 "by=" + operator_name() + ";source=" + swap.source);
   status::CellBoardOptions board;
   board.read_residuals = false;  // an operator identity may read the health alone
   board.only_cell = test_cell;
@@ -50,20 +104,20 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
   const std::string previous_refusal = health.wait_for(test_cell, [](const auto&) { return true; },
                                                        std::chrono::milliseconds(500))
                                            .value_or(status::HealthView{}).last_model_refusal;
-  swaps.publish(test_cell, read_text(model_flag_path(flags)),
+  swaps.publish(test_cell, swap.text,
                 static_cast<std::uint32_t>(flags.integer("decimate", 0, 1000000)));
   const auto shown = health.wait_for(test_cell, [&](const status::HealthView& h) {
-    return h.model_name == model.name || h.last_model_refusal != previous_refusal;
+    return h.model_name == swap.model_name || h.last_model_refusal != previous_refusal;
   }, wait);
-  if (shown && shown->model_name == model.name) {
-    fmt::print(out, "test cell {}: model {} in force\n", test_cell, model.name);
+  if (shown && shown->model_name == swap.model_name) {
+    fmt::print(out, "test cell {}: model {} in force\n", test_cell, swap.model_name);
     return 0;
   }
   if (shown && shown->last_model_refusal != previous_refusal) {
     throw std::runtime_error("the monitor refused the model: " + shown->last_model_refusal);
   }
   fmt::print(out, "test cell {}: model {} published; no health of the test cell within --wait "
-             "(it takes effect with the test cell's next sample)\n", test_cell, model.name);
+             "(it takes effect with the test cell's next sample)\n", test_cell, swap.model_name);
   return 0;
 }
 
@@ -72,8 +126,10 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
 const Subcommand& swap_model_subcommand() {
   static const Subcommand subcommand{
       "swap-model",
-      "Puts a model file in force for a live test cell (gearcoupling-monitor).\n"
-      "Switches between two samples; the health shows before and after side by side.",
+      "Puts a model file, or a monitor's proposal, in force for a live test cell "
+      "(gearcoupling-monitor).\n"
+      "Switches between two samples; the health shows before and after side by side, and the "
+      "monitor's audit trail (status --json) who swapped, when and from what.",
       swap_model_flags, run_swap_model};
   return subcommand;
 }

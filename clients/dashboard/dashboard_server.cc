@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "analysis/validation_report_html.h"
+#include "clients/status/learning_metrics.h"
 #include "clients/status/prometheus_text.h"
 #include "clients/status/status_messages.h"
 #include "clients/status/status_metrics.h"
@@ -52,6 +53,8 @@ DashboardServer::DashboardServer(DashboardOptions options)
       participant_(protocol::create_participant(options_.domain, protocol::dds_config())),
       instances_(participant_.get()),
       cells_(participant_.get(), cell_board_options(options_)),
+      learning_(participant_.get(), options_.max_cells),
+      applier_(participant_.get(), learning_, options_.operator_cells),
       query_(query_client_options(options_)),
       hub_(options_.queue_capacity, options_.max_streams, options_.queue_bytes),
       http_(std::make_unique<httplib::Server>()) {
@@ -109,6 +112,15 @@ void DashboardServer::add_routes() {
     response.status = answer.status;
     response.set_content(answer.body, "application/json");
   });
+  // The cell card's "apply": a POST with a header of our own, which a page of another origin
+  // cannot send without a CORS preflight that this server never grants (no cross-site apply).
+  http_->Post("/api/apply", [this](const httplib::Request& request, httplib::Response& response) {
+    const JsonAnswer answer = request.get_header_value("X-Gearcoupling-Apply") != "1"
+        ? JsonAnswer{403, "{\"error\": \"X-Gearcoupling-Apply: 1 header missing (the page sends it)\"}"}
+        : applier_.apply(parameters_of(request));
+    response.status = answer.status;
+    response.set_content(answer.body, "application/json");
+  });
   http_->Get("/events", [this](const httplib::Request&, httplib::Response& response) {
     std::shared_ptr<EventQueue> queue = hub_.subscribe();
     if (queue == nullptr) {
@@ -157,12 +169,16 @@ void DashboardServer::publish_loop() {
 }
 
 std::string DashboardServer::state_json(bool drain) {
-  return codec::to_compact_json(status::to_message(
-      instances_.snapshot(), drain ? cells_.drain() : cells_.snapshot()));
+  status::v1::LiveStatus state =
+      status::to_message(instances_.snapshot(), drain ? cells_.drain() : cells_.snapshot());
+  status::add_learning(learning_.monitors(), learning_.proposals(), state);
+  for (const std::string& cell : applier_.operator_cells()) state.add_operator_cells(cell);
+  return codec::to_compact_json(state);
 }
 
 std::string DashboardServer::metrics() {
-  std::string text = status::metrics_text(instances_.snapshot(), cells_.snapshot());
+  std::string text = status::metrics_text(instances_.snapshot(), cells_.snapshot()) +
+                     status::learning_metrics_text(learning_.monitors());
   status::PrometheusText own;
   own.family("gearcoupling_dashboard_connections", "gauge",
              "Browsers connected to the dashboard's event stream.");

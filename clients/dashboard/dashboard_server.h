@@ -11,11 +11,14 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "clients/dashboard/event_hub.h"
+#include "clients/dashboard/proposal_apply.h"
 #include "clients/dashboard/query_panel.h"
 #include "clients/status/cell_board.h"
 #include "clients/status/instance_board.h"
+#include "clients/status/monitor_board.h"
 #include "protocol/dds_entity.h"
 
 namespace httplib {
@@ -47,6 +50,10 @@ struct DashboardOptions {
   std::chrono::milliseconds query_timeout{5000};
   /// The query panel's client_id_prefix under DDS Security (client::ClientOptions); 0: none.
   std::uint32_t client_id_prefix = 0;
+  /// Test cells whose proposals this dashboard may apply (POST /api/apply, the cell card's
+  /// "apply"); empty: read-only. Under DDS Security its identity must be an operator granted
+  /// them (clients/dashboard/proposal_apply.h).
+  std::vector<std::string> operator_cells;
 };
 
 class DashboardServer {
@@ -83,6 +90,8 @@ class DashboardServer {
   protocol::Entity participant_;
   status::InstanceBoard instances_;
   status::CellBoard cells_;
+  status::MonitorBoard learning_;   // proposals, the monitors' refusals and audit trail
+  ProposalApplier applier_;
   QueryPanel query_;
   EventHub hub_;
   // Behind a pointer: httplib.h includes <resolv.h>, whose `_res` macro breaks Eigen's headers

@@ -85,6 +85,11 @@ int main(int argc, char** argv) {
                  "else it is ignored and counted")
       ->check(CLI::Range(std::size_t{1}, kMostCells))
       ->capture_default_str();
+  app.add_option("--operator-cells", options.operator_cells,
+                 "test cells whose monitor proposals this dashboard may apply (the cell card's "
+                 "apply button); under DDS Security its identity must be an operator granted them. "
+                 "Default: none, read-only")
+      ->delimiter(',');
   app.add_option("--client-id-prefix", client_id_prefix,
                  std::string("for the query panel, ") + gc::calculators::kClientIdPrefixHelp);
   try {

@@ -58,4 +58,10 @@ v1::LiveStatus to_message(const std::vector<InstanceView>& instances,
   return status;
 }
 
+void add_learning(const std::vector<v1::MonitorRecord>& monitors,
+                  const std::vector<v1::ProposalRecord>& proposals, v1::LiveStatus& status) {
+  for (const v1::MonitorRecord& m : monitors) *status.add_monitors() = m;
+  for (const v1::ProposalRecord& p : proposals) *status.add_proposals() = p;
+}
+
 }  // namespace gc::status

@@ -17,4 +17,8 @@ v1::ServiceInstanceRecord to_message(const InstanceView& instance);
 v1::LiveStatus to_message(const std::vector<InstanceView>& instances,
                           const std::vector<v1::TestCellRecord>& cells);
 
+/// Adds the monitors' status (refusals, audit trail) and the proposals (MonitorBoard) to `status`.
+void add_learning(const std::vector<v1::MonitorRecord>& monitors,
+                  const std::vector<v1::ProposalRecord>& proposals, v1::LiveStatus& status);
+
 }  // namespace gc::status

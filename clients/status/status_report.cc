@@ -6,6 +6,8 @@
 
 #include "clients/status/cell_board.h"
 #include "clients/status/instance_board.h"
+#include "clients/status/learning_table.h"
+#include "clients/status/monitor_board.h"
 #include "clients/status/status_messages.h"
 #include "clients/status/status_table.h"
 #include "codec/result_json.h"
@@ -26,12 +28,16 @@ bool sleep_unless_stopped(std::chrono::milliseconds duration, const std::functio
   return stop();
 }
 
-void print_once(InstanceBoard& instances, CellBoard& cells, bool json, std::FILE* out) {
+void print_once(InstanceBoard& instances, CellBoard& cells, MonitorBoard& monitors, bool json,
+                std::FILE* out) {
   if (json) {
-    fmt::print(out, "{}\n", codec::to_compact_json(to_message(instances.snapshot(), cells.drain())));
+    v1::LiveStatus status = to_message(instances.snapshot(), cells.drain());
+    add_learning(monitors.monitors(), monitors.proposals(), status);
+    fmt::print(out, "{}\n", codec::to_compact_json(status));
   } else {
     print_instances(instances.snapshot(), out);
     print_cells(cells.snapshot(), out);
+    print_learning(monitors.monitors(), monitors.proposals(), out);
   }
   std::fflush(out);
 }
@@ -44,10 +50,11 @@ int print_status(const StatusReportOptions& options, std::FILE* out,
       protocol::create_participant(options.domain, protocol::dds_config()));
   InstanceBoard instances(participant.get());
   CellBoard cells(participant.get());
+  MonitorBoard monitors(participant.get());
   if (sleep_unless_stopped(options.discovery, stop)) return 0;
   for (unsigned report = 1;; ++report) {
     if (options.watch && !options.json && report > 1) fmt::print(out, "\n");
-    print_once(instances, cells, options.json, out);
+    print_once(instances, cells, monitors, options.json, out);
     if (!options.watch || (options.count > 0 && report >= options.count)) return 0;
     if (sleep_unless_stopped(options.interval, stop)) return 0;
   }

@@ -45,6 +45,8 @@ MEASUREMENT_TOPIC="gearcoupling/live/measurement"
 RESIDUAL_TOPIC="gearcoupling/live/residual"
 HEALTH_TOPIC="gearcoupling/live/health"
 MODEL_TOPIC="gearcoupling/live/model"
+PROPOSAL_TOPIC="gearcoupling/live/proposal"
+MONITOR_STATUS_TOPIC="gearcoupling/live/monitor"
 SUBJECT_BASE="C=NL,O=gearcoupling"
 
 # ---- arguments --------------------------------------------------------------------------------
@@ -217,10 +219,19 @@ client_rules() {
   criteria subscribe "$STATUS_TOPIC" "$STATUS_PARTITION"
 }
 
-# What a dashboard shows of the live test cells: the monitor's health and residuals (issue 12).
+# What the monitor says beside the health: its proposals and its own status with the audit trail
+# of swaps (issue 25). Read by dashboards, consoles and operators; published by the monitor alone.
+learning_view_rules() {
+  criteria subscribe "$PROPOSAL_TOPIC" "$LIVE_PARTITION"
+  criteria subscribe "$MONITOR_STATUS_TOPIC" "$LIVE_PARTITION"
+}
+
+# What a dashboard shows of the live test cells: the monitor's health and residuals (issue 12),
+# its proposals and audit trail (issue 25).
 live_view_rules() {
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
   criteria subscribe "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
+  learning_view_rules
 }
 
 # The dashboard reads: the status and the live view.
@@ -243,6 +254,8 @@ monitor_rules() {
   criteria subscribe "$MODEL_TOPIC" "$LIVE_PARTITION" "${CELL_PARTITION_PREFIX}*"
   criteria publish "$HEALTH_TOPIC" "$LIVE_PARTITION"
   criteria publish "$RESIDUAL_TOPIC" "$LIVE_PARTITION"
+  criteria publish "$PROPOSAL_TOPIC" "$LIVE_PARTITION"
+  criteria publish "$MONITOR_STATUS_TOPIC" "$LIVE_PARTITION"
 }
 
 # The measurement side of test cell $1: gearcoupling replay (a DAQ) publishes in the cell's own
@@ -254,13 +267,15 @@ cell_rules() {
 }
 
 # The operator of test cells $1 (comma-separated): gearcoupling swap-model publishes a model in
-# those cells' partitions only, and reads the health to see it taken.
+# those cells' partitions only (a proposal's too: applying one is a swap), and reads the health to
+# see it taken and the proposals and audit trail.
 operator_rules() {
   local cells partitions=() cell
   IFS=, read -ra cells <<<"$1"
   for cell in "${cells[@]}"; do partitions+=("$CELL_PARTITION_PREFIX$cell"); done
   criteria publish "$MODEL_TOPIC" "${partitions[@]}"
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
+  learning_view_rules
 }
 
 # The top 32 bits of every client_id of identity ID: from a hash of its name, so reruns agree.

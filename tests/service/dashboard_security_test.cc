@@ -119,6 +119,27 @@ TEST_F(SecureDashboard, UnderADashboardIdentityWithAClientsPrefixThePanelStillSa
   EXPECT_NE(answer.body.find(kWhy), std::string::npos) << answer.body;
 }
 
+// Issue 25: applying a monitor's proposal is a model swap, an operator's right. A dashboard
+// identity asked to (--operator-cells) does not start, saying why; without the flag it is
+// read-only and its apply endpoint answers 403.
+TEST_F(SecureDashboard, UnderADashboardIdentityApplyingProposalsIsRefused) {
+  const test::ShellResult refused = test::run_shell(
+      "CYCLONEDDS_URI='" + cell_->uri("dashboard-main") + "' " GC_DASHBOARD_BINARY " --domain " +
+      std::to_string(test::test_domain()) + " --listen 127.0.0.1:0 --operator-cells c");
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("--operator-cells c: this dashboard's DDS identity may not publish "
+                                "model swaps"), std::string::npos) << refused.output;
+  const int port = start_dashboard("dashboard-main", {});
+  ASSERT_GT(port, 0);
+  httplib::Client http("127.0.0.1", port);
+  const auto answer = http.Post("/api/apply", httplib::Headers{{"X-Gearcoupling-Apply", "1"}},
+                                "test_cell=c&proposal=0123456789abcdef",
+                                "application/x-www-form-urlencoded");
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(answer->status, 403) << answer->body;
+  EXPECT_NE(answer->body.find("read-only"), std::string::npos) << answer->body;
+}
+
 TEST_F(SecureDashboard, ABadClientIdPrefixIsRefusedNamingTheFlag) {
   const test::ShellResult refused = test::run_shell(
       GC_DASHBOARD_BINARY " --client-id-prefix 12345 --listen 127.0.0.1:0");

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "clients/status/cell_board.h"
+#include "clients/status/monitor_board.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "live/measurement_publisher.h"
@@ -77,10 +78,12 @@ class LiveRoles : public test::SecureCellTest {
   void SetUp() override {
     make_cell("--monitor m --cell c --cell d --operator o --cells c");
   }
-  std::unique_ptr<test::ChildProcess> start_monitor() const {
+  std::unique_ptr<test::ChildProcess> start_monitor(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> args{GC_MONITOR_BINARY, "--domain", std::to_string(test::test_domain()),
+                                  "--health-period-s", "0.2", "--log-level", "warn"};
+    args.insert(args.end(), extra.begin(), extra.end());
     return std::make_unique<test::ChildProcess>(
-        std::vector<std::string>{GC_MONITOR_BINARY, "--domain", std::to_string(test::test_domain()),
-                                 "--health-period-s", "0.2", "--log-level", "warn"},
+        args,
         cell_->dir() + "/monitor.log",
         std::vector<std::pair<std::string, std::string>>{{"CYCLONEDDS_URI", cell_->uri("monitor-m")}});
   }
@@ -119,6 +122,46 @@ TEST_F(LiveRoles, TheMonitorsHealthOfAReplayedCellReachesTheDashboardAndTheOpera
                             [](const status::HealthView& h) { return h.previous_model_name.has_value(); },
                             30s)
                   .has_value());
+}
+
+// Issue 25: the monitor's proposal reaches the operator and a dashboard alike; only the operator
+// may apply it (a swap of its text), and the monitor then marks it applied.
+TEST_F(LiveRoles, OnlyTheOperatorMayApplyTheMonitorsProposal) {
+  const auto monitor = start_monitor({"--diagnose-after-s", "1", "--diagnosis-nice", "0",
+                                      "--stale-s", "60", "--dispose-s", "120"});
+  const test::LocalDomain cell_domain(kCellDomain, cell_->uri("cell-c"));
+  const Entity cell = cell_domain.participant();
+  live::ReplayOptions replay;
+  replay.test_cell = "c";
+  replay.speed = 50.0;
+  replay.wait_s = 30.0;
+  ASSERT_EQ(live::replay_recording(cell.get(), kRecording, replay).published, kRecordingSamples);
+
+  const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
+  const Entity op = operator_domain.participant();
+  status::MonitorBoard operator_view(op.get());
+  const auto proposal = operator_view.wait_for(
+      "c", [](const status::v1::ProposalRecord& p) { return p.state() == "standing"; }, 60s);
+  ASSERT_TRUE(proposal.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_EQ(proposal->effects(), "eccentricity");
+
+  // A dashboard identity reads it, and may not write the swap that would apply it.
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  status::MonitorBoard dashboard_view(dashboard.get());
+  EXPECT_TRUE(dashboard_view
+                  .wait_for("c", [&](const auto& p) { return p.proposal_id() == proposal->proposal_id(); }, 30s)
+                  .has_value());
+  EXPECT_THROW(live::ModelSwapPublisher(dashboard.get(), {"c"}), protocol::DdsError);
+
+  live::ModelSwapPublisher swaps(op.get(), {"c"}, "by=operator-o;source=proposal " + proposal->proposal_id());
+  ASSERT_TRUE(swaps.wait_for_readers(1, 30s));
+  swaps.publish("c", proposal->model_text());
+  const auto applied = operator_view.wait_for(
+      "c", [](const status::v1::ProposalRecord& p) { return p.state() == "applied"; }, 30s);
+  ASSERT_TRUE(applied.has_value());
+  EXPECT_EQ(applied->state(), "applied") << applied->state_reason();
+  EXPECT_NE(applied->state_reason().find("operator-o"), std::string::npos) << applied->state_reason();
 }
 
 struct Permission {
@@ -172,6 +215,18 @@ TEST_F(LiveRoles, EachRoleMayPublishAndReadOnlyWhatItNeeds) {
       {"operator-o", kOperatorDomain, "health", live::make_health_topic, false, true},
       {"operator-o", kOperatorDomain, "health", live::make_health_topic, true, false},
       {"operator-o", kOperatorDomain, "measurement", live::make_measurement_topic, true, false},
+      // Issue 25: the proposals and the monitor's status are the monitor's to publish; dashboards
+      // and operators read them.
+      {"monitor-m", kMonitorDomain, "proposal", live::make_proposal_topic, true, true},
+      {"monitor-m", kMonitorDomain, "monitor", live::make_monitor_status_topic, true, true},
+      {"dashboard-main", kDashboardDomain, "proposal", live::make_proposal_topic, false, true},
+      {"dashboard-main", kDashboardDomain, "monitor", live::make_monitor_status_topic, false, true},
+      {"dashboard-main", kDashboardDomain, "proposal", live::make_proposal_topic, true, false},
+      {"operator-o", kOperatorDomain, "proposal", live::make_proposal_topic, false, true},
+      {"operator-o", kOperatorDomain, "monitor", live::make_monitor_status_topic, false, true},
+      {"operator-o", kOperatorDomain, "proposal", live::make_proposal_topic, true, false},
+      {"cell-c", kCellDomain, "proposal", live::make_proposal_topic, true, false},
+      {"cell-c", kCellDomain, "monitor", live::make_monitor_status_topic, true, false},
       // A client of the service has no live rights.
       {"client-a", 227, "measurement", live::make_measurement_topic, true, false},
       {"client-a", 227, "health", live::make_health_topic, false, false},

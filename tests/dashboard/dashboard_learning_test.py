@@ -1,0 +1,170 @@
+"""The learning loop in a real browser (issue 25): headless Chromium driven by Selenium against a
+real gearcoupling-monitor running the library's model, `gearcoupling replay` of a hidden-effect
+recording and two dashboards on a private loopback domain: one started with --operator-cells
+(may apply), one read-only. Within 30 s the cell card shows a proposal naming the hidden effect;
+"apply" puts it in force; within one health window of new samples both channels are at the noise
+level and the audit trail shows the swap. The read-only dashboard refuses to apply (403).
+
+Run by ctest (tests/dashboard/CMakeLists.txt); skipped, saying so, without Chromium,
+chromedriver or Selenium (deploy/install-deps.sh installs them).
+"""
+import json
+import os
+import shutil
+import subprocess
+import time
+import urllib.error
+import urllib.request
+
+import pytest
+
+CHROMIUM = shutil.which(os.environ.get("GC_CHROMIUM", "chromium"))
+CHROMEDRIVER = shutil.which(os.environ.get("GC_CHROMEDRIVER", "chromedriver"))
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+except ImportError:  # pragma: no cover - reported as a skip below
+    webdriver = None
+
+if webdriver is None or CHROMIUM is None or CHROMEDRIVER is None:
+    pytest.skip("chromium, chromedriver or python3-selenium is absent: the dashboard's browser "
+                "test needs Debian's chromium, chromium-driver and python3-selenium "
+                "(deploy/install-deps.sh)", allow_module_level=True)
+
+SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
+DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
+MONITOR = os.environ["GC_MONITOR_BINARY"]
+CLI = os.environ["GC_GEARCOUPLING_BINARY"]
+OUTPUT_DIR = os.environ.get("GC_TEST_OUTPUT_DIR", ".")
+DOMAIN = 1 + (os.getpid() + 97) % 200
+ENVIRONMENT = dict(os.environ,
+                   CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
+TEST_CELL = "dyno-learning"
+RECORDING = os.path.join(SOURCE_DIR, "data/recordings/hidden_eccentricity_torque_ramp.csv")
+
+
+def start(children, args, **kwargs):
+    child = subprocess.Popen(args, env=ENVIRONMENT, **kwargs)
+    children.append(child)
+    return child
+
+
+def start_dashboard(children, *extra):
+    child = start(children, [DASHBOARD, "--domain", str(DOMAIN), "--listen", "127.0.0.1:0", *extra],
+                  stdout=subprocess.PIPE, text=True)
+    line = child.stdout.readline()
+    assert line.startswith("listening on http://"), f"dashboard printed {line!r}"
+    return line.split("listening on ", 1)[1].strip()
+
+
+def replay():
+    subprocess.run([CLI, "replay", "--in", RECORDING, "--test-cell", TEST_CELL, "--speed", "20",
+                    "--wait-s", "20", "--domain", str(DOMAIN)], env=ENVIRONMENT, check=True,
+                   stdout=subprocess.DEVNULL)
+
+
+def post_apply(url, proposal, header=True):
+    """POST /api/apply as the page does; (status, JSON answer)."""
+    data = f"test_cell={TEST_CELL}&proposal={proposal}".encode()
+    request = urllib.request.Request(url + "api/apply", data=data, method="POST",
+                                     headers={"X-Gearcoupling-Apply": "1"} if header else {})
+    try:
+        with urllib.request.urlopen(request, timeout=10) as response:
+            return response.status, json.loads(response.read())
+    except urllib.error.HTTPError as error:
+        return error.code, json.loads(error.read())
+
+
+def state(url):
+    with urllib.request.urlopen(url + "api/state", timeout=10) as response:
+        return json.loads(response.read())
+
+
+def proposal_box(driver):
+    return driver.execute_script(
+        "const e = document.querySelector(arguments[0]); return e ? Object.assign({}, e.dataset) : {};",
+        f"#cell-{TEST_CELL} .cell-proposal")
+
+
+@pytest.fixture(scope="module")
+def loop():
+    children = []
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,2400"):
+        options.add_argument(argument)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    driver = None
+    try:
+        start(children, [MONITOR, "--domain", str(DOMAIN), "--model", "paper", "--window-s", "20",
+                         "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
+                         "--diagnose-after-s", "1", "--diagnosis-nice", "0"], stderr=subprocess.DEVNULL)
+        operator_url = start_dashboard(children, "--operator-cells", TEST_CELL)
+        read_only_url = start_dashboard(children)
+        driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+        driver.get(operator_url)
+        yield {"driver": driver, "url": operator_url, "read_only_url": read_only_url}
+    finally:
+        if driver is not None:
+            driver.quit()
+        for child in children:
+            child.terminate()
+        for child in children:
+            try:
+                child.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                child.kill()
+                child.wait()
+
+
+def test_a_proposal_naming_the_hidden_effect_appears_on_the_card_within_30_s(loop):
+    replay()
+    replayed = time.monotonic()
+    WebDriverWait(loop["driver"], 30.0, poll_frequency=0.1).until(
+        lambda d: proposal_box(d).get("state") == "standing")
+    assert time.monotonic() - replayed <= 30.0
+    shown = proposal_box(loop["driver"])
+    assert shown["effects"] == "eccentricity"
+    text = loop["driver"].find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .cell-proposal").text
+    assert "add eccentricity" in text and "expected error" in text and "why:" in text
+    loop["proposal"] = shown["proposal"]
+
+
+def test_only_the_operator_dashboard_may_apply(loop):
+    status, answer = post_apply(loop["read_only_url"], loop["proposal"])
+    assert status == 403 and "read-only" in answer["error"], answer
+    status, answer = post_apply(loop["url"], loop["proposal"], header=False)
+    assert status == 403, answer
+    status, answer = post_apply(loop["url"], "0123456789abcdef")
+    assert status == 404, answer
+    # The read-only page shows the proposal without an apply button.
+    assert loop["proposal"] in [p["proposal_id"] for p in state(loop["read_only_url"])["proposals"]]
+
+
+def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
+    driver = loop["driver"]
+    driver.find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .cell-proposal button.apply").click()
+    WebDriverWait(driver, 10.0, poll_frequency=0.1).until(
+        lambda d: d.find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .apply-note").get_attribute("data-status") == "200")
+    WebDriverWait(driver, 10.0, poll_frequency=0.1).until(
+        lambda d: proposal_box(d).get("state") == "applied")
+    replay()  # the test cell runs on: one window of samples under the new model
+
+    def at_noise(d):
+        cells = [c for c in state(loop["url"]).get("test_cells", []) if c["test_cell"] == TEST_CELL]
+        if not cells or cells[0]["model"]["model_name"] != "paper_diagnosed":
+            return False
+        model = cells[0]["model"]
+        return int(model.get("evaluated", 0)) >= 1000 and model["msy"].get("at_noise_level") and \
+            model["msz"].get("at_noise_level")
+    WebDriverWait(driver, 20.0, poll_frequency=0.2).until(at_noise)
+    WebDriverWait(driver, 10.0, poll_frequency=0.2).until(
+        lambda d: loop["proposal"] in d.find_element(By.ID, "swaps").text)
+    audit = driver.find_element(By.ID, "swaps").text
+    assert "paper_diagnosed" in audit and "dashboard@" in audit, audit
+    os.makedirs(OUTPUT_DIR, exist_ok=True)
+    assert driver.save_screenshot(os.path.join(OUTPUT_DIR, "dashboard_learning.png"))
+    errors = [entry for entry in driver.get_log("browser") if entry["level"] == "SEVERE"]
+    assert errors == [], errors
