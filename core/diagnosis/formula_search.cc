@@ -215,9 +215,9 @@ Eigen::VectorXd block_means(const Eigen::VectorXd& stacked_column, int blocks) {
   return out;
 }
 
-/// A term that varies as slowly as a drift (t, a step, the oil temperature; not a cycle) must
-/// stand out of the slow wander the formula leaves beside it: the spread of its contribution's
-/// means over twenty blocks in time at least twice that of the residual's. Within one recording a
+/// A term on one channel that varies as slowly as a drift (t, a step, the oil temperature; not a
+/// cycle) must stand out of the slow wander the formula leaves beside it: the spread of its
+/// contribution's means over twenty blocks in time at least twice that of the residual's. Within one recording a
 /// slow term and a bridge's zero drift that happens to follow it are the same thing; only its size
 /// against the wander tells a temperature effect from a share of the drift (a 14 N·m/deg C term
 /// took 0.3 kN·m of a 0.6 kN·m drift, and cost the next run 2-4 points). A real step or
@@ -233,7 +233,10 @@ void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Ma
   const double wander = spread(block_means(y - z * c, kBlocks));
   for (std::size_t j = 0; j < support.size(); ++j) {
     const ExpressionTerm* term = find_expression_term(names[j]);
-    if (!support[j] || !drifts_slowly(names[j]) || (term && term->period_s > 0.0)) continue;
+    // A zero drift is a moment on one channel: terms in a direction that turns with the
+    // misalignment or the model's moment cannot follow it.
+    const bool on_one_channel = names[j].ends_with("_on_y") || names[j].ends_with("_on_z");
+    if (!support[j] || !drifts_slowly(names[j]) || !on_one_channel || (term && term->period_s > 0.0)) continue;
     const Eigen::VectorXd contribution = z.col(static_cast<Eigen::Index>(j)) * c(static_cast<Eigen::Index>(j));
     if (spread(block_means(contribution, kBlocks)) < kLeastRatio * wander) support[j] = false;
   }
