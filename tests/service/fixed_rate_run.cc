@@ -16,12 +16,14 @@
 #include "codec/coupling_catalog.h"
 #include "core/induced_moments.h"
 #include "protocol/matching.h"
+#include "bench/percentile.h"
 #include "tests/service/identical.h"
 
 namespace gc::test {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using bench::percentile;
 using protocol::Calculation;
 
 /// When the test marked a partition / a heal (CLOCK_MONOTONIC, the steady clock's, in ns); 0: not yet.
@@ -64,14 +66,6 @@ Kind classify(const client::Outcome<InducedMoments>& outcome, double expected_ma
   } catch (...) {
     return kFailed;
   }
-}
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return -1.0;
-  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size())));
-  const std::size_t k = std::clamp<std::size_t>(rank, 1, values.size()) - 1;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
 }
 
 /// Served answers per instance id, from the instances' status.

@@ -34,6 +34,13 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
+/// Host i's port on the switch, p<i>.
+std::string port_name(int i) {
+  std::string port = "p";
+  port += std::to_string(i);  // not "p" + ...: GCC 12 warns (-Wrestrict) on it, wrongly
+  return port;
+}
+
 std::string format_faults(const LinkFaults& f) {
   std::ostringstream text;
   text << "loss " << f.loss << ", delay " << f.delay_s << " s +- " << f.jitter_s << " s, duplicate " << f.duplicate
@@ -132,7 +139,7 @@ bool TestNetwork::add_host(int i) {
 }
 
 bool TestNetwork::add_veth(int i) {
-  const std::string port = "p" + std::to_string(i);
+  const std::string port = port_name(i);
   return in_switch({"link", "add", port, "type", "veth", "peer", "name", "eth0", "netns", host(i)}) &&
          in_switch({"link", "set", port, "master", "br0"}) && in_switch({"link", "set", port, "up"}) &&
          in_host(i, {"addr", "add", address(i) + "/24", "dev", "eth0"}) && in_host(i, {"link", "set", "eth0", "up"}) &&
@@ -145,7 +152,7 @@ std::string TestNetwork::link_log(int i) const {
 }
 
 bool TestNetwork::add_faulty_link(int i, const LinkFaults& faults) {
-  const std::string port = "p" + std::to_string(i);
+  const std::string port = port_name(i);
   const bool taps = in_switch({"tuntap", "add", "dev", port, "mode", "tap"}) &&
                     in_switch({"link", "set", port, "master", "br0"}) && in_switch({"link", "set", port, "up"}) &&
                     in_host(i, {"tuntap", "add", "dev", "eth0", "mode", "tap"}) &&
