@@ -29,5 +29,8 @@ echo "# soak: $duration s on domain $domain, $(nproc) cores, load before: $(cut 
 timeout $((duration + 120)) "$build/service/gearcoupling-service" --domain "$domain" --log-level warn &
 service=$!
 sleep 1
-timeout $((duration + 60)) "$build/bench/gc_bench_soak" --domain "$domain" --service-pid "$service" \
+# The service is timeout's child: its own pid is the one to watch.
+service_pid=$(cat "/proc/$service/task/$service/children" | tr -d ' ')
+case "$service_pid" in '' | *[!0-9]*) echo "soak: no single gearcoupling-service under timeout ($service_pid)" >&2; exit 1 ;; esac
+timeout $((duration + 60)) "$build/bench/gc_bench_soak" --domain "$domain" --service-pid "$service_pid" \
   --clients "${SOAK_CLIENTS:-8}" --rate-hz "${SOAK_RATE_HZ:-100}" --seconds "$duration" --interval-s "$interval"
