@@ -106,7 +106,7 @@ bool TestNetwork::build_switch() {
   }
   const unsigned long long caps = effective_capabilities();
   if ((caps >> kCapNetAdmin & 1) == 0 || (caps >> kCapSysAdmin & 1) == 0) {
-    why_not_ = "root without CAP_NET_ADMIN and CAP_SYS_ADMIN (a container's bounding set?): no network namespaces";
+    why_not_ = "root without CAP_NET_ADMIN or CAP_SYS_ADMIN (a container's bounding set?): no network namespaces";
     return false;
   }
   if (run_quietly({"ip", "netns", "add", switch_name()}) != 0) {
