@@ -17,7 +17,9 @@
 // - resident memory grows by at most kRssGrowthLimit over the reference, at every later row;
 // - open file descriptors and threads are the reference's at every later row;
 // - the median p99 of the later half of the rows is at most max(2 x, + 1 ms) that of the
-//   earlier half (a slow leak or a growing queue shows there; one busy minute does not).
+//   earlier half (a slow leak or a growing queue shows there; one busy minute does not). Judged
+//   from kP99MinRows rows on: over fewer (the 60 s run's five), one busy interval of this
+//   shared machine moves a half's median by more than that.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -43,6 +45,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kRssGrowthLimit = 0.10;
 constexpr double kP99Ratio = 2.0;
 constexpr double kP99SlackUs = 1000.0;
+constexpr std::size_t kP99MinRows = 10;
 
 struct Options {
   int domain = 0;
@@ -233,13 +236,14 @@ bool flat(const std::vector<Row>& rows, int warmup) {
   const double p99_limit = std::max(kP99Ratio * p99_early, p99_early + kP99SlackUs);
   const bool rss_ok = growth <= kRssGrowthLimit;
   const bool fds_ok = fds_min == fds_max, threads_ok = threads_min == threads_max;
-  const bool p99_ok = p99_late <= p99_limit;
+  const bool p99_judged = judged >= kP99MinRows;
+  const bool p99_ok = !p99_judged || p99_late <= p99_limit;
   std::printf("flat: RSS %.1f MiB at the reference, at most %+.1f %% later (limit +%.0f %%): %s\n", ref.rss_mib,
               100.0 * growth, 100.0 * kRssGrowthLimit, rss_ok ? "yes" : "NO");
   std::printf("flat: file descriptors %ld..%ld (constant): %s\n", fds_min, fds_max, fds_ok ? "yes" : "NO");
   std::printf("flat: threads %ld..%ld (constant): %s\n", threads_min, threads_max, threads_ok ? "yes" : "NO");
   std::printf("flat: p99 median %.0f us in the earlier half, %.0f us in the later (limit %.0f us): %s\n", p99_early,
-              p99_late, p99_limit, p99_ok ? "yes" : "NO");
+              p99_late, p99_limit, !p99_judged ? "not judged, fewer than 10 rows" : p99_ok ? "yes" : "NO");
   return rss_ok && fds_ok && threads_ok && p99_ok;
 }
 
