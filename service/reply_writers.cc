@@ -1,5 +1,6 @@
 #include "service/reply_writers.h"
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 
@@ -15,8 +16,8 @@ using protocol::Entity;
 
 namespace {
 
-/// departed_ entries with a finite hold are pruned once there are this many: a flood of made-up
-/// client ids must not grow the map without bound.
+/// departed_ and held_ entries whose time is up are swept once there are this many: neither a
+/// flood of made-up client ids nor clients that come and go may grow them without bound.
 constexpr std::size_t kDepartedPruneSize = 4096;
 
 ReplyWriters::Clock::time_point after(double s) {
@@ -35,12 +36,15 @@ ParticipantKey participant_key_of(const dds_guid_t& guid) {
 
 ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
                            std::string instance_tag, std::size_t max_parked,
-                           std::function<void()> on_first_parked)
+                           std::function<void()> on_first_parked, double departed_memory_s)
     : participant_(participant),
       reply_topics_(reply_topics),
       instance_tag_(std::move(instance_tag)),
       max_parked_(max_parked),
-      on_first_parked_(std::move(on_first_parked)) {}
+      on_first_parked_(std::move(on_first_parked)),
+      departed_memory_(std::chrono::duration_cast<Clock::duration>(
+          std::chrono::duration<double>(departed_memory_s))),
+      prune_at_(kDepartedPruneSize) {}
 
 void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation,
                                    const ParticipantKey& owner) {
@@ -93,8 +97,17 @@ void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation,
   writers_.erase(found);
   const auto next = writers_.lower_bound({client_id, 0});
   if (next == writers_.end() || next->first.first != client_id) {
-    departed_[client_id] = Clock::time_point::max();  // ids are never reused
+    const Clock::time_point now = Clock::now();
+    departed_[client_id] = now + departed_memory_;
+    prune_locked(now);
   }
+}
+
+void ReplyWriters::prune_locked(Clock::time_point now) {
+  if (departed_.size() < prune_at_ && held_.size() < prune_at_) return;
+  std::erase_if(departed_, [now](const auto& entry) { return entry.second <= now; });
+  std::erase_if(held_, [now](const auto& entry) { return entry.second <= now; });
+  prune_at_ = std::max(kDepartedPruneSize, 2 * std::max(departed_.size(), held_.size()));
 }
 
 void ReplyWriters::mark_departed(std::uint64_t client_id, double hold_s) {
@@ -105,6 +118,7 @@ void ReplyWriters::mark_departed(std::uint64_t client_id, double hold_s) {
 void ReplyWriters::mark_departed_locked(std::uint64_t client_id, Clock::time_point until) {
   auto& held = departed_[client_id];
   held = std::max(held, until);
+  prune_locked(Clock::now());
 }
 
 bool ReplyWriters::departed_locked(std::uint64_t client_id, Clock::time_point now) {
@@ -187,14 +201,7 @@ std::vector<ReplyWriters::Job> ReplyWriters::release(Clock::time_point now, doub
     }
     it = queue.empty() ? parked_.erase(it) : std::next(it);
   }
-  if (departed_.size() >= kDepartedPruneSize) {
-    std::erase_if(departed_, [now](const auto& entry) {
-      return entry.second != Clock::time_point::max() && entry.second <= now;
-    });
-  }
-  if (held_.size() >= kDepartedPruneSize) {
-    std::erase_if(held_, [now](const auto& entry) { return entry.second <= now; });
-  }
+  prune_locked(now);
   return ready;
 }
 
@@ -212,6 +219,11 @@ dds_entity_t ReplyWriters::writer(std::uint64_t client_id, Calculation calculati
   std::lock_guard lock(mutex_);
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
   return found == writers_.end() ? 0 : found->second.writer.get();
+}
+
+std::size_t ReplyWriters::remembered_departures() const {
+  std::lock_guard lock(mutex_);
+  return departed_.size() + held_.size();
 }
 
 std::size_t ReplyWriters::clients() const {

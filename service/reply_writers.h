@@ -67,9 +67,12 @@ class ReplyWriters {
   /// `max_parked` requests wait for their client's reader at once. `on_first_parked` is called
   /// (under no lock of this class) when a request is parked while none was: the dispatch loop
   /// then polls release() until none is left.
+  /// A client whose readers all went is remembered (its late requests dropped at once) for
+  /// `departed_memory_s`, then forgotten: clients that come and go (every CLI call is one) must
+  /// not grow the service without bound.
   ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
                std::string instance_tag, std::size_t max_parked,
-               std::function<void()> on_first_parked);
+               std::function<void()> on_first_parked, double departed_memory_s = 60.0);
 
   /// A reader of `calculation`'s replies, of participant `owner`, appeared in `client_id`'s
   /// partition: make its writer.
@@ -109,6 +112,8 @@ class ReplyWriters {
 
   /// Clients with at least one writer.
   std::size_t clients() const;
+  /// Client ids remembered as departed or held (bounded: forgotten when their time is up).
+  std::size_t remembered_departures() const;
 
  private:
   struct Writer {
@@ -129,19 +134,24 @@ class ReplyWriters {
   bool departed_locked(std::uint64_t client_id, Clock::time_point now);
   bool held_locked(std::uint64_t client_id, const ParticipantKey& requester, Clock::time_point now);
   void mark_departed_locked(std::uint64_t client_id, Clock::time_point until);
+  /// Forgets the departed and held entries whose time is up, once they are many (amortised:
+  /// the next sweep waits until their number has doubled).
+  void prune_locked(Clock::time_point now);
 
   dds_entity_t participant_;
   std::array<dds_entity_t, 5> reply_topics_;
   std::string instance_tag_;
   std::size_t max_parked_;
   std::function<void()> on_first_parked_;
+  Clock::duration departed_memory_;
+  std::size_t prune_at_;  ///< departed_ or held_ entries at which prune_locked() sweeps
   mutable std::mutex mutex_;
   std::map<Key, Writer> writers_;
   std::map<Key, std::deque<Parked>> parked_;
   std::size_t parked_count_ = 0;
   AdmissionDrops drops_;
-  /// Clients whose readers all went (forever) or who stopped acknowledging (until then): only
-  /// the client's own readers can cause either.
+  /// Clients whose readers all went or who stopped acknowledging, until when: only the client's
+  /// own readers can cause either.
   std::map<std::uint64_t, Clock::time_point> departed_;
   /// (client, requesting participant) whose parked request expired unmatched (until then).
   std::map<std::pair<std::uint64_t, ParticipantKey>, Clock::time_point> held_;

@@ -399,6 +399,10 @@ void ClientCore::take_status() {
         infos[i] = instance_info_from_wire(samples[i]);
       }
     }
+    // Instances gone, deleted (their DDS writers with them) only once mutex_ is released:
+    // dds_delete waits for Cyclone's receive thread, which may be waiting for mutex_ in
+    // take_replies (a deadlock seen when an instance's host was cut off, network_faults_test).
+    std::vector<std::unique_ptr<Instance>> gone;
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const dds_sample_info_t& info = samples.info(i);
@@ -407,7 +411,7 @@ void ClientCore::take_status() {
         if (handle == status_handles_.end()) continue;
         const std::uint64_t id = handle->second;
         status_handles_.erase(handle);
-        instances_.erase(id);  // deletes its writers
+        if (auto node = instances_.extract(id)) gone.push_back(std::move(node.mapped()));
         const Clock::time_point resend_at =
             Clock::now() + (info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED
                                 ? kDisposedResendDelay
