@@ -217,11 +217,11 @@ Eigen::VectorXd block_means(const Eigen::VectorXd& stacked_column, int blocks) {
 
 /// A term on one channel that varies as slowly as a drift (t, a step, the oil temperature; not a
 /// cycle) must stand out of the slow wander the formula leaves beside it: the spread of its
-/// contribution's means over twenty blocks in time at least twice that of the residual's. Within one recording a
-/// slow term and a bridge's zero drift that happens to follow it are the same thing; only its size
-/// against the wander tells a temperature effect from a share of the drift (a 14 N·m/deg C term
-/// took 0.3 kN·m of a 0.6 kN·m drift, and cost the next run 2-4 points). A real step or
-/// temperature effect of a size that matters stands well out of it.
+/// contribution's means over twenty blocks in time at least twice that of the residual's. Within
+/// one recording a slow term and a bridge's zero drift that happens to follow it are the same
+/// thing; only its size against the wander tells a temperature effect from a share of the drift (a
+/// 14 N·m/deg C term took 0.3 kN·m of a 0.6 kN·m drift, and cost the next run 2 points). A real
+/// step or temperature effect of a size that matters stands well out of it.
 void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
                                        const std::vector<std::string>& names, std::vector<bool>& support) {
   constexpr int kBlocks = 20;
