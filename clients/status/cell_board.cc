@@ -17,12 +17,11 @@ namespace gc::status {
 using protocol::check_dds;
 using protocol::Entity;
 
-namespace {
-
-/// A string of a sample, cut at kMaxTextBytes: the IDL does not bound them.
-std::string text(const char* value) {
-  return value != nullptr ? std::string(value, strnlen(value, kMaxTextBytes)) : "";
+std::string sample_text(const char* value, std::size_t max) {
+  return value != nullptr ? std::string(value, strnlen(value, max)) : "";
 }
+
+namespace {
 
 void copy_channel(const gearcoupling_ChannelHealth& in, v1::ChannelHealthRecord& out) {
   out.set_rmse_nm(in.rmse_nm);
@@ -33,7 +32,7 @@ void copy_channel(const gearcoupling_ChannelHealth& in, v1::ChannelHealthRecord&
 }
 
 void copy_period(const gearcoupling_ModelPeriod& in, v1::ModelPeriodRecord& out) {
-  out.set_model_name(text(in.model_name));
+  out.set_model_name(sample_text(in.model_name));
   out.set_since_unix_s(in.since_unix_s);
   out.set_in_force_s(in.in_force_s);
   out.set_evaluated(in.evaluated);
@@ -53,9 +52,9 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   } else {
     out.clear_previous_model();
   }
-  out.set_worst_region(text(in.worst_region));
-  out.set_last_refusal(text(in.last_refusal));
-  out.set_last_model_refusal(text(in.last_model_refusal));
+  out.set_worst_region(sample_text(in.worst_region));
+  out.set_last_refusal(sample_text(in.last_refusal));
+  out.set_last_model_refusal(sample_text(in.last_model_refusal));
   v1::SampleCountsRecord& counts = *out.mutable_counts();
   counts.set_taken(in.counts.taken);
   counts.set_evaluated(in.counts.evaluated);
@@ -146,7 +145,7 @@ void CellBoard::take_residuals() {
       entry.record.set_test_cell(batch.test_cell);
       entry.last_heard = now;
       Aggregate& aggregate = entry.aggregate;
-      aggregate.model_name = text(batch.model_name);
+      aggregate.model_name = sample_text(batch.model_name);
       aggregate.latest_published_ns = std::max(aggregate.latest_published_ns, batch.published_ns);
       for (uint32_t k = 0; k < batch.residuals._length; ++k) {
         const gearcoupling_Residual& r = batch.residuals._buffer[k];

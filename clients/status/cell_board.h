@@ -51,6 +51,9 @@ struct CellBoardOptions {
 /// longer ones are cut: the monitor writes sentences, not pages.
 inline constexpr std::size_t kMaxTextBytes = 1024;
 
+/// A string of a DDS sample, cut at `max` bytes (the IDL does not bound them); "" for null.
+std::string sample_text(const char* value, std::size_t max = kMaxTextBytes);
+
 class CellBoard {
  public:
   using Clock = std::chrono::steady_clock;

@@ -1,7 +1,5 @@
 #include "clients/status/monitor_board.h"
 
-#include <cstring>
-
 #include "clients/status/cell_board.h"
 #include "clients/status/listening_reader.h"
 #include "gearcoupling.h"
@@ -11,10 +9,6 @@
 
 namespace gc::status {
 namespace {
-
-std::string text(const char* value, std::size_t max = kMaxTextBytes) {
-  return value != nullptr ? std::string(value, strnlen(value, max)) : "";
-}
 
 const char* state_text(gearcoupling_ProposalState state) {
   switch (state) {
@@ -26,36 +20,36 @@ const char* state_text(gearcoupling_ProposalState state) {
 
 v1::ProposalRecord record_of(const gearcoupling_ModelProposal& in) {
   v1::ProposalRecord out;
-  out.set_test_cell(text(in.test_cell));
+  out.set_test_cell(sample_text(in.test_cell));
   out.set_proposal_id(protocol::hex_id(in.proposal_id));
   out.set_monitor_id(protocol::hex_id(in.monitor_id));
   out.set_state(state_text(in.state));
-  out.set_state_reason(text(in.state_reason));
-  out.set_kind(text(in.kind));
-  out.set_effects(text(in.effects));
-  out.set_outcome(text(in.outcome));
+  out.set_state_reason(sample_text(in.state_reason));
+  out.set_kind(sample_text(in.kind));
+  out.set_effects(sample_text(in.effects));
+  out.set_outcome(sample_text(in.outcome));
   for (std::uint32_t i = 0; i < in.parameters._length && i < 256; ++i) {
     const gearcoupling_ProposedParameter& p = in.parameters._buffer[i];
     v1::ProposedParameterRecord& r = *out.add_parameters();
-    r.set_effect(text(p.effect));
-    r.set_name(text(p.name));
-    r.set_unit(text(p.unit));
+    r.set_effect(sample_text(p.effect));
+    r.set_name(sample_text(p.name));
+    r.set_unit(sample_text(p.unit));
     r.set_value(p.value);
     r.set_standard_error(p.standard_error);
     r.set_held(p.held);
     r.set_plausible(p.plausible);
-    r.set_note(text(p.note));
+    r.set_note(sample_text(p.note));
   }
-  out.set_base_model(text(in.base_model));
-  out.set_model_name(text(in.model_name));
-  out.set_model_text(text(in.model_text, kMaxModelTextBytes));
+  out.set_base_model(sample_text(in.base_model));
+  out.set_model_name(sample_text(in.model_name));
+  out.set_model_text(sample_text(in.model_text, kMaxModelTextBytes));
   out.set_window_begin_s(in.window_begin_s);
   out.set_window_end_s(in.window_end_s);
   out.set_window_samples(in.window_samples);
   out.set_before_rmse_nm(in.before_rmse_nm);
   out.set_after_rmse_nm(in.after_rmse_nm);
   out.set_noise_nm(in.noise_nm);
-  out.set_verdict(text(in.verdict, 8 * kMaxTextBytes));
+  out.set_verdict(sample_text(in.verdict, 8 * kMaxTextBytes));
   out.set_proposed_unix_s(in.proposed_unix_s);
   out.set_onset_to_proposal_s(in.onset_to_proposal_s);
   out.set_diagnosis_cpu_s(in.diagnosis_cpu_s);
@@ -75,17 +69,17 @@ v1::MonitorRecord record_of(const gearcoupling_MonitorStatus& in) {
   out.set_diagnoses_run(in.diagnoses_run);
   out.set_diagnoses_dropped(in.diagnoses_dropped);
   out.set_swaps(in.swaps);
-  out.set_diagnosing(text(in.diagnosing));
+  out.set_diagnosing(sample_text(in.diagnosing));
   for (std::uint32_t i = 0; i < in.recent_swaps._length; ++i) {
     const gearcoupling_SwapRecord& s = in.recent_swaps._buffer[i];
     v1::SwapAuditRecord& r = *out.add_recent_swaps();
-    r.set_test_cell(text(s.test_cell));
+    r.set_test_cell(sample_text(s.test_cell));
     r.set_at_unix_s(s.at_unix_s);
-    r.set_by(text(s.by));
-    r.set_source(text(s.source));
+    r.set_by(sample_text(s.by));
+    r.set_source(sample_text(s.source));
     r.set_proposal_id(s.proposal_id != 0 ? protocol::hex_id(s.proposal_id) : "");
-    r.set_model_before(text(s.model_before));
-    r.set_model_after(text(s.model_after));
+    r.set_model_before(sample_text(s.model_before));
+    r.set_model_after(sample_text(s.model_after));
     r.set_before_msy_rmse_nm(s.before_msy_rmse_nm);
     r.set_before_msz_rmse_nm(s.before_msz_rmse_nm);
     r.set_after_msy_rmse_nm(s.after_msy_rmse_nm);
@@ -128,7 +122,7 @@ void MonitorBoard::take_proposals() {
   take_each_batch<gearcoupling_ModelProposal>(proposal_reader_.get(), [&](const auto& samples) {
     std::lock_guard lock(mutex_);
     for (std::size_t i = 0; i < samples.size(); ++i) {
-      const std::string cell = text(samples[i].test_cell);
+      const std::string cell = sample_text(samples[i].test_cell);
       keep<v1::ProposalRecord>(proposals_, cell, samples.info(i), [&] { return record_of(samples[i]); },
                                max_entries_);
     }

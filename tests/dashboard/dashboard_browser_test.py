@@ -16,21 +16,10 @@ import time
 
 import pytest
 
-# $GC_CHROMIUM / $GC_CHROMEDRIVER name other binaries (a path that does not exist: "absent").
-CHROMIUM = shutil.which(os.environ.get("GC_CHROMIUM", "chromium"))
-CHROMEDRIVER = shutil.which(os.environ.get("GC_CHROMEDRIVER", "chromedriver"))
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    from selenium.webdriver.common.by import By
-    from selenium.webdriver.support.ui import Select, WebDriverWait
-except ImportError:  # pragma: no cover - reported as a skip below
-    webdriver = None
+import headless_chromium
 
-if webdriver is None or CHROMIUM is None or CHROMEDRIVER is None:
-    pytest.skip("chromium, chromedriver or python3-selenium is absent: the dashboard's browser "
-                "test needs Debian's chromium, chromium-driver and python3-selenium "
-                "(deploy/install-deps.sh)", allow_module_level=True)
+headless_chromium.require()
+from headless_chromium import By, Select, WebDriverWait  # noqa: E402
 
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 SERVICE = os.environ["GC_SERVICE_BINARY"]
@@ -81,16 +70,11 @@ def start_dashboard(processes):
 @pytest.fixture(scope="module")
 def cell():
     processes = Processes()
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,2000"):
-        options.add_argument(argument)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = None
     try:
         first = processes.start([SERVICE, "--domain", str(DOMAIN)], stderr=subprocess.DEVNULL)
         url = start_dashboard(processes)
-        driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+        driver = headless_chromium.new_driver("1400,2000")
         yield {"processes": processes, "driver": driver, "url": url, "first": first}
     finally:
         if driver is not None:

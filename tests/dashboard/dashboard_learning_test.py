@@ -10,7 +10,6 @@ chromedriver or Selenium (deploy/install-deps.sh installs them).
 """
 import json
 import os
-import shutil
 import subprocess
 import time
 import urllib.error
@@ -18,20 +17,10 @@ import urllib.request
 
 import pytest
 
-CHROMIUM = shutil.which(os.environ.get("GC_CHROMIUM", "chromium"))
-CHROMEDRIVER = shutil.which(os.environ.get("GC_CHROMEDRIVER", "chromedriver"))
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    from selenium.webdriver.common.by import By
-    from selenium.webdriver.support.ui import WebDriverWait
-except ImportError:  # pragma: no cover - reported as a skip below
-    webdriver = None
+import headless_chromium
 
-if webdriver is None or CHROMIUM is None or CHROMEDRIVER is None:
-    pytest.skip("chromium, chromedriver or python3-selenium is absent: the dashboard's browser "
-                "test needs Debian's chromium, chromium-driver and python3-selenium "
-                "(deploy/install-deps.sh)", allow_module_level=True)
+headless_chromium.require()
+from headless_chromium import By, WebDriverWait, rerendered  # noqa: E402
 
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
@@ -91,11 +80,6 @@ def proposal_box(driver):
 @pytest.fixture(scope="module")
 def loop():
     children = []
-    options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
-    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,2400"):
-        options.add_argument(argument)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = None
     try:
         start(children, [MONITOR, "--domain", str(DOMAIN), "--model", "paper", "--window-s", "20",
@@ -103,7 +87,7 @@ def loop():
                          "--diagnose-after-s", "1", "--diagnosis-nice", "0"], stderr=subprocess.DEVNULL)
         operator_url = start_dashboard(children, "--operator-cells", TEST_CELL)
         read_only_url = start_dashboard(children)
-        driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+        driver = headless_chromium.new_driver("1400,2400")
         driver.get(operator_url)
         yield {"driver": driver, "url": operator_url, "read_only_url": read_only_url}
     finally:
@@ -122,7 +106,7 @@ def loop():
 def test_a_proposal_naming_the_hidden_effect_appears_on_the_card_within_30_s(loop):
     replay()
     replayed = time.monotonic()
-    WebDriverWait(loop["driver"], 30.0, poll_frequency=0.1).until(
+    WebDriverWait(loop["driver"], 30.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(
         lambda d: proposal_box(d).get("state") == "standing")
     assert time.monotonic() - replayed <= 30.0
     shown = proposal_box(loop["driver"])
@@ -146,9 +130,9 @@ def test_only_the_operator_dashboard_may_apply(loop):
 def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
     driver = loop["driver"]
     driver.find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .cell-proposal button.apply").click()
-    WebDriverWait(driver, 10.0, poll_frequency=0.1).until(
+    WebDriverWait(driver, 10.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(
         lambda d: d.find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .apply-note").get_attribute("data-status") == "200")
-    WebDriverWait(driver, 10.0, poll_frequency=0.1).until(
+    WebDriverWait(driver, 10.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(
         lambda d: proposal_box(d).get("state") == "applied")
     replay()  # the test cell runs on: one window of samples under the new model
 
@@ -159,8 +143,8 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
         model = cells[0]["model"]
         return int(model.get("evaluated", 0)) >= 1000 and model["msy"].get("at_noise_level") and \
             model["msz"].get("at_noise_level")
-    WebDriverWait(driver, 20.0, poll_frequency=0.2).until(at_noise)
-    WebDriverWait(driver, 10.0, poll_frequency=0.2).until(
+    WebDriverWait(driver, 20.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(at_noise)
+    WebDriverWait(driver, 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
         lambda d: loop["proposal"] in d.find_element(By.ID, "swaps").text)
     audit = driver.find_element(By.ID, "swaps").text
     assert "paper_diagnosed" in audit and "dashboard@" in audit, audit
