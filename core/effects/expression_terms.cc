@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <tuple>
 
 namespace gc {
 namespace {
@@ -122,6 +123,11 @@ constexpr int kFrameCount = static_cast<int>(std::size(kFrames));
 constexpr int kTimesMoment = kFrameCount - 2;  ///< this and the next scale with the model's moment
 // Terms past the scalar-times-frame products: the model's own moments, and the rotation phase.
 constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, kCosY = 5, kSinZ = 6, kCosZ = 7;
+// A moment vector turning at the order's angle, seen by the stationary bridges, both channels in
+// one term with the phase between them fixed: forward, with the shaft (y toward z), (cos, sin) and
+// its quadrature (-sin, cos); backward, against it, (cos, -sin) and (sin, cos). Order analysis's
+// full spectrum: forward and backward whirl together span the four one-channel terms.
+constexpr int kForwardCos = 8, kForwardSin = 9, kBackwardCos = 10, kBackwardSin = 11;
 // The time_cycle terms: scalar kCycle, frame the same four (sin/cos on y/z) as the revolution's;
 // the shaft orders: scalar kOrder, the same frames; the steps: scalar kStep, frame on_y or on_z.
 constexpr int kCycle = -2, kOrder = -3, kStep = -4;
@@ -157,12 +163,23 @@ void add_order_terms(std::vector<ExpressionTerm>& terms, int k, const std::strin
   const std::string order = k == 1 ? "revolution" : "order_" + std::to_string(k);
   const std::string angle = k == 1 ? "phi_rot" : std::to_string(k) + " phi_rot";
   const std::string grows = modulation == M::torque ? ", growing with torque" : "";
-  const std::pair<const char*, int> parts[] = {{"_sin_on_y", kSinY}, {"_cos_on_y", kCosY}, {"_sin_on_z", kSinZ}, {"_cos_on_z", kCosZ}};
-  for (const auto& [suffix, frame] : parts) {
-    const std::string channel = frame <= kCosY ? "M_sy'" : "M_sz'";
-    ExpressionTerm term{prefix + order + suffix,
-                        factor + (frame == kSinY || frame == kSinZ ? "sin" : "cos") + "(" + angle + ") on " + channel, unit,
-                        bound, mechanisms + grows, kOrder, frame};
+  const std::string c = "cos(" + angle + ")", s = "sin(" + angle + ")";
+  const std::tuple<const char*, int, std::string> parts[] = {
+      {"_sin_on_y", kSinY, s + " on M_sy'"},
+      {"_cos_on_y", kCosY, c + " on M_sy'"},
+      {"_sin_on_z", kSinZ, s + " on M_sz'"},
+      {"_cos_on_z", kCosZ, c + " on M_sz'"},
+      {"_forward_cos", kForwardCos, "(" + c + ", " + s + ")"},
+      {"_forward_sin", kForwardSin, "(-" + s + ", " + c + ")"},
+      {"_backward_cos", kBackwardCos, "(" + c + ", -" + s + ")"},
+      {"_backward_sin", kBackwardSin, "(" + s + ", " + c + ")"}};
+  for (const auto& [suffix, frame, formula] : parts) {
+    const std::string where =
+        frame >= kBackwardCos ? "; a moment vector turning against the shaft: a fixed load that the rotor's "
+                                "out-of-roundness modulates, or a phase counted against the turn"
+        : frame >= kForwardCos ? "; a moment vector turning with the shaft: a part of the rotor"
+                               : "; on one channel";
+    ExpressionTerm term{prefix + order + suffix, factor + formula, unit, bound, mechanisms + grows + where, kOrder, frame};
     term.order = k;
     term.modulation = modulation;
     terms.push_back(std::move(term));
@@ -191,10 +208,7 @@ std::vector<ExpressionTerm> make_terms() {
   terms.push_back({"model_z_on_z", "M_sz' (model) on M_sz'", "-", 1.0, gain, -1, kGainZZ});
   terms.push_back({"model_z_on_y", "M_sz' (model) on M_sy'", "-", 1.0, cross, -1, kCrossZY});
   terms.push_back({"model_y_on_z", "M_sy' (model) on M_sz'", "-", 1.0, cross, -1, kCrossYZ});
-  terms.push_back({"revolution_sin_on_y", "sin(phi_rot) on M_sy'", "N·m", 1e7, revolution, -1, kSinY});
-  terms.push_back({"revolution_cos_on_y", "cos(phi_rot) on M_sy'", "N·m", 1e7, revolution, -1, kCosY});
-  terms.push_back({"revolution_sin_on_z", "sin(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kSinZ});
-  terms.push_back({"revolution_cos_on_z", "cos(phi_rot) on M_sz'", "N·m", 1e7, revolution, -1, kCosZ});
+  add_order_terms(terms, 1, revolution, ExpressionTerm::Modulation::none);
   const char* order_mechanisms[] = {
       "",
       "",
@@ -216,9 +230,14 @@ std::vector<ExpressionTerm> make_terms() {
   return terms;
 }
 
-/// sin or cos of `angle` on one channel, as `frame` (kSinY .. kCosZ) says.
+/// sin or cos of `angle` on one channel (kSinY .. kCosZ), or the vector turning with it
+/// (kForwardCos .. kBackwardSin), as `frame` says.
 Eigen::Vector2d harmonic(int frame, double angle) {
   switch (frame) {
+    case kForwardCos: return Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    case kForwardSin: return Eigen::Vector2d(-std::sin(angle), std::cos(angle));
+    case kBackwardCos: return Eigen::Vector2d(std::cos(angle), -std::sin(angle));
+    case kBackwardSin: return Eigen::Vector2d(std::sin(angle), std::cos(angle));
     case kSinY: return Eigen::Vector2d(std::sin(angle), 0.0);
     case kCosY: return Eigen::Vector2d(std::cos(angle), 0.0);
     case kSinZ: return Eigen::Vector2d(0.0, std::sin(angle));
