@@ -250,7 +250,8 @@ TermDesign fast_terms(TermDesign design) {
     const std::string& name = design.terms[j];
     const ExpressionTerm* term = find_expression_term(name);
     const bool slow_cycle = term && term->period_s >= kSlowestFastCycleS;
-    if (slow_cycle || (drifts_slowly(name) && !(term && term->period_s > 0.0))) continue;
+    const bool level_on_one_channel = name == "constant_on_y" || name == "constant_on_z";
+    if (slow_cycle || level_on_one_channel || (drifts_slowly(name) && !(term && term->period_s > 0.0))) continue;
     out.terms.push_back(name);
     keep.push_back(static_cast<Eigen::Index>(j));
   }
@@ -378,13 +379,58 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
   return fit;
 }
 
+Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual) {
+  return residual.rowwise() - residual.colwise().mean();
+}
+
+/// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
+void remove_channel_levels(Eigen::MatrixXd& columns) {
+  const Eigen::Index n = columns.rows() / 2;
+  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
+    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
+    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
+  }
+}
+
+Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual) {
+  return residual.rowwise() - residual.colwise().mean();
+}
+
+/// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
+void remove_channel_levels(Eigen::MatrixXd& columns) {
+  const Eigen::Index n = columns.rows() / 2;
+  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
+    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
+    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
+  }
+}
+
+std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample> observations,
+                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                                 const std::vector<std::string>& terms, const Folds& folds) {
+  const TermDesign all = term_design(observations, rows, residual, terms);
+  Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(terms.size()));
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    const auto at = std::find(all.terms.begin(), all.terms.end(), terms[j]);
+    if (at == all.terms.end()) return std::nullopt;  // not available on these rows
+    const Eigen::VectorXd column = all.columns.col(at - all.terms.begin());
+    x.col(static_cast<Eigen::Index>(j)) = column / (column.norm() / std::sqrt(static_cast<double>(column.size())));
+  }
+  const std::vector<bool> every(terms.size(), true);
+  return held_out(x, residual, folds, [&every](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return every; });
+}
+
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
-                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& given,
                                                 const Folds& folds, const FormulaSettings& settings) {
-  TermDesign design = term_design(observations, rows, residual,
+  // Fast terms only: each channel's level over the rows is its zero drift's, for no term to take
+  // (FormulaSettings::fast_terms_only).
+  const Eigen::MatrixX2d residual = settings.fast_terms_only ? without_levels(given) : given;
+  TermDesign design = term_design(observations, rows, given,
                                   settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
   if (settings.fast_terms_only) design = fast_terms(std::move(design));
   if (design.terms.empty()) return std::nullopt;
+  if (settings.fast_terms_only) remove_channel_levels(design.columns);
   // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
   const Eigen::VectorXd scale =
       (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();

@@ -35,11 +35,15 @@ struct FormulaSettings {
   /// rows dense enough to see them (time_terms_for). Unset: found on the rows the formula is
   /// searched on.
   std::optional<std::vector<std::string>> time_terms;
-  /// Offer only terms that vary faster than a slow drift: no t, t^2, t^3, steps, temperature or
-  /// cycles of 10 s and longer. For the search on the dense rows of a long recording: more rows
-  /// add independent samples of a fast term, not of a slow one, whose effective count is set by
-  /// the noise's drift; there a slow term fitted the bridge's wander (a temperature term and a step
-  /// beside a 0.4 Hz pickup).
+  /// Offer only terms that vary faster than a slow drift: no t, t^2, t^3, steps, temperature,
+  /// cycles of 10 s and longer, or a constant on one channel (the slowest of all: a zero drift's
+  /// level over one run). For the search on the dense rows of a long recording: more rows add
+  /// independent samples of a fast term, not of a slow one, whose effective count is set by the
+  /// noise's drift; there a slow term fitted the bridge's wander (a temperature term and a step
+  /// beside a 0.4 Hz pickup; a 705 N·m constant, the training run's drift level, that cost the
+  /// next run 2 points). For the same reason each channel's level over the rows is taken out of
+  /// the residual and of every column, so that no term takes it (a torque term did, the torque
+  /// being positive): the candidate's held-out residual is about each channel's mean.
   bool fast_terms_only = false;
 };
 
