@@ -66,6 +66,12 @@ bool CouplingModel::has_effect(const std::string& name) const {
 }
 
 CouplingModel CouplingModel::with_effect(std::shared_ptr<const Effect> effect) const {
+  // Several effects fitted as one go in as themselves (core/effects/joint_effect.h).
+  if (const auto members = effect->members(); !members.empty()) {
+    CouplingModel out = *this;
+    for (const auto& m : members) out = out.with_effect(m);
+    return out;
+  }
   std::vector<std::shared_ptr<const Effect>> effects;
   for (const auto& existing : effects_) {
     if (existing->name() != effect->name()) effects.push_back(existing);

@@ -103,6 +103,18 @@ std::string gain_text(const DiagnosisRound& round, const CandidateScore& c) {
          engineering_text(round.noise.pooled_sigma_nm(), "N·m", round.search_base_rmse_nm) + ")";
 }
 
+/// "refine friction: the model has it, and with its parameters freed it explains", or, for
+/// effects refitted as one ("a+b", core/effects/joint_effect.h), "refit a and b together: ...".
+std::string refinement_text(const std::string& name) {
+  if (name.find('+') == std::string::npos) return "refine " + name + ": the model has it, and with its parameters freed it explains";
+  std::string names = name;
+  const std::size_t last = names.rfind('+');
+  names.replace(last, 1, " and ");
+  for (std::size_t at = names.find('+'); at != std::string::npos; at = names.find('+')) names.replace(at, 1, ", ");
+  return "refit " + names + " together: the model has them, each fitted in an earlier round beside what it did not "
+         "explain, and with their parameters freed together they explain";
+}
+
 }  // namespace
 
 std::string short_number(double value) {
@@ -150,7 +162,7 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
     case RoundOutcome::effect_found: {
       const CandidateScore& c = round.ranking.front();
       if (c.kind == CandidateKind::refinement) {
-        return head + "refine " + c.info->name + ": the model has it, and with its parameters freed it explains the residual in " +
+        return head + refinement_text(c.info->name) + " the residual in " +
                channels(round.channel_reduction) + " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) +
                "; " + gain_text(round, c) + "." + rival_formula_text(round) + dropped_text(round);
       }

@@ -118,6 +118,9 @@ class Effect {
   virtual InputTiming input_timing(const MeasurementSample& /*sample*/) const { return {}; }
   /// True when input_timing can be other than none (a recording's evaluation then looks it up).
   virtual bool times_inputs() const { return false; }
+  /// The effects this one stands for when it is several fitted as one (core/effects/joint_effect.h);
+  /// empty for an effect that stands for itself.
+  virtual std::vector<std::shared_ptr<const Effect>> members() const { return {}; }
 
  private:
   const EffectInfo& info_;
