@@ -107,6 +107,7 @@ WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication) {
     dds_free(data);
   }
   for (unsigned char byte : endpoint->participant_key.v) out.participant += fmt::format("{:02x}", byte);
+  for (unsigned char byte : endpoint->key.v) out.writer += fmt::format("{:02x}", byte);
   dds_builtintopic_free_endpoint(endpoint);
   return out;
 }

@@ -40,7 +40,7 @@ std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_han
 /// What the matched writer `publication` of `reader` says of itself: its USER_DATA as text and
 /// its participant's GUID (32 hex digits); empty when it is no longer matched.
 struct WriterInfo {
-  std::string user_data, participant;
+  std::string user_data, participant, writer;   ///< the GUIDs in 32 hex digits
 };
 WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication);
 

@@ -72,7 +72,8 @@ std::string user_data_value(const std::string& user_data, const std::string& key
 
 SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication) {
   const WriterInfo info = writer_info(reader, publication);
-  SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source")};
+  SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source"),
+                    info.writer};
   if (origin.by.empty()) origin.by = info.participant.empty() ? "unknown" : "participant " + info.participant;
   return origin;
 }
@@ -90,6 +91,7 @@ std::uint64_t realtime_ns() {
 Monitor::Monitor(const MonitorOptions& options)
     : options_(options),
       monitor_id_(protocol::random_id()),
+      audit_(options.state_dir),
       default_model_(load_cell_model(options.default_model, options.models_dir, options.catalog_dir)) {
   for (const auto& [test_cell, model] : options.cell_models) {
     require_test_cell_name(test_cell);
@@ -159,6 +161,7 @@ Monitor::~Monitor() {
     if (cell->proposal) dispose_proposal(proposal_writer_.get(), test_cell);
   }
   dispose_monitor_status(monitor_writer_.get(), monitor_id_);
+  audit_.close();
 }
 
 void Monitor::stop() {
@@ -331,11 +334,19 @@ void Monitor::take_models() {
       try {
         CellModel model = parsed_model(text, test_cell);
         const SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        const std::int64_t written_ns = swaps.info(i).source_timestamp;
         spdlog::info("test cell {}: model {} in force (by {})", test_cell, model.name, origin.by);
         models_[test_cell] = model;
         model_refusals_.erase(test_cell);
         Cell* cell = existing != cells_.end() ? existing->second.get() : nullptr;
-        audit_swap(test_cell, cell, model, text, origin);
+        // A restarted monitor is given every live swap writer's latest swap again
+        // (TRANSIENT_LOCAL): in force again, but not a new swap of the trail.
+        if (audit_.contains(origin.writer, written_ns)) {
+          spdlog::info("test cell {}: swap to {} by {} already in the audit trail", test_cell,
+                       model.name, origin.by);
+        } else {
+          audit_swap(test_cell, cell, model, text, origin, written_ns);
+        }
         if (cell != nullptr) cell->monitor.swap_model(std::move(model));
       } catch (const ModelError& error) {
         spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
@@ -559,8 +570,11 @@ void Monitor::publish_proposal(Cell& cell) {
 }
 
 void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellModel& model,
-                         const std::string& text, const SwapOrigin& origin) {
+                         const std::string& text, const SwapOrigin& origin, std::int64_t written_ns) {
   SwapEntry entry;
+  entry.id = protocol::random_id();
+  entry.writer = origin.writer;
+  entry.written_ns = written_ns;
   entry.test_cell = test_cell;
   entry.at = std::chrono::system_clock::now();
   entry.by = origin.by;
