@@ -29,6 +29,9 @@ protocol::Entity make_live_subscriber(dds_entity_t participant);
 /// A publisher in test cell `test_cell`'s own partition (cell_partition): its measurements and
 /// model swaps.
 protocol::Entity make_cell_publisher(dds_entity_t participant, const std::string& test_cell);
+/// A publisher in `partitions` (a model swap's: its cell's and its operator's).
+protocol::Entity make_publisher_in(dds_entity_t participant,
+                                   const std::vector<std::string>& partitions);
 /// A subscriber in `partitions` (e.g. kLivePartition and kEveryCellPartition).
 protocol::Entity make_subscriber_in(dds_entity_t participant,
                                     const std::vector<std::string>& partitions);

@@ -73,7 +73,7 @@ std::string user_data_value(const std::string& user_data, const std::string& key
 SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication) {
   const WriterInfo info = writer_info(reader, publication);
   SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source"),
-                    info.writer};
+                    info.writer, ""};
   if (origin.by.empty()) origin.by = info.participant.empty() ? "unknown" : "participant " + info.participant;
   return origin;
 }
@@ -244,8 +244,7 @@ void Monitor::remember_writer(dds_entity_t reader, dds_instance_handle_t publica
   writer_partitions_[publication] = std::move(partitions);
 }
 
-bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
-                                 const std::string& test_cell, const char* what) {
+std::vector<std::string> Monitor::partitions_of(dds_entity_t reader, dds_instance_handle_t publication) {
   std::vector<std::string> partitions;
   {
     std::lock_guard lock(writer_partitions_mutex_);
@@ -253,13 +252,19 @@ bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publ
     if (found != writer_partitions_.end()) partitions = found->second;
   }
   // Not learnt at its match (the map was emptied since): ask while it is still matched. A
-  // writer already gone has no known partition, and its sample is refused.
+  // writer already gone has no known partition.
   if (partitions.empty()) remember_writer(reader, publication);
   if (partitions.empty()) {
     std::lock_guard lock(writer_partitions_mutex_);
     const auto found = writer_partitions_.find(publication);
     if (found != writer_partitions_.end()) partitions = found->second;
   }
+  return partitions;
+}
+
+bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
+                                 const std::string& test_cell, const char* what) {
+  const std::vector<std::string> partitions = partitions_of(reader, publication);
   if (partitions_speak_for(partitions, test_cell)) return true;
   std::string shown;
   for (const std::string& p : partitions) shown += (shown.empty() ? "" : ", ") + p;
@@ -333,7 +338,9 @@ void Monitor::take_models() {
       const auto existing = cells_.find(test_cell);
       try {
         CellModel model = parsed_model(text, test_cell);
-        const SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        origin.operator_identity = operator_identity_of(
+            partitions_of(model_reader_.get(), swaps.info(i).publication_handle));
         const std::int64_t written_ns = swaps.info(i).source_timestamp;
         spdlog::info("test cell {}: model {} in force (by {})", test_cell, model.name, origin.by);
         models_[test_cell] = model;
@@ -578,15 +585,18 @@ void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellMod
   entry.test_cell = test_cell;
   entry.at = std::chrono::system_clock::now();
   entry.by = origin.by;
+  entry.operator_identity = origin.operator_identity;
   entry.source = origin.source.empty() ? "model text" : origin.source;
   entry.model_after = model.name;
+  bool proposal_changed = false;
   if (cell != nullptr) {
     const HealthReport before = cell->monitor.health(entry.at);
     entry.model_before = before.model.model_name;
     for (std::size_t c = 0; c < 2; ++c) entry.before_rmse_nm[c] = before.model.channels[c].rmse_nm;
     cell->systematic_since.reset();
     std::optional<Proposal>& p = cell->proposal;
-    if (p && p->state == ProposalState::standing) {
+    proposal_changed = p && p->state == ProposalState::standing;
+    if (proposal_changed) {
       if (p->model_text == text) {
         p->state = ProposalState::applied;
         p->state_reason = "applied by " + origin.by;
@@ -597,12 +607,14 @@ void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellMod
         p->state_reason = "its base model " + p->base_model + " was replaced by " + model.name;
         ++proposals_withdrawn_;
       }
-      publish_proposal(*cell);
     }
   }
-  spdlog::info("test cell {}: swap {} -> {} by {} from {}", test_cell, entry.model_before,
-               entry.model_after, entry.by, entry.source);
-  audit_.add(std::move(entry));
+  spdlog::info("test cell {}: swap {} -> {} by {}{} from {}", test_cell, entry.model_before,
+               entry.model_after, entry.by,
+               entry.operator_identity.empty() ? "" : " (identity " + entry.operator_identity + ")",
+               entry.source);
+  audit_.add(std::move(entry));   // on disk before anyone sees the proposal applied
+  if (proposal_changed) publish_proposal(*cell);
 }
 
 }  // namespace gc::live

@@ -41,9 +41,10 @@ struct LearningOptions {
 };
 
 /// Who swapped a model and from what: the swap writer's USER_DATA ("by=USER@HOST;source=..."
-/// as gearcoupling swap-model sets it), else its participant's GUID; and the writer's GUID.
+/// as gearcoupling swap-model sets it), else its participant's GUID; the writer's GUID; and the
+/// operator identity of its partitions (operator_identity_of), which DDS Security authenticates.
 struct SwapOrigin {
-  std::string by, source, writer;
+  std::string by, source, writer, operator_identity;
 };
 SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication);
 
@@ -118,6 +119,9 @@ class Monitor {
   /// `test_cell` (partitions_speak_for); logs and counts a refusal (`what`: "measurement batch").
   bool from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
                           const std::string& test_cell, const char* what);
+  /// The partitions of the writer of a sample of `reader` (learnt at its match, else asked now);
+  /// empty when it is gone.
+  std::vector<std::string> partitions_of(dds_entity_t reader, dds_instance_handle_t publication);
   /// Subscription-matched listener: learns a writer's partitions while it is surely matched,
   /// before its first sample is taken (it may be gone by then: a short run).
   void remember_writer(dds_entity_t reader, dds_instance_handle_t publication);

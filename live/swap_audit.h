@@ -21,7 +21,10 @@ struct SwapEntry {
   std::uint64_t id = 0;                    ///< random, never 0: names the record on disk
   std::string test_cell;
   std::chrono::system_clock::time_point at;
-  std::string by, source;
+  std::string by, source;                  ///< the swapper's claim (its writer's USER_DATA)
+  /// "operator-NAME" when the swap's writer was in partition gearcoupling.live.operator.NAME:
+  /// under DDS Security only that identity's grant allows it (docs/security.md); "" otherwise.
+  std::string operator_identity;
   std::uint64_t proposal_id = 0;
   std::string model_before, model_after;
   double before_rmse_nm[2] = {0.0, 0.0};   ///< M_sy', M_sz' [N·m]

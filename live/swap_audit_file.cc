@@ -115,7 +115,7 @@ void apply_line(const std::string& line, Loaded& loaded) {
   const std::string payload = line.substr(20);
   if (fnv1a64(payload) != hash) throw InvalidInput("hash", "the line does not match its hash (damaged)");
   const std::vector<std::string> f = split(payload);
-  if (!f.empty() && f[0] == "swap" && f.size() == 16) {
+  if (!f.empty() && f[0] == "swap" && f.size() == 17) {
     SwapEntry e;
     e.id = parse_hex16(f[1], "id");
     e.at = std::chrono::system_clock::time_point(std::chrono::duration_cast<std::chrono::system_clock::duration>(
@@ -133,6 +133,7 @@ void apply_line(const std::string& line, Loaded& loaded) {
     e.source = decode(f[13], "source");
     e.model_before = decode(f[14], "model_before");
     e.model_after = decode(f[15], "model_after");
+    e.operator_identity = decode(f[16], "operator_identity");
     e.after_frozen = true;
     loaded.by_id[e.id] = loaded.swaps.size();
     loaded.swaps.push_back(std::move(e));
@@ -147,7 +148,7 @@ void apply_line(const std::string& line, Loaded& loaded) {
     e.after_rmse_nm[1] = msz;
     e.after_samples = samples;
   } else {
-    throw InvalidInput("kind", "not a swap line of 16 fields nor an after line of 5 (" +
+    throw InvalidInput("kind", "not a swap line of 17 fields nor an after line of 5 (" +
                                    std::to_string(f.size()) + " fields)");
   }
 }
@@ -196,12 +197,12 @@ void sync_directory(const std::filesystem::path& dir) {
 }  // namespace
 
 std::string swap_record_payload(const SwapEntry& e) {
-  return fmt::format("swap {:016x} {} {} {:016x} {} {} {} {} {} {} {} {} {} {} {}", e.id,
+  return fmt::format("swap {:016x} {} {} {:016x} {} {} {} {} {} {} {} {} {} {} {} {}", e.id,
                      ns_since_epoch(e.at), encode(e.test_cell), e.proposal_id,
                      fixed_number(e.before_rmse_nm[0]), fixed_number(e.before_rmse_nm[1]),
                      fixed_number(e.after_rmse_nm[0]), fixed_number(e.after_rmse_nm[1]),
                      e.after_samples, encode(e.writer), e.written_ns, encode(e.by), encode(e.source),
-                     encode(e.model_before), encode(e.model_after));
+                     encode(e.model_before), encode(e.model_after), encode(e.operator_identity));
 }
 
 std::string after_record_payload(const SwapEntry& e) {

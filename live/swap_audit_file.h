@@ -8,7 +8,7 @@
 // it tells a damaged line (a bad disk block, an editor) from a record, not a forged one from a
 // true one (the file is the monitor's own, 0640 in a 0750 directory of its user). KIND is
 //   swap  ID AT_NS TEST_CELL PROPOSAL_ID BEFORE_MSY BEFORE_MSZ AFTER_MSY AFTER_MSZ AFTER_SAMPLES
-//         WRITER WRITTEN_NS BY SOURCE MODEL_BEFORE MODEL_AFTER
+//         WRITER WRITTEN_NS BY SOURCE MODEL_BEFORE MODEL_AFTER OPERATOR_IDENTITY
 //   after ID AFTER_MSY AFTER_MSZ AFTER_SAMPLES
 // with ID and PROPOSAL_ID in 16 hex digits, times in ns since 1970 (UTC), RMSE in N·m, texts
 // percent-encoded (space, '%', control bytes; "-" is empty). An `after` line updates the
