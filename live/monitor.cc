@@ -599,7 +599,8 @@ void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellMod
     if (proposal_changed) {
       if (p->model_text == text) {
         p->state = ProposalState::applied;
-        p->state_reason = "applied by " + origin.by;
+        p->state_reason = "applied by " + origin.by +
+                          (origin.operator_identity.empty() ? "" : " (" + origin.operator_identity + ")");
         entry.proposal_id = p->id;
         entry.source = "proposal " + hex16(p->id);
       } else {

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 #include "core/model_error.h"
 
@@ -169,7 +170,11 @@ void load_file(const std::filesystem::path& path, Loaded& loaded, bool cut_torn_
       spdlog::error("swap audit {}: line {} is torn ({} bytes without an end of line: a write cut "
                     "off by a kill or a crash); dropped{}", path.string(), line_number,
                     text.size() - at, cut_torn_tail ? " and cut off the file" : "");
-      if (cut_torn_tail) std::filesystem::resize_file(path, at);
+      if (cut_torn_tail) {
+        std::error_code error;
+        std::filesystem::resize_file(path, at, error);
+        if (error) spdlog::error("swap audit {}: torn line not cut off: {}", path.string(), error.message());
+      }
       return;
     }
     try {
