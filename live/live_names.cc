@@ -1,6 +1,7 @@
 #include "live/live_names.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "core/model_error.h"
@@ -24,6 +25,36 @@ void require_test_cell_name(std::string_view name) {
 std::string cell_partition(std::string_view test_cell) {
   require_test_cell_name(test_cell);
   return kCellPartitionPrefix + std::string(test_cell);
+}
+
+std::string operator_partition(std::string_view operator_name) {
+  const auto allowed = [](unsigned char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  };
+  if (operator_name.empty() || operator_name.size() > 32 || operator_name[0] == '_' ||
+      operator_name[0] == '-' || !std::all_of(operator_name.begin(), operator_name.end(), allowed)) {
+    throw InvalidInput("operator", "'" + std::string(operator_name.substr(0, 32)) +
+                                       "' is not an operator name: 1 to 32 of a-z 0-9 _ -, "
+                                       "starting with a letter or digit");
+  }
+  return kOperatorPartitionPrefix + std::string(operator_name);
+}
+
+std::string operator_of_identity() {
+  const char* identity = std::getenv("GC_IDENTITY");
+  const std::string_view prefix = kOperatorIdentityPrefix;
+  if (identity == nullptr || std::string_view(identity).substr(0, prefix.size()) != prefix) return "";
+  return identity + prefix.size();
+}
+
+std::string operator_identity_of(const std::vector<std::string>& writer_partitions) {
+  const std::string_view prefix = kOperatorPartitionPrefix;
+  for (const std::string& p : writer_partitions) {
+    if (p.size() > prefix.size() && p.compare(0, prefix.size(), prefix) == 0) {
+      return kOperatorIdentityPrefix + p.substr(prefix.size());
+    }
+  }
+  return "";
 }
 
 bool partitions_speak_for(const std::vector<std::string>& writer_partitions,

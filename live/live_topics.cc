@@ -70,12 +70,25 @@ Entity make_cell_publisher(dds_entity_t participant, const std::string& test_cel
                           "dds_create_publisher(live, a test cell's partition)"));
 }
 
-Entity make_subscriber_in(dds_entity_t participant, const std::vector<std::string>& partitions) {
-  const protocol::Qos qos;
+namespace {
+
+protocol::Qos partitions_qos(const std::vector<std::string>& partitions) {
+  protocol::Qos qos;
   std::vector<const char*> names;
   for (const std::string& p : partitions) names.push_back(p.c_str());
   dds_qset_partition(qos.get(), static_cast<uint32_t>(names.size()), names.data());
-  return Entity(check_dds(dds_create_subscriber(participant, qos.get(), nullptr),
+  return qos;
+}
+
+}  // namespace
+
+Entity make_publisher_in(dds_entity_t participant, const std::vector<std::string>& partitions) {
+  return Entity(check_dds(dds_create_publisher(participant, partitions_qos(partitions).get(), nullptr),
+                          "dds_create_publisher(live)"));
+}
+
+Entity make_subscriber_in(dds_entity_t participant, const std::vector<std::string>& partitions) {
+  return Entity(check_dds(dds_create_subscriber(participant, partitions_qos(partitions).get(), nullptr),
                           "dds_create_subscriber(live)"));
 }
 
@@ -107,6 +120,7 @@ WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication) {
     dds_free(data);
   }
   for (unsigned char byte : endpoint->participant_key.v) out.participant += fmt::format("{:02x}", byte);
+  for (unsigned char byte : endpoint->key.v) out.writer += fmt::format("{:02x}", byte);
   dds_builtintopic_free_endpoint(endpoint);
   return out;
 }

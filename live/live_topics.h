@@ -29,6 +29,9 @@ protocol::Entity make_live_subscriber(dds_entity_t participant);
 /// A publisher in test cell `test_cell`'s own partition (cell_partition): its measurements and
 /// model swaps.
 protocol::Entity make_cell_publisher(dds_entity_t participant, const std::string& test_cell);
+/// A publisher in `partitions` (a model swap's: its cell's and its operator's).
+protocol::Entity make_publisher_in(dds_entity_t participant,
+                                   const std::vector<std::string>& partitions);
 /// A subscriber in `partitions` (e.g. kLivePartition and kEveryCellPartition).
 protocol::Entity make_subscriber_in(dds_entity_t participant,
                                     const std::vector<std::string>& partitions);
@@ -40,7 +43,7 @@ std::vector<std::string> writer_partitions(dds_entity_t reader, dds_instance_han
 /// What the matched writer `publication` of `reader` says of itself: its USER_DATA as text and
 /// its participant's GUID (32 hex digits); empty when it is no longer matched.
 struct WriterInfo {
-  std::string user_data, participant;
+  std::string user_data, participant, writer;   ///< the GUIDs in 32 hex digits
 };
 WriterInfo writer_info(dds_entity_t reader, dds_instance_handle_t publication);
 

@@ -22,8 +22,14 @@ class ModelSwapPublisher {
   /// naming "test_cell" for a bad name.
   /// `user_data`, "by=WHO;source=WHAT", goes in every writer's USER_DATA: the monitor's audit
   /// trail names who swapped and from what (a proposal, a file); "" says nothing.
+  /// `operator_name` NAME (an operator identity operator-NAME, live::operator_of_identity())
+  /// puts every writer in partition operator_partition(NAME) too, which under DDS Security only
+  /// that identity's grant allows: the audit trail then names it, authenticated (live_names.h).
+  /// When the permissions do not allow it (made by a make-security.sh before it), the writers
+  /// are made without it, and a warning says so. Throws InvalidInput naming "operator" for a
+  /// bad name.
   ModelSwapPublisher(dds_entity_t participant, const std::vector<std::string>& test_cells,
-                     const std::string& user_data = "");
+                     const std::string& user_data = "", const std::string& operator_name = "");
   /// Publishes `model_text` (empty: only the decimation) for `test_cell`, one of the
   /// constructor's; `residual_decimation` 0 keeps the monitor's. Throws InvalidInput naming
   /// "test_cell" for a bad name or one not given to the constructor.

@@ -72,7 +72,8 @@ std::string user_data_value(const std::string& user_data, const std::string& key
 
 SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication) {
   const WriterInfo info = writer_info(reader, publication);
-  SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source")};
+  SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source"),
+                    info.writer, ""};
   if (origin.by.empty()) origin.by = info.participant.empty() ? "unknown" : "participant " + info.participant;
   return origin;
 }
@@ -90,6 +91,7 @@ std::uint64_t realtime_ns() {
 Monitor::Monitor(const MonitorOptions& options)
     : options_(options),
       monitor_id_(protocol::random_id()),
+      audit_(options.state_dir),
       default_model_(load_cell_model(options.default_model, options.models_dir, options.catalog_dir)) {
   for (const auto& [test_cell, model] : options.cell_models) {
     require_test_cell_name(test_cell);
@@ -159,6 +161,7 @@ Monitor::~Monitor() {
     if (cell->proposal) dispose_proposal(proposal_writer_.get(), test_cell);
   }
   dispose_monitor_status(monitor_writer_.get(), monitor_id_);
+  audit_.close();
 }
 
 void Monitor::stop() {
@@ -241,8 +244,7 @@ void Monitor::remember_writer(dds_entity_t reader, dds_instance_handle_t publica
   writer_partitions_[publication] = std::move(partitions);
 }
 
-bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
-                                 const std::string& test_cell, const char* what) {
+std::vector<std::string> Monitor::partitions_of(dds_entity_t reader, dds_instance_handle_t publication) {
   std::vector<std::string> partitions;
   {
     std::lock_guard lock(writer_partitions_mutex_);
@@ -250,13 +252,19 @@ bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publ
     if (found != writer_partitions_.end()) partitions = found->second;
   }
   // Not learnt at its match (the map was emptied since): ask while it is still matched. A
-  // writer already gone has no known partition, and its sample is refused.
+  // writer already gone has no known partition.
   if (partitions.empty()) remember_writer(reader, publication);
   if (partitions.empty()) {
     std::lock_guard lock(writer_partitions_mutex_);
     const auto found = writer_partitions_.find(publication);
     if (found != writer_partitions_.end()) partitions = found->second;
   }
+  return partitions;
+}
+
+bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
+                                 const std::string& test_cell, const char* what) {
+  const std::vector<std::string> partitions = partitions_of(reader, publication);
   if (partitions_speak_for(partitions, test_cell)) return true;
   std::string shown;
   for (const std::string& p : partitions) shown += (shown.empty() ? "" : ", ") + p;
@@ -330,12 +338,22 @@ void Monitor::take_models() {
       const auto existing = cells_.find(test_cell);
       try {
         CellModel model = parsed_model(text, test_cell);
-        const SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        SwapOrigin origin = swap_origin(model_reader_.get(), swaps.info(i).publication_handle);
+        origin.operator_identity = operator_identity_of(
+            partitions_of(model_reader_.get(), swaps.info(i).publication_handle));
+        const std::int64_t written_ns = swaps.info(i).source_timestamp;
         spdlog::info("test cell {}: model {} in force (by {})", test_cell, model.name, origin.by);
         models_[test_cell] = model;
         model_refusals_.erase(test_cell);
         Cell* cell = existing != cells_.end() ? existing->second.get() : nullptr;
-        audit_swap(test_cell, cell, model, text, origin);
+        // A restarted monitor is given every live swap writer's latest swap again
+        // (TRANSIENT_LOCAL): in force again, but not a new swap of the trail.
+        if (audit_.contains(origin.writer, written_ns)) {
+          spdlog::info("test cell {}: swap to {} by {} already in the audit trail", test_cell,
+                       model.name, origin.by);
+        } else {
+          audit_swap(test_cell, cell, model, text, origin, written_ns);
+        }
         if (cell != nullptr) cell->monitor.swap_model(std::move(model));
       } catch (const ModelError& error) {
         spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
@@ -559,23 +577,30 @@ void Monitor::publish_proposal(Cell& cell) {
 }
 
 void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellModel& model,
-                         const std::string& text, const SwapOrigin& origin) {
+                         const std::string& text, const SwapOrigin& origin, std::int64_t written_ns) {
   SwapEntry entry;
+  entry.id = protocol::random_id();
+  entry.writer = origin.writer;
+  entry.written_ns = written_ns;
   entry.test_cell = test_cell;
   entry.at = std::chrono::system_clock::now();
   entry.by = origin.by;
+  entry.operator_identity = origin.operator_identity;
   entry.source = origin.source.empty() ? "model text" : origin.source;
   entry.model_after = model.name;
+  bool proposal_changed = false;
   if (cell != nullptr) {
     const HealthReport before = cell->monitor.health(entry.at);
     entry.model_before = before.model.model_name;
     for (std::size_t c = 0; c < 2; ++c) entry.before_rmse_nm[c] = before.model.channels[c].rmse_nm;
     cell->systematic_since.reset();
     std::optional<Proposal>& p = cell->proposal;
-    if (p && p->state == ProposalState::standing) {
+    proposal_changed = p && p->state == ProposalState::standing;
+    if (proposal_changed) {
       if (p->model_text == text) {
         p->state = ProposalState::applied;
-        p->state_reason = "applied by " + origin.by;
+        p->state_reason = "applied by " + origin.by +
+                          (origin.operator_identity.empty() ? "" : " (" + origin.operator_identity + ")");
         entry.proposal_id = p->id;
         entry.source = "proposal " + hex16(p->id);
       } else {
@@ -583,12 +608,14 @@ void Monitor::audit_swap(const std::string& test_cell, Cell* cell, const CellMod
         p->state_reason = "its base model " + p->base_model + " was replaced by " + model.name;
         ++proposals_withdrawn_;
       }
-      publish_proposal(*cell);
     }
   }
-  spdlog::info("test cell {}: swap {} -> {} by {} from {}", test_cell, entry.model_before,
-               entry.model_after, entry.by, entry.source);
-  audit_.add(std::move(entry));
+  spdlog::info("test cell {}: swap {} -> {} by {}{} from {}", test_cell, entry.model_before,
+               entry.model_after, entry.by,
+               entry.operator_identity.empty() ? "" : " (identity " + entry.operator_identity + ")",
+               entry.source);
+  audit_.add(std::move(entry));   // on disk before anyone sees the proposal applied
+  if (proposal_changed) publish_proposal(*cell);
 }
 
 }  // namespace gc::live

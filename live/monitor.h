@@ -41,9 +41,10 @@ struct LearningOptions {
 };
 
 /// Who swapped a model and from what: the swap writer's USER_DATA ("by=USER@HOST;source=..."
-/// as gearcoupling swap-model sets it), else its participant's GUID.
+/// as gearcoupling swap-model sets it), else its participant's GUID; the writer's GUID; and the
+/// operator identity of its partitions (operator_identity_of), which DDS Security authenticates.
 struct SwapOrigin {
-  std::string by, source;
+  std::string by, source, writer, operator_identity;
 };
 SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication);
 
@@ -70,6 +71,9 @@ struct MonitorOptions {
   /// cell (model, decimation, refusal) is kept for at most 2 max_cells cells (make_room).
   std::size_t max_cells = 64;
   LearningOptions learning;
+  /// Where the audit trail of model swaps is kept across restarts (live/swap_audit_file.h); ""
+  /// keeps it in memory only.
+  std::filesystem::path state_dir;
 };
 
 class Monitor {
@@ -104,7 +108,7 @@ class Monitor {
   /// The swap of `test_cell` to `model` (already in force), in the audit trail and in the
   /// state of the cell's proposal.
   void audit_swap(const std::string& test_cell, Cell* cell, const CellModel& model,
-                  const std::string& text, const SwapOrigin& origin);
+                  const std::string& text, const SwapOrigin& origin, std::int64_t written_ns);
   void publish_proposal(Cell& cell);
   MonitorCounters counters() const;
   /// `test_cell`'s state, made when new; nullptr when max_cells cells are followed and it is
@@ -115,6 +119,9 @@ class Monitor {
   /// `test_cell` (partitions_speak_for); logs and counts a refusal (`what`: "measurement batch").
   bool from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
                           const std::string& test_cell, const char* what);
+  /// The partitions of the writer of a sample of `reader` (learnt at its match, else asked now);
+  /// empty when it is gone.
+  std::vector<std::string> partitions_of(dds_entity_t reader, dds_instance_handle_t publication);
   /// Subscription-matched listener: learns a writer's partitions while it is surely matched,
   /// before its first sample is taken (it may be gone by then: a short run).
   void remember_writer(dds_entity_t reader, dds_instance_handle_t publication);
@@ -129,6 +136,7 @@ class Monitor {
 
   MonitorOptions options_;
   std::uint64_t monitor_id_;
+  SwapAudit audit_;   // first: a bad --state-dir is refused before DDS is touched
   CellModel default_model_;
   std::map<std::string, CellModel> models_;       // configured, or swapped in while absent
   std::map<std::string, std::uint32_t> decimations_;
@@ -155,7 +163,6 @@ class Monitor {
   std::mutex writer_partitions_mutex_;
   std::map<dds_instance_handle_t, std::vector<std::string>> writer_partitions_;
   std::chrono::steady_clock::time_point refusals_logged_at_{};
-  SwapAudit audit_;
   std::uint64_t proposals_published_ = 0, proposals_withdrawn_ = 0;
   std::uint64_t diagnoses_run_ = 0, diagnoses_dropped_ = 0;
   std::uint64_t next_generation_ = 1;

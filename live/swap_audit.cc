@@ -1,6 +1,18 @@
 #include "live/swap_audit.h"
 
+#include "live/swap_audit_file.h"
+
 namespace gc::live {
+
+SwapAudit::SwapAudit() = default;
+
+SwapAudit::SwapAudit(const std::filesystem::path& state_dir) {
+  if (state_dir.empty()) return;
+  file_ = std::make_unique<SwapAuditFile>(state_dir);
+  for (SwapEntry& entry : file_->load(kKept)) entries_.push_back(std::move(entry));
+}
+
+SwapAudit::~SwapAudit() = default;
 
 SwapEntry* SwapAudit::latest(const std::string& test_cell) {
   for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
@@ -11,9 +23,20 @@ SwapEntry* SwapAudit::latest(const std::string& test_cell) {
 
 void SwapAudit::add(SwapEntry entry) {
   freeze(entry.test_cell);
-  if (entries_.size() == kKept) entries_.pop_front();
+  if (entries_.size() == kKept) {
+    freeze(entries_.front());
+    entries_.pop_front();
+  }
+  if (file_) file_->append_swap(entry);
   entries_.push_back(std::move(entry));
   ++total_;
+}
+
+bool SwapAudit::contains(const std::string& writer, std::int64_t written_ns) const {
+  for (const SwapEntry& entry : entries_) {
+    if (!writer.empty() && entry.writer == writer && entry.written_ns == written_ns) return true;
+  }
+  return false;
 }
 
 void SwapAudit::follow(const std::string& test_cell, const HealthReport& health) {
@@ -23,8 +46,18 @@ void SwapAudit::follow(const std::string& test_cell, const HealthReport& health)
   entry->after_samples = health.window_samples;
 }
 
+void SwapAudit::freeze(SwapEntry& entry) {
+  if (entry.after_frozen) return;
+  entry.after_frozen = true;
+  if (file_ && entry.after_samples > 0) file_->append_after(entry);
+}
+
 void SwapAudit::freeze(const std::string& test_cell) {
-  if (SwapEntry* entry = latest(test_cell)) entry->after_frozen = true;
+  if (SwapEntry* entry = latest(test_cell)) freeze(*entry);
+}
+
+void SwapAudit::close() {
+  for (SwapEntry& entry : entries_) freeze(entry);
 }
 
 }  // namespace gc::live

@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 #include "codec/bundled_data.h"
@@ -83,6 +84,13 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
   app.add_option("--diagnosis-nice", o.learning.nice,
                  "nice value of the diagnosis thread (the monitor's own thread keeps its priority)")
       ->check(CLI::Range(0, 19))->capture_default_str();
+  // systemd's StateDirectory=gearcoupling sets STATE_DIRECTORY=/var/lib/gearcoupling: the unit
+  // needs no flag (deploy/gearcoupling-monitor.service).
+  if (const char* state_directory = std::getenv("STATE_DIRECTORY")) o.state_dir = state_directory;
+  app.add_option("--state-dir", o.state_dir,
+                 "directory of the audit trail of model swaps (swap_audit.log, kept across "
+                 "restarts; \"\" keeps it in memory only); default $STATE_DIRECTORY, which "
+                 "systemd's StateDirectory= sets, else \"\"")->capture_default_str();
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
   app.parse(argc, argv);
@@ -129,6 +137,10 @@ int main(int argc, char** argv) {
                    "configuration: {}",
                    monitor.monitor_id(), options.domain, options.default_model,
                    options.cell.window_s, gc::protocol::describe(gc::protocol::dds_config()));
+      if (options.state_dir.empty()) {
+        spdlog::warn("no --state-dir: the audit trail of model swaps is kept in memory only, "
+                     "a restart forgets it");
+      }
       std::thread waiter([&] {
         int signal = 0;
         sigwait(&signals, &signal);

@@ -12,6 +12,7 @@
 #include "clients/status/cell_board.h"
 #include "clients/status/monitor_board.h"
 #include "live/live_topics.h"
+#include "live/live_names.h"
 #include "live/model_swap_publisher.h"
 
 namespace gc::cli {
@@ -93,7 +94,8 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
                                                     flags.text("proposal"), wait)
                                     : file_text(flags);
   live::ModelSwapPublisher swaps(participant.get(), {test_cell},
-                                 "by=" + operator_name() + ";source=" + swap.source);
+                                 "by=" + operator_name() + ";source=" + swap.source,
+                                 live::operator_of_identity());
   status::CellBoardOptions board;
   board.read_residuals = false;  // an operator identity may read the health alone
   board.only_cell = test_cell;

@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "codec/result_json.h"
+#include "live/live_names.h"
 #include "protocol/dds_error.h"
 
 namespace gc::dashboard {
@@ -40,7 +41,8 @@ ProposalApplier::ProposalApplier(dds_entity_t participant, status::MonitorBoard&
   if (cells_.empty()) return;
   try {
     swaps_ = std::make_unique<live::ModelSwapPublisher>(participant, cells_,
-                                                        "by=" + dashboard_name() + ";source=dashboard");
+                                                        "by=" + dashboard_name() + ";source=dashboard",
+                                                        live::operator_of_identity());
   } catch (const protocol::DdsError& error) {
     throw std::runtime_error(fmt::format(
         "--operator-cells {}: this dashboard's DDS identity may not publish model swaps for these "

@@ -85,6 +85,7 @@ v1::MonitorRecord record_of(const gearcoupling_MonitorStatus& in) {
     r.set_after_msy_rmse_nm(s.after_msy_rmse_nm);
     r.set_after_msz_rmse_nm(s.after_msz_rmse_nm);
     r.set_after_samples(s.after_samples);
+    r.set_operator_identity(sample_text(s.operator_identity));
   }
   return out;
 }

@@ -41,6 +41,7 @@ STATUS_PARTITION="gearcoupling"
 # "gearcoupling.live"; measurements and model swaps of test cell CELL in "gearcoupling.live.cell.CELL".
 LIVE_PARTITION="gearcoupling.live"
 CELL_PARTITION_PREFIX="gearcoupling.live.cell."
+OPERATOR_PARTITION_PREFIX="gearcoupling.live.operator."
 MEASUREMENT_TOPIC="gearcoupling/live/measurement"
 RESIDUAL_TOPIC="gearcoupling/live/residual"
 HEALTH_TOPIC="gearcoupling/live/health"
@@ -266,14 +267,16 @@ cell_rules() {
   criteria subscribe "$MEASUREMENT_TOPIC" "$LIVE_PARTITION" "$CELL_PARTITION_PREFIX$1"
 }
 
-# The operator of test cells $1 (comma-separated): gearcoupling swap-model publishes a model in
-# those cells' partitions only (a proposal's too: applying one is a swap), and reads the health to
+# Operator $1 of test cells $2 (comma-separated): gearcoupling swap-model publishes a model in
+# those cells' partitions only (a proposal's too: applying one is a swap), and its writer is also
+# in the operator's own partition, which no other grant has: the monitor learns from it which
+# operator swapped, authenticated (live/live_names.h, docs/security.md). It reads the health to
 # see it taken and the proposals and audit trail.
 operator_rules() {
   local cells partitions=() cell
-  IFS=, read -ra cells <<<"$1"
+  IFS=, read -ra cells <<<"$2"
   for cell in "${cells[@]}"; do partitions+=("$CELL_PARTITION_PREFIX$cell"); done
-  criteria publish "$MODEL_TOPIC" "${partitions[@]}"
+  criteria publish "$MODEL_TOPIC" "${partitions[@]}" "$OPERATOR_PARTITION_PREFIX$1"
   criteria subscribe "$HEALTH_TOPIC" "$LIVE_PARTITION"
   learning_view_rules
 }
@@ -390,7 +393,7 @@ for name in ${CONSOLES[@]+"${CONSOLES[@]}"}; do make_requester "console-$name" c
 for name in ${MONITORS[@]+"${MONITORS[@]}"}; do make_member "monitor-$name" monitor_rules; done
 for name in ${CELLS[@]+"${CELLS[@]}"}; do make_member "cell-$name" cell_rules "$name"; done
 for name in ${OPERATORS[@]+"${OPERATORS[@]}"}; do
-  make_member "operator-$name" operator_rules "${OPERATOR_CELLS[$name]}"
+  make_member "operator-$name" operator_rules "$name" "${OPERATOR_CELLS[$name]}"
 done
 mkdir -p "$CA_DB"
 [ -f "$CA_DB/index.txt" ] || : >"$CA_DB/index.txt"

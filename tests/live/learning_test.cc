@@ -4,18 +4,18 @@
 // both channels are at the noise level, and `status --json` shows the swap in the audit trail.
 // Then: two cells diagnosed at once both get theirs, a cell gone mid-diagnosis gets none, a swap
 // while a diagnosis runs leaves no proposal standing for the model replaced, later data that
-// contradicts a proposal withdraws it, a stop mid-diagnosis is prompt, and the monitor's
-// refusals (issue 23) are in its status.
-#include <google/protobuf/util/json_util.h>
-
+// contradicts a proposal withdraws it, a stop mid-diagnosis is prompt, a kill mid-diagnosis and
+// a restart leave nothing stale, and the monitor's refusals (issue 23) are in its status.
 #include <chrono>
 #include <csignal>
 #include <functional>
 #include <thread>
 
 #include "gearcoupling.h"
+#include "clients/status/monitor_board.h"
 #include "live/live_qos.h"
 #include "tests/live/live_fixture.h"
+#include "tests/live/live_status.h"
 
 namespace gc::test {
 namespace {
@@ -23,39 +23,7 @@ namespace {
 using cli::testing::read_file;
 using cli::testing::run_gearcoupling;
 using namespace std::chrono_literals;
-namespace v1 = ::gearcoupling::v1;
-
 constexpr std::uint64_t kRecordingSamples = 1000;
-
-/// The first line of `text` parsed as `T` (protobuf's JSON mapping); fails the test otherwise.
-template <typename T>
-T parse_json_line(const std::string& text) {
-  T message;
-  const std::string line = text.substr(0, text.find('\n'));
-  const auto status = google::protobuf::util::JsonStringToMessage(line, &message);
-  EXPECT_TRUE(status.ok()) << status.ToString() << "\n" << text;
-  return message;
-}
-
-/// `proposals --json` for `cell` until `ready` holds for its proposal or `timeout` passes.
-std::optional<v1::ProposalRecord> wait_for_proposal(
-    const std::string& cell, const std::function<bool(const v1::ProposalRecord&)>& ready,
-    std::chrono::seconds timeout) {
-  const auto until = std::chrono::steady_clock::now() + timeout;
-  std::optional<v1::ProposalRecord> latest;
-  do {
-    const auto listed = run_gearcoupling(on_test_domain(
-        {"proposals", "--test-cell", cell, "--json", "--discovery-s", "0.5"}));
-    EXPECT_EQ(listed.exit_code, 0) << listed.err;
-    const auto list = parse_json_line<v1::ProposalList>(listed.out);
-    latest.reset();
-    for (const auto& p : list.proposals()) {
-      if (p.test_cell() == cell) latest = p;
-    }
-    if (latest && ready(*latest)) return latest;
-  } while (std::chrono::steady_clock::now() < until);
-  return latest;
-}
 
 std::vector<std::string> monitor_args() {
   // A window longer than the recording (as end_to_end_test.cc), a diagnosis once the error has
@@ -164,20 +132,6 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
   bool applied = false;
   for (const auto& p : status.proposals()) applied |= p.test_cell() == cell && p.state() == "applied";
   EXPECT_TRUE(applied);
-}
-
-/// The monitor's status from `status --json` (one monitor on the test's domain), after
-/// `ready` holds for it or 30 s.
-v1::LiveStatus wait_for_status(const std::function<bool(const v1::LiveStatus&)>& ready) {
-  v1::LiveStatus status;
-  const auto until = std::chrono::steady_clock::now() + 30s;
-  do {
-    const auto shown = run_gearcoupling(on_test_domain({"status", "--json", "--discovery-s", "0.5"}));
-    EXPECT_EQ(shown.exit_code, 0) << shown.err;
-    status = parse_json_line<v1::LiveStatus>(shown.out);
-    if (status.monitors_size() == 1 && ready(status)) break;
-  } while (std::chrono::steady_clock::now() < until);
-  return status;
 }
 
 void replay_hidden(const std::string& cell, const std::string& speed = "20") {
@@ -289,6 +243,73 @@ TEST_F(LiveTest, TheMonitorStopsPromptlyInTheMiddleOfADiagnosis) {
   ASSERT_EQ(diagnosing.monitors(0).diagnosing(), cell);
   monitor->signal(SIGTERM);
   EXPECT_EQ(monitor->wait_exit(5.0), 0);
+}
+
+// A monitor killed (SIGKILL) while it diagnoses, and started again: no crash; the new monitor
+// serves the test cell that comes back and proposes for it from its own diagnosis; nothing for
+// the cell that did not come back; and nothing the killed monitor published (TRANSIENT_LOCAL:
+// its status, proposals and health) is taken as current: a new reader never gets it, and a
+// reader that held it across the kill (a dashboard's) drops it once the killed participant's
+// lease (3 s on loopback) lapses.
+TEST_F(LiveTest, AMonitorKilledMidDiagnosisRestartsAndProposesOnlyForTheCellThatCameBack) {
+  status::MonitorBoard board(participant_.get());   // a dashboard's reader, alive across the kill
+  auto first = start_monitor(monitor_args());
+  std::thread gone_replay([] { replay_hidden("gone"); });
+  replay_hidden("back");
+  gone_replay.join();
+  const v1::LiveStatus diagnosing = wait_for_status(
+      [](const v1::LiveStatus& s) { return !s.monitors(0).diagnosing().empty(); });
+  ASSERT_EQ(diagnosing.monitors_size(), 1);
+  ASSERT_FALSE(diagnosing.monitors(0).diagnosing().empty());
+  const std::string killed = diagnosing.monitors(0).monitor_id();
+  first->signal(SIGKILL);
+  EXPECT_EQ(first->wait_exit(10.0), 128 + SIGKILL);
+
+  std::string log;
+  auto second = start_monitor(monitor_args(), &log);
+  replay_hidden("back");
+  const v1::LiveStatus serving = wait_for_status([&](const v1::LiveStatus& s) {
+    return s.monitors(0).monitor_id() != killed && s.test_cells_size() == 1 &&
+           s.test_cells(0).counts().taken() == kRecordingSamples;
+  });
+  ASSERT_EQ(serving.monitors_size(), 1);
+  const std::string restarted = serving.monitors(0).monitor_id();
+  ASSERT_NE(restarted, killed);
+  ASSERT_EQ(serving.test_cells_size(), 1);   // a new reader never sees the killed monitor's cells
+  EXPECT_EQ(serving.test_cells(0).test_cell(), "back");
+  EXPECT_EQ(serving.test_cells(0).monitor_id(), restarted);
+  EXPECT_EQ(serving.test_cells(0).model().model_name(), "paper");
+
+  const auto proposal = wait_for_proposal(
+      "back", [&](const v1::ProposalRecord& p) { return p.monitor_id() == restarted; }, 60s);
+  ASSERT_TRUE(proposal.has_value());
+  EXPECT_EQ(proposal->monitor_id(), restarted);
+  EXPECT_EQ(proposal->state(), "standing");
+  EXPECT_EQ(proposal->effects(), "eccentricity");
+
+  // The reader that held the killed monitor's samples: its status and its proposals are gone,
+  // the cell that did not come back is no longer alive, the one that did is the new monitor's.
+  const auto until = std::chrono::steady_clock::now() + 30s;
+  auto killed_dropped = [&] {
+    for (const auto& m : board.monitors()) if (m.monitor_id() == killed) return false;
+    for (const auto& p : board.proposals()) if (p.monitor_id() != restarted) return false;
+    return true;
+  };
+  while (!killed_dropped() && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(100ms);
+  EXPECT_TRUE(killed_dropped());
+  for (const auto& p : board.proposals()) EXPECT_EQ(p.test_cell(), "back");
+  // Not alive: Cyclone unregisters a lost writer's instances at the reader, and disposes them
+  // (autodispose_unregistered_instances, true by default), so the board says "gone".
+  auto not_alive = [](const status::HealthView& h) { return h.stale || h.disposed; };
+  const auto gone = health_.wait_for("gone", not_alive, 30s);
+  ASSERT_TRUE(gone.has_value());
+  EXPECT_TRUE(not_alive(*gone));
+
+  const v1::LiveStatus after = wait_for_status([](const v1::LiveStatus&) { return true; });
+  ASSERT_EQ(after.monitors_size(), 1);
+  EXPECT_EQ(after.monitors(0).proposals_published(), 1u);
+  for (const auto& p : after.proposals()) EXPECT_EQ(p.test_cell(), "back");
+  EXPECT_TRUE(second->running()) << read_file(log);
 }
 
 // Issue 23's leftover: the test cells refused beyond --max-cells and the batches written from

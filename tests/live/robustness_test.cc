@@ -1,9 +1,10 @@
 // The monitor survives what a test cell does to it (issue 11): a test cell that stops, time
 // going backwards, NaN and garbage, a model swap every 100 ms, a restart of the service or of
-// the monitor itself.
+// the monitor itself, with its audit trail on disk (whole, or damaged).
 #include <signal.h>
 
 #include <atomic>
+#include <filesystem>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -11,7 +12,9 @@
 #include "gearcoupling.h"
 #include "live/live_qos.h"
 #include "live/model_swap_publisher.h"
+#include "live/swap_audit_file.h"
 #include "tests/live/live_fixture.h"
+#include "tests/live/live_status.h"
 #include "tests/live/sample_stream.h"
 
 namespace gc::test {
@@ -185,6 +188,111 @@ TEST_F(LiveTest, ARestartedMonitorResumesWithTheLatestModelSwap) {
   EXPECT_EQ(health->lost, 0u);   // counted from the first sample it saw
 }
 
+/// A new empty directory for a monitor's --state-dir.
+std::string new_state_dir() {
+  const std::string dir = cli::testing::temp_path("state");
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Issue 25's leftover: with --state-dir the audit trail outlives the monitor. Two swaps (the
+// CLI's, and a writer of the test's that stays alive), a SIGKILL, a new monitor on the same
+// directory: its status shows both swaps; the live writer's swap, which the new monitor gets
+// again (TRANSIENT_LOCAL) and puts in force again, is not audited a second time.
+TEST_F(LiveTest, TheAuditTrailOutlivesAKilledMonitor) {
+  const std::string state_dir = new_state_dir();
+  const std::vector<std::string> args = {"--health-period-s", "0.1", "--state-dir", state_dir};
+  live::MeasurementPublisher publisher(participant_.get(), "audited");
+  auto first = start_monitor(args);
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  publish_stream(publisher, paper_samples(), 300, 2000.0);
+  ASSERT_TRUE(health_.wait_for("audited", [](const HealthView& h) { return h.taken == 300; }, 10s));
+  const auto swap = cli::testing::run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", "audited", "--model", "paper_downwind", "--wait-s", "10"}));
+  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+  live::ModelSwapPublisher swaps(participant_.get(), {"audited"}, "by=tester@bench;source=file mu012.textproto");
+  ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
+  swaps.publish("audited", variant_text("mu012", 0.12));
+  const v1::LiveStatus before = wait_for_status(
+      [](const v1::LiveStatus& s) { return s.monitors(0).swaps() == 2; });
+  ASSERT_EQ(before.monitors_size(), 1);
+  ASSERT_EQ(before.monitors(0).recent_swaps_size(), 2);
+  const std::string killed = before.monitors(0).monitor_id();
+  first->signal(SIGKILL);
+  ASSERT_EQ(first->wait_exit(10.0), 128 + SIGKILL);
+
+  auto second = start_monitor(args);
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  std::this_thread::sleep_for(300ms);   // the live writer's swap reaches the new monitor first
+  publish_stream(publisher, paper_samples(), 300, 2000.0, 300);
+  const v1::LiveStatus after = wait_for_status([&](const v1::LiveStatus& s) {
+    return s.monitors(0).monitor_id() != killed && s.test_cells_size() == 1 &&
+           s.test_cells(0).model().model_name() == "mu012";
+  });
+  ASSERT_EQ(after.monitors_size(), 1);
+  ASSERT_EQ(after.test_cells_size(), 1);
+  EXPECT_EQ(after.test_cells(0).model().model_name(), "mu012");   // the live writer's, again
+  const v1::MonitorRecord& m = after.monitors(0);
+  EXPECT_EQ(m.swaps(), 0u);   // none taken by this monitor: the trail is the killed one's
+  ASSERT_EQ(m.recent_swaps_size(), 2);
+  for (int i = 0; i < 2; ++i) {
+    const v1::SwapAuditRecord& was = before.monitors(0).recent_swaps(i);
+    const v1::SwapAuditRecord& is = m.recent_swaps(i);
+    EXPECT_EQ(is.test_cell(), "audited");
+    EXPECT_EQ(is.by(), was.by());
+    EXPECT_EQ(is.source(), was.source());
+    EXPECT_EQ(is.model_before(), was.model_before());
+    EXPECT_EQ(is.model_after(), was.model_after());
+    EXPECT_DOUBLE_EQ(is.at_unix_s(), was.at_unix_s());
+    EXPECT_DOUBLE_EQ(is.before_msy_rmse_nm(), was.before_msy_rmse_nm());
+  }
+  EXPECT_NE(m.recent_swaps(0).by().find('@'), std::string::npos);   // the CLI's USER@HOST
+  EXPECT_EQ(m.recent_swaps(0).model_after(), "paper_downwind");
+  EXPECT_EQ(m.recent_swaps(1).by(), "tester@bench");
+  EXPECT_EQ(m.recent_swaps(1).source(), "file mu012.textproto");
+  EXPECT_EQ(m.recent_swaps(1).model_before(), "paper_downwind");
+  EXPECT_EQ(m.recent_swaps(1).model_after(), "mu012");
+}
+
+// A damaged audit file (a line changed, a line of garbage, a last line torn by a kill) is
+// reported in the log, line by line, and the monitor serves on with the records that are whole;
+// the torn tail is cut off, so the next swap starts on its own line.
+TEST_F(LiveTest, ADamagedAuditFileIsLoggedAndTheMonitorServesOnWithTheWholeRecords) {
+  const std::string state_dir = new_state_dir();
+  live::SwapEntry entry;
+  entry.id = 0x1234;
+  entry.test_cell = "damaged";
+  entry.at = std::chrono::system_clock::now();
+  entry.by = "alice@bench";
+  entry.source = "file /etc/gearcoupling/models/dyno 1.textproto";
+  entry.model_before = "paper";
+  entry.model_after = "dyno1";
+  const std::string whole = live::audit_line(live::swap_record_payload(entry));
+  std::string changed = whole;
+  changed[changed.find("alice")] = 'A';
+  const std::string garbage = "hello, audit\n";
+  const std::string torn = whole.substr(0, whole.size() / 2);
+  cli::testing::write_file(state_dir + "/swap_audit.log", whole + changed + garbage + torn);
+
+  std::string log;
+  auto monitor = start_monitor({"--health-period-s", "0.1", "--state-dir", state_dir}, &log);
+  live::MeasurementPublisher publisher(participant_.get(), "damaged");
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  publish_stream(publisher, paper_samples(), 300, 2000.0);
+  const v1::LiveStatus status = wait_for_status(
+      [](const v1::LiveStatus& s) { return s.test_cells_size() == 1 && s.test_cells(0).counts().taken() == 300; });
+  ASSERT_EQ(status.monitors_size(), 1);
+  ASSERT_EQ(status.monitors(0).recent_swaps_size(), 1);
+  EXPECT_EQ(status.monitors(0).recent_swaps(0).by(), "alice@bench");
+  EXPECT_EQ(status.monitors(0).recent_swaps(0).source(), entry.source);
+  EXPECT_TRUE(monitor->running());
+  const std::string logged = read_file(log);
+  EXPECT_NE(logged.find("line 2 skipped: hash"), std::string::npos) << logged;
+  EXPECT_NE(logged.find("line 3 skipped: version"), std::string::npos) << logged;
+  EXPECT_NE(logged.find("line 4 is torn"), std::string::npos) << logged;
+  EXPECT_EQ(read_file(state_dir + "/swap_audit.log"), whole + changed + garbage);
+}
+
 TEST_F(LiveTest, TheMonitorDoesNotDependOnTheServiceRestarting) {
   auto service = std::make_unique<ServiceProcess>();
   auto monitor = start_monitor({"--health-period-s", "0.1"});
@@ -212,6 +320,9 @@ TEST(Monitor, RefusesABadFlagOrModelWithExitTwoAndTheReason) {
   auto bad_model = start_monitor({"--cell", "c1=" + model}, &log);
   EXPECT_EQ(bad_model->wait_exit(20.0), 2);
   EXPECT_NE(read_file(log).find("mu0"), std::string::npos) << read_file(log);
+  auto no_state_dir = start_monitor({"--state-dir", cli::testing::temp_path("absent")}, &log);
+  EXPECT_EQ(no_state_dir->wait_exit(20.0), 2);
+  EXPECT_NE(read_file(log).find("--state-dir"), std::string::npos) << read_file(log);
 }
 
 }  // namespace

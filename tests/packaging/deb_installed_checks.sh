@@ -122,8 +122,10 @@ remote_call "after SIGHUP"
 # an administrator would.
 sed -i 's/^model = "paper"$/model = "paper_downwind"/' /etc/gearcoupling/monitor.conf
 sed -i 's/^listen = "127.0.0.1:8080"$/listen = "127.0.0.1:8181"/' /etc/gearcoupling/dashboard.conf
+# The unit's StateDirectory=gearcoupling, as systemd makes it: the audit trail's directory.
+install -d -o gearcoupling -g gearcoupling -m 0750 /var/lib/gearcoupling
 read -r -a command <<<"$(exec_start gearcoupling-monitor)"
-"${as_unit_user[@]}" "${command[@]}" 2>"$deb_dir/monitor.log" &
+STATE_DIRECTORY=/var/lib/gearcoupling "${as_unit_user[@]}" "${command[@]}" 2>"$deb_dir/monitor.log" &
 pids+=($!)
 read -r -a command <<<"$(exec_start gearcoupling-dashboard)"
 "${as_unit_user[@]}" "${command[@]}" >"$deb_dir/dashboard.out" 2>"$deb_dir/dashboard.log" &
@@ -140,6 +142,8 @@ done
 cat "$deb_dir/dashboard.out" "$deb_dir/dashboard.log" | grep -qF "$installed" || fail "the dashboard does not use the installed configuration"
 grep -qF "$installed" "$deb_dir/monitor.log" || fail "the monitor does not use the installed configuration"
 grep -q "on domain 0, model paper_downwind by default" "$deb_dir/monitor.log" || fail "the monitor did not read /etc/gearcoupling/monitor.conf"
+grep -q "swap audit /var/lib/gearcoupling/swap_audit.log: 0 swaps loaded" "$deb_dir/monitor.log" ||
+  fail "the monitor keeps no audit trail in its unit's StateDirectory"
 
 # Building against the installed -dev package, without Cyclone's -dev package.
 DEBIAN_FRONTEND=noninteractive dpkg -r --force-depends cyclonedds-dev >"$deb_dir/dpkg-remove.log" 2>&1 ||
@@ -165,7 +169,7 @@ pids=()
 # Purge: nothing of the packages stays but the user (docs/deploy.md).
 DEBIAN_FRONTEND=noninteractive dpkg --purge "${packages[@]}" >"$deb_dir/dpkg-purge.log" 2>&1 ||
   fail "dpkg --purge: $(tail -5 "$deb_dir/dpkg-purge.log")"
-for path in /etc/gearcoupling /usr/bin/gearcoupling /usr/share/gearcoupling /usr/include/gearcoupling \
+for path in /etc/gearcoupling /var/lib/gearcoupling /usr/bin/gearcoupling /usr/share/gearcoupling /usr/include/gearcoupling \
     /usr/lib/python3/dist-packages/gearcoupling /lib/systemd/system/gearcoupling-service.service; do
   [ ! -e "$path" ] || fail "$path is left after the purge"
 done

@@ -17,6 +17,7 @@
 
 #include "clients/status/cell_board.h"
 #include "clients/status/monitor_board.h"
+#include "live/live_names.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
 #include "live/measurement_publisher.h"
@@ -162,6 +163,59 @@ TEST_F(LiveRoles, OnlyTheOperatorMayApplyTheMonitorsProposal) {
   ASSERT_TRUE(applied.has_value());
   EXPECT_EQ(applied->state(), "applied") << applied->state_reason();
   EXPECT_NE(applied->state_reason().find("operator-o"), std::string::npos) << applied->state_reason();
+}
+
+// Issue 25's leftover: who swapped. The writer's USER_DATA "by=" is whatever the swapper says;
+// the operator identity the audit trail names beside it comes from the writer's partition
+// gearcoupling.live.operator.NAME, which only operator-NAME's grant allows: operator-o may not
+// make a swap writer in operator p's partition (its publisher falls back to the cell's partition
+// alone), so a swap claiming p is audited with no identity, and o's swap names operator-o
+// whatever its USER_DATA claims.
+TEST_F(LiveRoles, TheAuditTrailNamesTheOperatorIdentityTheAccessControlAuthenticated) {
+  const auto monitor = start_monitor({"--no-diagnosis"});
+  const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
+  const Entity op = operator_domain.participant();
+
+  // The grant: the cell's and its own operator partition together, not another operator's.
+  const Entity topic = live::make_model_topic(op.get());
+  for (const char* other : {"o", "p"}) {
+    const Entity publisher =
+        live::make_publisher_in(op.get(), {live::cell_partition("c"), live::operator_partition(other)});
+    const dds_entity_t writer = dds_create_writer(publisher.get(), topic.get(), nullptr, nullptr);
+    if (writer > 0) dds_delete(writer);
+    EXPECT_EQ(writer > 0, std::string(other) == "o") << other << ": " << dds_strretcode(writer);
+    if (std::string(other) == "p") {
+      EXPECT_EQ(writer, DDS_RETCODE_NOT_ALLOWED_BY_SECURITY);
+    }
+  }
+
+  const std::string paper = cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper.textproto");
+  const std::string downwind = cli::testing::read_file(GC_SOURCE_DIR "/data/models/paper_downwind.textproto");
+  live::ModelSwapPublisher as_o(op.get(), {"c"}, "by=mallory@nowhere;source=file paper", "o");
+  ASSERT_TRUE(as_o.wait_for_readers(1, 30s));
+  as_o.publish("c", paper);
+  status::MonitorBoard operator_view(op.get());
+  auto swaps_seen = [&](int count) {
+    for (int i = 0; i < 300; ++i) {
+      for (const auto& m : operator_view.monitors()) {
+        if (m.recent_swaps_size() >= count) return m;
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    return status::v1::MonitorRecord{};
+  };
+  ASSERT_EQ(swaps_seen(1).recent_swaps_size(), 1) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  live::ModelSwapPublisher claiming_p(op.get(), {"c"}, "by=operator-p;source=file downwind", "p");
+  ASSERT_TRUE(claiming_p.wait_for_readers(1, 30s));
+  claiming_p.publish("c", downwind);
+  const status::v1::MonitorRecord m = swaps_seen(2);
+  ASSERT_EQ(m.recent_swaps_size(), 2) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_EQ(m.recent_swaps(0).by(), "mallory@nowhere");       // the claim, as given
+  EXPECT_EQ(m.recent_swaps(0).operator_identity(), "operator-o");
+  EXPECT_EQ(m.recent_swaps(1).by(), "operator-p");            // a claim the grant did not back
+  EXPECT_EQ(m.recent_swaps(1).operator_identity(), "");
+  EXPECT_EQ(m.recent_swaps(1).model_after(), "paper_downwind");
+  EXPECT_TRUE(monitor->running());
 }
 
 struct Permission {
