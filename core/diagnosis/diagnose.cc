@@ -247,13 +247,21 @@ FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSet
 
 /// True when the formula alone does not beat the effect followed by a formula of what the effect
 /// leaves (paired t < 2): the formula's advantage is that it also takes a second mechanism, which
-/// the next round finds after the effect (physics first).
-bool effect_explains_part(const CandidateScore& effect, const CandidateScore& formula,
+/// the next round finds after the effect (physics first). But not when the effect is idle beside
+/// that second formula: its terms fitted without the effect do as well as with it (paired t < 2).
+/// Then the effect only took a slice of what those terms say (a gain and offset of both channels
+/// took a fifth of a rig's travel-sign hysteresis, and stayed in the model as a wrong calibration).
+bool effect_explains_part(const CandidateScore& effect, const CandidateScore& formula, const Eigen::MatrixX2d& base,
                           std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
                           const Folds& folds, const FormulaSettings& settings) {
   const std::optional<CandidateScore> rest = formula_candidate(observations, search, effect.held_out_residual, folds, settings);
   const Eigen::MatrixX2d& both = rest ? rest->held_out_residual : effect.held_out_residual;
-  return paired_block_test(both, formula.held_out_residual, folds.block_of, folds.blocks).t < 2.0;
+  if (paired_block_test(both, formula.held_out_residual, folds.block_of, folds.blocks).t >= 2.0) return false;
+  if (!rest) return true;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : rest->fit->parameters) terms.push_back(p.name);
+  const std::optional<Eigen::MatrixX2d> without_effect = formula_held_out(observations, search, base, terms, folds);
+  return !without_effect || paired_block_test(*without_effect, both, folds.block_of, folds.blocks).t >= 2.0;
 }
 
 std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
@@ -337,7 +345,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     // held on a physical bound, which cannot say how far beyond it the truth lies, yields to it.
     round.formula_chosen = at_bound(effect) || (t.t >= settings.formula_over_effect_t &&
                                                 formula_gain >= settings.formula_over_effect_gain * effect_gain);
-    if (round.formula_chosen && !at_bound(effect) && effect_explains_part(effect, *round.formula, observations, search,
+    if (round.formula_chosen && !at_bound(effect) && effect_explains_part(effect, *round.formula, base, observations, search,
                                                                             folds, formula_settings(round, settings))) {
       round.formula_chosen = false;
     }

@@ -243,6 +243,20 @@ void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Ma
 }
 
 /// The design without the terms that vary as slowly as a drift (FormulaSettings::fast_terms_only).
+/// The share of a stacked column's squares that is each channel's mean over the rows.
+double level_share(const Eigen::VectorXd& column) {
+  const Eigen::Index n = column.size() / 2;
+  const double squares = column.squaredNorm();
+  if (squares <= 0.0) return 0.0;
+  const double y = column.head(n).mean(), z = column.tail(n).mean();
+  return static_cast<double>(n) * (y * y + z * z) / squares;
+}
+
+/// A column with more than this share of its squares in its level over the rows carries a level
+/// (a constant, T on one channel, T along a direction that holds), which the fast-terms search
+/// leaves to the drift; a ripple, a cycle or a rate has next to none.
+constexpr double kMostLevelShare = 0.05;
+
 TermDesign fast_terms(TermDesign design) {
   TermDesign out;
   std::vector<Eigen::Index> keep;
@@ -250,8 +264,11 @@ TermDesign fast_terms(TermDesign design) {
     const std::string& name = design.terms[j];
     const ExpressionTerm* term = find_expression_term(name);
     const bool slow_cycle = term && term->period_s >= kSlowestFastCycleS;
-    const bool level_on_one_channel = name == "constant_on_y" || name == "constant_on_z";
-    if (slow_cycle || level_on_one_channel || (drifts_slowly(name) && !(term && term->period_s > 0.0))) continue;
+    // A term that carries a level takes the zero drift's level over the run: the claim keeps its
+    // level, which the next run does not share (and the search, on the levels taken out, would
+    // claim it again round after round).
+    const bool carries_level = level_share(design.columns.col(static_cast<Eigen::Index>(j))) > kMostLevelShare;
+    if (slow_cycle || carries_level || (drifts_slowly(name) && !(term && term->period_s > 0.0))) continue;
     out.terms.push_back(name);
     keep.push_back(static_cast<Eigen::Index>(j));
   }
@@ -377,19 +394,6 @@ std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observation
   fit.sum_of_squares = r.squaredNorm();
   fit.rows = rows.size();
   return fit;
-}
-
-Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual) {
-  return residual.rowwise() - residual.colwise().mean();
-}
-
-/// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
-void remove_channel_levels(Eigen::MatrixXd& columns) {
-  const Eigen::Index n = columns.rows() / 2;
-  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
-    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
-    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
-  }
 }
 
 Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual) {

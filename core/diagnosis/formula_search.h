@@ -36,8 +36,9 @@ struct FormulaSettings {
   /// searched on.
   std::optional<std::vector<std::string>> time_terms;
   /// Offer only terms that vary faster than a slow drift: no t, t^2, t^3, steps, temperature,
-  /// cycles of 10 s and longer, or a constant on one channel (the slowest of all: a zero drift's
-  /// level over one run). For the search on the dense rows of a long recording: more rows add
+  /// cycles of 10 s and longer, or any term whose column carries a level over the rows (more than
+  /// 5 % of its squares in its mean on each channel: a constant, torque on one channel; a zero
+  /// drift's level over one run is the slowest drift of all). For the search on the dense rows of a long recording: more rows add
   /// independent samples of a fast term, not of a slow one, whose effective count is set by the
   /// noise's drift; there a slow term fitted the bridge's wander (a temperature term and a step
   /// beside a 0.4 Hz pickup; a 705 N·m constant, the training run's drift level, that cost the
@@ -66,6 +67,12 @@ TermDesign term_design(std::span<const RecordedSample> observations, std::span<c
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                 const Folds& folds, const FormulaSettings& settings);
+
+/// The held-out residual of the formula over `terms` on `residual` (each fold fitted on its
+/// training rows, as formula_candidate scores); nullopt when a term cannot be evaluated there.
+std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample> observations,
+                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                                 const std::vector<std::string>& terms, const Folds& folds);
 
 /// The formula over `terms` fitted by least squares on `rows` (e.g. the refit rows), with standard
 /// errors; nullopt when a coefficient leaves its bound.

@@ -327,5 +327,45 @@ TEST(DiagnosisRules, FindsAMomentInProportionToTheRateOfMisalignment) {
   EXPECT_LT(found->held_out_rmse_nm, 1.1 * kNoiseNm);
 }
 
+// On the dense rows of a long recording only terms faster than a drift are offered
+// (FormulaSettings::fast_terms_only): within one run a bridge's zero drift is a level, and a term
+// that carries one (a constant, T on one channel with the torque positive) would take it, and the
+// next run would pay. Here a 3 kN·m level sits on M_sy' beside a ripple turning with the shaft.
+TEST(DiagnosisRules, TheFastTermsSearchLeavesALevelToTheDrift) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<MeasurementSample> inputs = sweeps(testing::nrel_upwind());
+  for (MeasurementSample& s : inputs) s.speed_rpm = 12.0;
+  std::vector<RecordedSample> observations = record(model, inputs, 71);
+  for (RecordedSample& o : observations) {
+    const double phi = *o.input.rotation_phase_rad;
+    o.measured.y_nm += 3000.0 + 1500.0 * std::cos(2.0 * phi + 0.8);
+    o.measured.z_nm += 1500.0 * std::sin(2.0 * phi + 0.8);
+  }
+  const std::vector<std::size_t> rows = all_rows(observations.size());
+  const Folds folds = blocked_folds(rows.size(), 5, 20);
+  const Eigen::MatrixX2d residual = model_residuals(model, observations, rows, serial_for()).residual;
+  const auto names = [](const CandidateScore& c) {
+    std::string text;
+    for (const ParameterEstimate& p : c.fit->parameters) text += p.name + " ";
+    return text;
+  };
+  // Every term offered: the level is there to take.
+  const auto every = formula_candidate(observations, rows, residual, folds, {});
+  ASSERT_TRUE(every.has_value());
+  EXPECT_NE(names(*every).find("constant_"), std::string::npos) << names(*every);
+  // Fast terms only: the ripple as a forward whirl, and nothing that carries the level.
+  FormulaSettings fast;
+  fast.fast_terms_only = true;
+  const auto found = formula_candidate(observations, rows, residual, folds, fast);
+  ASSERT_TRUE(found.has_value());
+  const std::string terms = names(*found);
+  EXPECT_NE(terms.find("order_2_forward_cos"), std::string::npos) << terms;
+  EXPECT_NE(terms.find("order_2_forward_sin"), std::string::npos) << terms;
+  for (const char* level : {"constant_", "torque_on_", "torque_along_", "misalignment_on_"}) {
+    EXPECT_EQ(terms.find(level), std::string::npos) << terms;
+  }
+  EXPECT_LT(found->held_out_rmse_nm, 1.1 * kNoiseNm);  // about each channel's mean
+}
+
 }  // namespace
 }  // namespace gc

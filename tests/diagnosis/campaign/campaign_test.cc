@@ -333,6 +333,10 @@ void run_case(const std::string& name) {
     std::ofstream(table, std::ios::app) << row << "\n";
   }
 
+  for (const std::string& pattern : c.must_not_claim) {
+    const std::regex re(pattern);
+    for (const auto& n : names) EXPECT_FALSE(std::regex_search(n, re)) << c.name << " claimed " << n << "\nclaims: " << rounds_text;
+  }
   if (open_cases().count(c.name)) {
     // A case the diagnosis does not pass yet (docs/diagnosis.md, "Open cases"): it must do no harm,
     // and the list must not go stale: a case that passes every check is taken off it.

@@ -34,6 +34,9 @@ struct Case {
   std::string name;
   std::string truth_text;              ///< the hidden effect in words
   std::vector<NameGroup> must_name;    ///< every group must be matched (empty: claim nothing)
+  /// Claims the truth rules out (regexes on the claimed names), checked on open cases too: a
+  /// library effect that took a slice of the truth and stayed in the model as a wrong answer.
+  std::vector<std::string> must_not_claim;
   NoiseSpec noise;
   std::size_t training_rows = 14150;
   std::size_t held_out_rows = 14150;
