@@ -126,9 +126,16 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
   DiagnosisSettings settings = given_settings;
   for (const ParameterValues& hint : hints) settings.cross_validation.fit.hints.push_back(hint);
   std::vector<CandidateScore> ranking;
+  // An effect that needs an input no search row has changes nothing here (and costs a fit).
+  const auto lacks_input = [&](const EffectInfo& info) {
+    return std::any_of(info.requires_inputs.begin(), info.requires_inputs.end(), [&](OptionalInput input) {
+      return std::none_of(search.begin(), search.end(), [&](std::size_t r) { return has_input(observations[r].input, input); });
+    });
+  };
   for (const EffectRegistration& registration : settings.library) {
     // The formula has its own stage; an effect the model has is a refinement below.
     if (registration.info->name == kExpressionEffect || model.has_effect(registration.info->name)) continue;
+    if (lacks_input(*registration.info)) continue;
     ranking.push_back(score_candidate(model, registration, observations, search, base, folds, parallel,
                                       settings.cross_validation));
   }

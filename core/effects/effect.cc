@@ -26,6 +26,15 @@ Effect::Effect(const EffectInfo& info, const ParameterValues& values) : info_(in
   }
 }
 
+bool has_input(const MeasurementSample& sample, OptionalInput input) {
+  switch (input) {
+    case OptionalInput::speed: return sample.speed_rpm.has_value();
+    case OptionalInput::temperature: return sample.temperature_c.has_value();
+    case OptionalInput::rotation_phase: return sample.rotation_phase_rad.has_value();
+  }
+  return false;
+}
+
 double Effect::value(const std::string& parameter) const {
   for (std::size_t i = 0; i < info_.parameters.size(); ++i) {
     if (info_.parameters[i].name == parameter) return values_[i];

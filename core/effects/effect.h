@@ -65,11 +65,20 @@ double wrap_periodic(double value, double period);
 /// within the bounds.
 std::pair<double, double> plausible_range(const ParameterSpec& spec, double jam_angle_rad);
 
+/// A measured input that a recording may lack (core/measurement_sample.h's optionals).
+enum class OptionalInput { speed, temperature, rotation_phase };
+
+/// Whether `sample` has `input`.
+bool has_input(const MeasurementSample& sample, OptionalInput input);
+
 struct EffectInfo {
   std::string name;     ///< registry name, snake_case
   std::string physics;  ///< what it represents, one paragraph
   std::string source;   ///< where the paper discusses it
   std::vector<ParameterSpec> parameters;
+  /// Inputs without which the effect changes nothing (a thermal growth without the oil
+  /// temperature): on a recording that lacks one, fitting it is wasted work.
+  std::vector<OptionalInput> requires_inputs = {};
 };
 
 using ParameterValues = std::map<std::string, double>;

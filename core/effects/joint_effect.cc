@@ -23,6 +23,7 @@ EffectInfo make_info(const std::vector<EffectRegistration>& members) {
   for (const EffectRegistration& m : members) {
     info.physics += (info.physics.empty() ? "" : " Together with: ") + m.info->physics;
     info.source += (info.source.empty() ? "" : "; ") + m.info->source;
+    info.requires_inputs.insert(info.requires_inputs.end(), m.info->requires_inputs.begin(), m.info->requires_inputs.end());
     for (ParameterSpec spec : m.info->parameters) {
       spec.name = m.info->name + kSeparator + spec.name;
       info.parameters.push_back(std::move(spec));

@@ -21,7 +21,8 @@ const EffectInfo kInfo{
      {"reference_temperature_c", "degC", "theta_0, the temperature at which the rig was aligned", -40.0, 150.0,
       40.0, 40.0, {0.0, 80.0}, false, 0.0, "the temperature of the alignment"},
      {"direction_rad", "rad", "beta_t, the direction of the growth, as beta", -2.0 * M_PI, 2.0 * M_PI, 0.0, 0.0,
-      {-M_PI, M_PI}, false, 2.0 * M_PI}}};
+      {-M_PI, M_PI}, false, 2.0 * M_PI}},
+    {OptionalInput::temperature}};
 
 class ThermalMisalignment final : public Effect {
  public:

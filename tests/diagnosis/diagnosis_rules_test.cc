@@ -367,5 +367,25 @@ TEST(DiagnosisRules, TheFastTermsSearchLeavesALevelToTheDrift) {
   EXPECT_LT(found->held_out_rmse_nm, 1.1 * kNoiseNm);  // about each channel's mean
 }
 
+// An effect that needs an input the recording lacks (a thermal growth without the oil
+// temperature) changes nothing there: it is not fitted, and not ranked.
+TEST(DiagnosisRules, AnEffectWhoseInputTheRecordingLacksIsNotFitted) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  const auto ranked = [](const Diagnosis& d, const std::string& name) {
+    for (const CandidateScore& c : d.rounds.front().ranking) if (c.info && c.info->name == name) return true;
+    return false;
+  };
+  const CouplingModel truth = model.with_effect(make_effect("hysteresis", {{"lag_rad", 0.0008}}));
+  std::vector<MeasurementSample> inputs = sweeps(testing::nrel_upwind());
+  const Diagnosis without = testing::diagnose_on_threads(model, record(truth, inputs, 79));
+  ASSERT_FALSE(without.rounds.empty());
+  EXPECT_FALSE(ranked(without, "thermal_misalignment"));
+  EXPECT_TRUE(ranked(without, "hysteresis"));
+  for (MeasurementSample& s : inputs) s.temperature_c = 40.0 + 10.0 * s.time_s / inputs.back().time_s;
+  const Diagnosis with = testing::diagnose_on_threads(model, record(truth, inputs, 79));
+  ASSERT_FALSE(with.rounds.empty());
+  EXPECT_TRUE(ranked(with, "thermal_misalignment"));
+}
+
 }  // namespace
 }  // namespace gc

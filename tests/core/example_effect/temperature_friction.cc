@@ -12,7 +12,8 @@ namespace {
 
 // 1. Describe the physics and the parameters: name, SI unit, meaning, bounds, neutral value
 //    (where the effect does nothing), default, and the plausible range (where a fitted value can
-//    still be called this physics; {} for the whole of the bounds).
+//    still be called this physics; {} for the whole of the bounds), and the measured inputs
+//    without which it changes nothing.
 const EffectInfo kInfo{
     "temperature_friction",
     "Tooth friction that falls as the oil warms and thins (or rises as it cools).",
@@ -20,7 +21,8 @@ const EffectInfo kInfo{
     {{"dmu_dT_per_k", "1/K", "change of mu per kelvin of oil temperature", -0.01, 0.01, 0.0, -0.001,
       {-0.005, 0.0}},
      {"reference_temperature_c", "deg C", "T_ref, where the effect adds nothing", -40.0, 150.0,
-      40.0, 40.0, {}}}};
+      40.0, 40.0, {}}},
+    {OptionalInput::temperature}};
 
 // 2. One class: read the parameters once, in the constructor; adjust in a const method.
 class TemperatureFriction final : public Effect {
