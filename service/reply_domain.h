@@ -27,8 +27,9 @@ namespace gc::service {
 class ReplyDomain {
  public:
   /// A new domain, seen on the network as DDS domain `domain`, with configuration `dds` (the
-  /// service's own), one participant and the five reply topics. Its local id is this process's
-  /// next unused one (above every real domain id). Throws protocol::DdsError.
+  /// service's own), one participant and the five reply topics. Its local id (the one Cyclone's
+  /// access control checks) is the highest of 0-230 not in use in this process and not
+  /// `domain`. Throws protocol::DdsError.
   ReplyDomain(int domain, const protocol::DdsConfig& dds);
   /// Deletes the domain with every entity in it (and what Cyclone kept for deleted ones), then
   /// hands the memory freed back to the system (malloc_trim): glibc keeps what a program frees
