@@ -73,10 +73,10 @@ class ReplyWriters {
   using MakeDomain = std::function<std::unique_ptr<ReplyDomain>()>;
   enum class Admission { kRun, kParked, kDropped, kForged };
 
-  /// Writers made in one reply domain before the next takes over. A domain grows by about
-  /// 1.4 kB of heap (what Cyclone keeps of the writers deleted and the clients gone) and 3.5 kB
-  /// of resident memory (freed but kept by glibc) for each client that came and went, both
-  /// returned when it is deleted: 256 clients bound that to about 1 MiB. A new domain costs a
+  /// Writers made in one reply domain before the next takes over. A domain's heap grows by 1-2
+  /// kB for each client that came and went (what Cyclone keeps of the writers deleted and of
+  /// the clients gone, measured ten clients a second), all freed when it is deleted: 256
+  /// clients bound that to well under 1 MiB. A new domain costs a
   /// participant that every client discovers, a few threads and sockets for the moment two
   /// domains overlap, and the move of every connected client's writers: at one client a second,
   /// once every 4 minutes.
