@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <set>
 
 #include "protocol/matching.h"
 #include "protocol/names.h"
 #include "protocol/qos.h"
+
+#include <spdlog/spdlog.h>
 
 namespace gc::service {
 
@@ -34,17 +37,52 @@ ParticipantKey participant_key_of(const dds_guid_t& guid) {
   return key;
 }
 
-ReplyWriters::ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-                           std::string instance_tag, std::size_t max_parked,
-                           std::function<void()> on_first_parked, double departed_memory_s)
-    : participant_(participant),
-      reply_topics_(reply_topics),
+ReplyWriters::ReplyWriters(MakeDomain make_domain, std::string instance_tag,
+                           std::size_t max_parked, std::function<void()> on_first_parked,
+                           double departed_memory_s, std::size_t writers_per_domain,
+                           double moved_writer_linger_s)
+    : make_domain_(std::move(make_domain)),
       instance_tag_(std::move(instance_tag)),
+      writers_per_domain_(std::max<std::size_t>(writers_per_domain, 1)),
+      moved_writer_linger_(std::chrono::duration_cast<Clock::duration>(
+          std::chrono::duration<double>(moved_writer_linger_s))),
       max_parked_(max_parked),
       on_first_parked_(std::move(on_first_parked)),
       departed_memory_(std::chrono::duration_cast<Clock::duration>(
           std::chrono::duration<double>(departed_memory_s))),
-      prune_at_(kDepartedPruneSize) {}
+      prune_at_(kDepartedPruneSize),
+      current_(std::make_shared<Generation>(Generation{make_domain_(), 0})) {}
+
+std::shared_ptr<ReplyWriters::Generation> ReplyWriters::generation_for_new_writer() {
+  if (current_->writers_made >= writers_per_domain_) {
+    auto next = std::make_shared<Generation>(Generation{make_domain_(), 0});
+    std::shared_ptr<Generation> replaced;  // released after mutex_: it may be the last reference
+    std::lock_guard lock(mutex_);
+    replaced = std::exchange(current_, std::move(next));
+    replaced_domains_ = true;
+    spdlog::info("reply writers: a new reply domain after {} writers in the last one",
+                 writers_per_domain_);
+  }
+  current_->writers_made += 1;
+  return current_;
+}
+
+ReplyWriters::Endpoint ReplyWriters::make_endpoint(std::shared_ptr<Generation> generation,
+                                                   const Key& key) const {
+  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(key.first));
+  Endpoint endpoint{std::move(generation), {}, {}};
+  const ReplyDomain& domain = *endpoint.generation->domain;
+  endpoint.publisher = Entity(check_dds(
+      dds_create_publisher(domain.participant(), partition.get(), nullptr), "dds_create_publisher"));
+  // Max blocking time 0: a write never waits for a client's acknowledgements; a full window
+  // returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog instead.
+  const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, 0.0);
+  endpoint.writer = Entity(check_dds(dds_create_writer(endpoint.publisher.get(),
+                                                       domain.reply_topic(key.second), qos.get(),
+                                                       nullptr),
+                                     "dds_create_writer"));
+  return endpoint;
+}
 
 void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculation,
                                    const ParticipantKey& owner) {
@@ -59,24 +97,14 @@ void ReplyWriters::reader_appeared(std::uint64_t client_id, Calculation calculat
     owners_[client_id][owner] += 1;
     Writer& entry = writers_[key];
     entry.readers += 1;
-    if (entry.writer) return;
+    if (entry.endpoint.writer) return;
   }
   // Created without mutex_: the request listener takes it (admit), and creating a writer may
   // wait for Cyclone's receive thread, which runs that listener (announcing the writer is a
   // reliable write). Only the dispatch loop creates and deletes writers, so none races this.
-  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(client_id));
-  Entity publisher(check_dds(dds_create_publisher(participant_, partition.get(), nullptr),
-                             "dds_create_publisher"));
-  // Max blocking time 0: a write never waits for a client's acknowledgements; a full window
-  // returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog instead.
-  const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, 0.0);
-  Entity writer(check_dds(
-      dds_create_writer(publisher.get(), reply_topics_[key.second], qos.get(), nullptr),
-      "dds_create_writer"));
+  Endpoint endpoint = make_endpoint(generation_for_new_writer(), key);
   std::lock_guard lock(mutex_);
-  Writer& entry = writers_[key];
-  entry.publisher = std::move(publisher);
-  entry.writer = std::move(writer);
+  writers_[key].endpoint = std::move(endpoint);
 }
 
 void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation,
@@ -93,7 +121,7 @@ void ReplyWriters::reader_gone(std::uint64_t client_id, Calculation calculation,
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
   if (found == writers_.end()) return;
   if (--found->second.readers > 0) return;
-  gone = std::move(found->second);
+  gone = std::move(found->second);  // its domain too, if it is a replaced one's last writer
   writers_.erase(found);
   const auto next = writers_.lower_bound({client_id, 0});
   if (next == writers_.end() || next->first.first != client_id) {
@@ -143,7 +171,9 @@ bool ReplyWriters::matched_locked(const Key& key) {
   if (found == writers_.end()) return false;
   Writer& entry = found->second;
   // Matching is asynchronous to the writer's creation, so ask Cyclone until it says yes.
-  if (!entry.matched) entry.matched = protocol::matched_reader_count(entry.writer.get()) > 0;
+  if (!entry.matched) {
+    entry.matched = protocol::matched_reader_count(entry.endpoint.writer.get()) > 0;
+  }
   return entry.matched;
 }
 
@@ -218,7 +248,66 @@ AdmissionDrops ReplyWriters::drops() const {
 dds_entity_t ReplyWriters::writer(std::uint64_t client_id, Calculation calculation) const {
   std::lock_guard lock(mutex_);
   const auto found = writers_.find({client_id, static_cast<int>(protocol::index_of(calculation))});
-  return found == writers_.end() ? 0 : found->second.writer.get();
+  return found == writers_.end() ? 0 : found->second.endpoint.writer.get();
+}
+
+bool ReplyWriters::move_writers(Clock::time_point now) {
+  std::vector<Lingering> over;  // deleted after mutex_ is released (reader_appeared says why)
+  std::vector<Key> to_move;
+  std::shared_ptr<Generation> current;
+  {
+    std::lock_guard lock(mutex_);
+    if (!replaced_domains_ && lingering_.empty()) return false;
+    current = current_;
+    bool outside_current = false;
+    for (auto& [key, entry] : writers_) {
+      if (!entry.endpoint.writer || entry.endpoint.generation == current) continue;
+      outside_current = true;
+      if (!entry.successor.writer) {
+        if (to_move.size() < kMovesPerCall) to_move.push_back(key);
+        continue;
+      }
+      // The successor takes over once it reaches every reader the old writer reaches: the
+      // client sees no gap, as both are this instance's writers in its partition.
+      if (protocol::matched_reader_count(entry.successor.writer.get()) <
+          protocol::matched_reader_count(entry.endpoint.writer.get())) {
+        continue;
+      }
+      lingering_.push_back({std::move(entry.endpoint), now + moved_writer_linger_});
+      entry.endpoint = std::exchange(entry.successor, Endpoint{});
+    }
+    replaced_domains_ = outside_current;
+    const auto first_over = std::partition(lingering_.begin(), lingering_.end(),
+                                           [now](const Lingering& l) { return l.until > now; });
+    std::move(first_over, lingering_.end(), std::back_inserter(over));
+    lingering_.erase(first_over, lingering_.end());
+  }
+  for (const Key& key : to_move) {
+    Endpoint successor = make_endpoint(current, key);  // without mutex_, as in reader_appeared
+    std::lock_guard lock(mutex_);
+    const auto found = writers_.find(key);
+    // The client may have left meanwhile: the successor then goes, after mutex_, with `over`.
+    if (found == writers_.end() || !found->second.endpoint.writer ||
+        found->second.successor.writer || found->second.endpoint.generation == current) {
+      over.push_back({std::move(successor), now});
+      continue;
+    }
+    found->second.successor = std::move(successor);
+  }
+  std::lock_guard lock(mutex_);
+  return replaced_domains_ || !lingering_.empty();
+}
+
+std::size_t ReplyWriters::domains() const {
+  std::lock_guard lock(mutex_);
+  std::set<const Generation*> alive{current_.get()};
+  for (const auto& [key, writer] : writers_) {
+    alive.insert(writer.endpoint.generation.get());
+    alive.insert(writer.successor.generation.get());
+  }
+  for (const Lingering& lingering : lingering_) alive.insert(lingering.endpoint.generation.get());
+  alive.erase(nullptr);
+  return alive.size();
 }
 
 std::size_t ReplyWriters::remembered_departures() const {

@@ -6,6 +6,13 @@
 // Every writer carries this instance's id as USER_DATA, by which a client knows this instance's
 // writer has matched its reader.
 //
+// The writers live in a ReplyDomain, not on the service's participant: Cyclone 0.10.2 keeps
+// memory for every writer deleted until its domain goes (service/reply_domain.h). After
+// `writers_per_domain` writers a new domain takes the new writers; the writers of clients still
+// there move to it (a successor writer in the new domain takes over once it has matched the
+// client's readers), and the old domain is deleted with its last writer. So clients coming and
+// going cost a bounded amount, whatever how many came.
+//
 // Match before compute: admit() lets a request reach the workers only once its reply writer is
 // matched. Until then the request is parked here, outside the workers, for a bounded time and in
 // a bounded number; release() hands over those whose reader appeared and drops the expired.
@@ -25,6 +32,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -35,6 +43,7 @@
 
 #include "protocol/calculation.h"
 #include "protocol/dds_entity.h"
+#include "service/reply_domain.h"
 
 namespace gc::service {
 
@@ -61,18 +70,35 @@ class ReplyWriters {
  public:
   using Clock = std::chrono::steady_clock;
   using Job = std::function<void()>;
+  using MakeDomain = std::function<std::unique_ptr<ReplyDomain>()>;
   enum class Admission { kRun, kParked, kDropped, kForged };
 
-  /// `reply_topics[index_of(c)]` is calculation c's reply topic on `participant`. At most
+  /// Writers made in one reply domain before the next takes over. A domain's heap grows by 1-2
+  /// kB for each client that came and went (what Cyclone keeps of the writers deleted and of
+  /// the clients gone, measured ten clients a second), all freed when it is deleted: 256
+  /// clients bound that to well under 1 MiB. A new domain costs a
+  /// participant that every client discovers, a few threads and sockets for the moment two
+  /// domains overlap, and the move of every connected client's writers: at one client a second,
+  /// once every 4 minutes.
+  static constexpr std::size_t kWritersPerDomain = 256;
+  /// Writers moved (successors made) per move_writers() call: a domain's turn never stalls the
+  /// dispatch loop for long, however many clients are connected.
+  static constexpr std::size_t kMovesPerCall = 16;
+
+  /// `make_domain()` makes the domain the writers are made in (ReplyDomain), at the start and
+  /// after every `writers_per_domain` writers. A moved client's old writer is deleted
+  /// `moved_writer_linger_s` after its successor took over: a worker, or the ReplyBacklog for up
+  /// to its hold time, may still be writing a reply with it. At most
   /// `max_parked` requests wait for their client's reader at once. `on_first_parked` is called
   /// (under no lock of this class) when a request is parked while none was: the dispatch loop
   /// then polls release() until none is left.
   /// A client whose readers all went is remembered (its late requests dropped at once) for
   /// `departed_memory_s`, then forgotten: clients that come and go (every CLI call is one) must
   /// not grow the service without bound.
-  ReplyWriters(dds_entity_t participant, std::array<dds_entity_t, 5> reply_topics,
-               std::string instance_tag, std::size_t max_parked,
-               std::function<void()> on_first_parked, double departed_memory_s = 60.0);
+  ReplyWriters(MakeDomain make_domain, std::string instance_tag, std::size_t max_parked,
+               std::function<void()> on_first_parked, double departed_memory_s = 60.0,
+               std::size_t writers_per_domain = kWritersPerDomain,
+               double moved_writer_linger_s = 2.0);
 
   /// A reader of `calculation`'s replies, of participant `owner`, appeared in `client_id`'s
   /// partition: make its writer.
@@ -110,17 +136,41 @@ class ReplyWriters {
   /// appears again, instead of spending work on them.
   void mark_departed(std::uint64_t client_id, double hold_s);
 
+  /// Moves up to kMovesPerCall writers of replaced domains to the current one (makes their
+  /// successors), hands over to the successors that have matched as many readers, and deletes
+  /// the old writers whose linger is over (a domain goes with its last writer). True while a
+  /// move is under way: call again soon. Dispatch loop only, as reader_appeared().
+  bool move_writers(Clock::time_point now);
+  /// Reply domains alive (the current one and the replaced ones some writer is still in).
+  std::size_t domains() const;
+
   /// Clients with at least one writer.
   std::size_t clients() const;
   /// Client ids remembered as departed or held (bounded: forgotten when their time is up).
   std::size_t remembered_departures() const;
 
  private:
-  struct Writer {
+  /// A reply domain and how many writers were made in it.
+  struct Generation {
+    std::unique_ptr<ReplyDomain> domain;
+    std::size_t writers_made = 0;
+  };
+  /// A writer in its own publisher (the client's partition), in a generation's domain.
+  struct Endpoint {
+    std::shared_ptr<Generation> generation;  ///< first: the domain outlives the entities in it
     protocol::Entity publisher;
     protocol::Entity writer;
+  };
+  struct Writer {
+    Endpoint endpoint;
+    Endpoint successor;    ///< in the current domain, while `endpoint` is in a replaced one
     int readers = 0;       ///< discovered readers of this (client, calculation)
     bool matched = false;  ///< a reader has matched it (sticky: it goes only with the reader)
+  };
+  /// A moved client's old writer, kept until `until` for the handles still in use.
+  struct Lingering {
+    Endpoint endpoint;
+    Clock::time_point until;
   };
   struct Parked {
     std::uint64_t sequence_number;
@@ -130,6 +180,10 @@ class ReplyWriters {
   };
   using Key = std::pair<std::uint64_t, int>;
 
+  /// The generation a new writer goes in: a new one once the current one has had its share
+  /// (its domain made without mutex_). Dispatch loop only.
+  std::shared_ptr<Generation> generation_for_new_writer();
+  Endpoint make_endpoint(std::shared_ptr<Generation> generation, const Key& key) const;
   bool matched_locked(const Key& key);
   bool departed_locked(std::uint64_t client_id, Clock::time_point now);
   bool held_locked(std::uint64_t client_id, const ParticipantKey& requester, Clock::time_point now);
@@ -138,14 +192,18 @@ class ReplyWriters {
   /// the next sweep waits until their number has doubled).
   void prune_locked(Clock::time_point now);
 
-  dds_entity_t participant_;
-  std::array<dds_entity_t, 5> reply_topics_;
+  MakeDomain make_domain_;
   std::string instance_tag_;
+  std::size_t writers_per_domain_;
+  Clock::duration moved_writer_linger_;
   std::size_t max_parked_;
   std::function<void()> on_first_parked_;
   Clock::duration departed_memory_;
   std::size_t prune_at_;  ///< departed_ or held_ entries at which prune_locked() sweeps
   mutable std::mutex mutex_;
+  std::shared_ptr<Generation> current_;
+  bool replaced_domains_ = false;  ///< some writer may be in a replaced domain
+  std::vector<Lingering> lingering_;
   std::map<Key, Writer> writers_;
   std::map<Key, std::deque<Parked>> parked_;
   std::size_t parked_count_ = 0;

@@ -35,8 +35,14 @@ constexpr std::size_t kMaxParkedRequests = 1024;
 /// deaf clients fill it before another's replies find no room.
 constexpr std::size_t kMaxBackloggedReplies = 4096;
 constexpr std::size_t kMaxBackloggedRepliesPerClient = 512;
-/// How often the dispatch loop looks at parked requests while there are some.
+/// How often the dispatch loop looks at parked requests while there are some (and at reply
+/// writers while they move to a new reply domain).
 constexpr std::chrono::milliseconds kParkedPoll{10};
+/// A client that left is remembered this long: its late requests are dropped (ReplyWriters).
+constexpr double kDepartedMemoryS = 60.0;
+/// A reply writer that moved to a new reply domain is deleted this long after a reply may last
+/// have been handed to the ReplyBacklog with it (reply_block_s): no reply is lost to the move.
+constexpr double kMovedWriterLingerS = 1.0;
 
 unsigned worker_count(unsigned configured) {
   if (configured > 0) return configured;
@@ -82,10 +88,10 @@ Service::Service(const ServiceConfig& config, Catalogue catalogue, const protoco
       instance_id_(protocol::random_id()),
       participant_(protocol::create_participant(config.domain, dds)),
       request_topics_(protocol::make_request_topics(participant_.get())),
-      reply_topics_(protocol::make_reply_topics(participant_.get())),
-      reply_writers_(participant_.get(), protocol::handles(reply_topics_),
+      reply_writers_([domain = config.domain, dds] { return std::make_unique<ReplyDomain>(domain, dds); },
                      protocol::hex_id(instance_id_), kMaxParkedRequests,
-                     [this] { dds_set_guardcondition(guard_.get(), true); }),
+                     [this] { dds_set_guardcondition(guard_.get(), true); }, kDepartedMemoryS,
+                     ReplyWriters::kWritersPerDomain, config.reply_block_s + kMovedWriterLingerS),
       reply_backlog_(config.reply_block_s, kMaxBackloggedReplies, kMaxBackloggedRepliesPerClient,
                      [this](std::uint64_t client_id) {
                        reply_writers_.mark_departed(client_id, config_.departed_hold_s);
@@ -407,6 +413,7 @@ void Service::run() {
   Clock::time_point next_status = Clock::now() + seconds(config_.status_interval_s);
   Clock::time_point next_stats = Clock::now() + seconds(config_.stats_log_interval_s);
   std::optional<Clock::time_point> stop_at;
+  bool moving_writers = false;  // reply writers are moving to a new reply domain: poll
   for (;;) {
     Clock::time_point now = Clock::now();
     if (stop_requested_ && !stop_at) {
@@ -424,7 +431,7 @@ void Service::run() {
     if (stop_at && now >= *stop_at) break;
     Clock::time_point wake = std::min(next_status, next_stats);
     if (stop_at) wake = std::min(wake, *stop_at);
-    if (reply_writers_.parked() > 0) wake = std::min(wake, now + kParkedPoll);
+    if (reply_writers_.parked() > 0 || moving_writers) wake = std::min(wake, now + kParkedPoll);
     const auto timeout = std::chrono::duration_cast<std::chrono::nanoseconds>(wake - now).count();
     dds_waitset_wait(waitset_.get(), nullptr, 0, std::max<int64_t>(timeout, 0));
     bool triggered = false;
@@ -432,6 +439,7 @@ void Service::run() {
     take_subscriptions();
     take_all_requests();
     release_parked(false);
+    moving_writers = reply_writers_.move_writers(Clock::now());
     now = Clock::now();
     if (now >= next_status) {
       status_.publish(!stop_at);

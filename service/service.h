@@ -84,7 +84,6 @@ class Service {
   protocol::Entity domain_;
   protocol::Entity participant_;
   std::array<protocol::Entity, 5> request_topics_;
-  std::array<protocol::Entity, 5> reply_topics_;
   protocol::Entity request_subscriber_;
   std::array<protocol::Entity, 5> request_readers_;
   protocol::Entity subscriptions_reader_;  ///< DCPSSubscription: clients' reply readers

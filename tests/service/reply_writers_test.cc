@@ -1,15 +1,24 @@
-// ReplyWriters remembers a client whose reply readers all went for a bounded time only: the
-// soak's reconnecting client (bench/soak.sh) and every CLI call are such clients, and a
-// service that remembered each forever would grow for as long as it runs.
+// Clients that come and go cost ReplyWriters a bounded amount, whatever how many came: the
+// soak's reconnecting client (bench/soak.sh) and every CLI call are such clients, and a service
+// that grew with each would grow for as long as it runs. It remembers a client whose reply
+// readers all went for a bounded time only, and its writers live in reply domains that it
+// replaces and deletes (with what Cyclone 0.10.2 keeps of every writer deleted in them,
+// service/reply_domain.h), moving the writers of the clients still there.
 #include "service/reply_writers.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <chrono>
+#include <thread>
+
+#include <dds/dds.h>
 
 #include "protocol/dds_config.h"
 #include "protocol/dds_entity.h"
+#include "protocol/matching.h"
+#include "protocol/names.h"
+#include "protocol/qos.h"
 #include "protocol/topics.h"
 #include "tests/service/service_process.h"
 
@@ -29,22 +38,66 @@ class ReplyWritersTest : public testing::Test {
   protocol::Entity participant_{protocol::create_participant(test::test_domain(), protocol::dds_config())};
   std::array<protocol::Entity, 5> topics_ = protocol::make_reply_topics(participant_.get());
   const ParticipantKey owner_{1};
+  ReplyWriters::MakeDomain make_domain_ = [] {
+    return std::make_unique<ReplyDomain>(test::test_domain(), protocol::dds_config());
+  };
 };
 
+/// Calls move_writers() until it says no move is under way; false if that took over `limit`.
+bool move_until_done(ReplyWriters& writers, std::chrono::seconds limit) {
+  const auto until = ReplyWriters::Clock::now() + limit;
+  while (writers.move_writers(ReplyWriters::Clock::now())) {
+    if (ReplyWriters::Clock::now() > until) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return true;
+}
+
 TEST_F(ReplyWritersTest, ClientsThatCameAndWentAreForgottenOnceTheirTimeIsUp) {
-  ReplyWriters writers(participant_.get(), protocol::handles(topics_), "0123456789abcdef", 16, [] {}, 0.001);
+  ReplyWriters writers(make_domain_, "0123456789abcdef", 16, [] {}, 0.001);
   constexpr std::uint64_t kClients = 4096 + 100;  // past the sweep's threshold
   for (std::uint64_t id = 1; id <= kClients; ++id) come_and_go(writers, id, owner_);
   EXPECT_LT(writers.remembered_departures(), 4096u) << "remembered forever, they grow with every client that left";
 }
 
 TEST_F(ReplyWritersTest, AClientJustGoneIsStillRememberedAndItsLateRequestsDropped) {
-  ReplyWriters writers(participant_.get(), protocol::handles(topics_), "0123456789abcdef", 16, [] {}, 60.0);
+  ReplyWriters writers(make_domain_, "0123456789abcdef", 16, [] {}, 60.0);
   come_and_go(writers, 7, owner_);
   EXPECT_EQ(writers.remembered_departures(), 1u);
   ReplyWriters::Job job = [] {};
   EXPECT_EQ(writers.admit(7, Calculation::kJamAngle, 1, owner_, job, ReplyWriters::Clock::now() + std::chrono::seconds(1)),
             ReplyWriters::Admission::kDropped);
+}
+
+TEST_F(ReplyWritersTest, ClientsThatComeAndGoLeaveAtMostTwoReplyDomainsAndAStayingClientIsStillServed) {
+  constexpr std::size_t kWritersPerDomain = 8;
+  ReplyWriters writers(make_domain_, "0123456789abcdef", 16, [] {}, 60.0, kWritersPerDomain, 0.0);
+  // A client that stays: its reply reader, in its partition on this process's other participant.
+  constexpr std::uint64_t kStaying = 0x5747;
+  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(kStaying));
+  const protocol::Entity subscriber(protocol::check_dds(
+      dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
+  const protocol::Qos qos = protocol::request_reply_qos();
+  const std::size_t jam = protocol::index_of(Calculation::kJamAngle);
+  const protocol::Entity reader(protocol::check_dds(
+      dds_create_reader(subscriber.get(), topics_[jam].get(), qos.get(), nullptr), "dds_create_reader"));
+  writers.reader_appeared(kStaying, Calculation::kJamAngle, owner_);
+  // Then 100 clients come and go: 12 domains' worth of writers.
+  for (std::uint64_t id = 1; id <= 100; ++id) {
+    come_and_go(writers, id, owner_);
+    ASSERT_TRUE(move_until_done(writers, std::chrono::seconds(30))) << "client " << id;
+  }
+  // The staying client's writer moved with every new domain, and nothing else was kept: the
+  // current domain, and at most the one it is leaving (here none, after the last move).
+  EXPECT_LE(writers.domains(), 2u) << "the replaced domains (and what Cyclone keeps in them) grow with every client";
+  EXPECT_EQ(writers.clients(), 1u);
+  const dds_entity_t writer = writers.writer(kStaying, Calculation::kJamAngle);
+  ASSERT_NE(writer, 0);
+  // Matching is asynchronous: allow it 10 s, far more than loopback discovery takes.
+  for (int i = 0; i < 1000 && protocol::matched_reader_count(writer) == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_GE(protocol::matched_reader_count(writer), 1u) << "the moved writer reaches the staying client";
 }
 
 }  // namespace
