@@ -368,9 +368,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
         blocked_folds(signature_rows.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
                       settings.cross_validation.fold_seed),
         test_block_rows(round.noise, rows.size(), signature_rows.size(), settings));
-    // About each channel's mean, as the fast-terms candidate takes it (FormulaSettings::fast_terms_only).
-    Eigen::MatrixX2d dense = select_rows(residual, rows, signature_rows);
-    dense.rowwise() -= dense.colwise().mean();
+    const Eigen::MatrixX2d dense = without_levels(select_rows(residual, rows, signature_rows));
     FormulaSettings fast = formula_settings(round, settings);
     fast.fast_terms_only = true;
     std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds, fast);

@@ -277,19 +277,13 @@ TermDesign fast_terms(TermDesign design) {
   return out;
 }
 
-}  // namespace
-
-TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
-                       const Eigen::MatrixX2d& residual, const std::vector<std::string>& extra) {
+/// The columns of `offered` on `rows` (as term_design), without those the rows cannot evaluate or
+/// on which a term is zero throughout.
+TermDesign design_of(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                     const Eigen::MatrixX2d& residual, const std::vector<const ExpressionTerm*>& offered) {
   TermDesign design;
   const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
   std::vector<Eigen::VectorXd> columns;
-  std::vector<const ExpressionTerm*> offered;
-  for (const ExpressionTerm& term : expression_terms()) offered.push_back(&term);
-  for (const std::string& name : extra) {
-    const ExpressionTerm* term = find_expression_term(name);
-    if (term && std::find(offered.begin(), offered.end(), term) == offered.end()) offered.push_back(term);
-  }
   for (const ExpressionTerm* t : offered) {
     const ExpressionTerm& term = *t;
     Eigen::VectorXd column(2 * n);
@@ -310,6 +304,43 @@ TermDesign term_design(std::span<const RecordedSample> observations, std::span<c
   return design;
 }
 
+/// The columns of the named terms only (a formula already chosen), in that order; nullopt when one
+/// is unknown or cannot be evaluated on these rows.
+std::optional<Eigen::MatrixXd> columns_of(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                          const Eigen::MatrixX2d& residual, const std::vector<std::string>& names) {
+  std::vector<const ExpressionTerm*> offered;
+  for (const std::string& name : names) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (!term) return std::nullopt;
+    offered.push_back(term);
+  }
+  TermDesign design = design_of(observations, rows, residual, offered);
+  if (design.terms != names) return std::nullopt;
+  return std::move(design.columns);
+}
+
+/// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
+void remove_channel_levels(Eigen::MatrixXd& columns) {
+  const Eigen::Index n = columns.rows() / 2;
+  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
+    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
+    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
+  }
+}
+
+}  // namespace
+
+TermDesign term_design(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                       const Eigen::MatrixX2d& residual, const std::vector<std::string>& extra) {
+  std::vector<const ExpressionTerm*> offered;
+  for (const ExpressionTerm& term : expression_terms()) offered.push_back(&term);
+  for (const std::string& name : extra) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (term && std::find(offered.begin(), offered.end(), term) == offered.end()) offered.push_back(term);
+  }
+  return design_of(observations, rows, residual, offered);
+}
+
 std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                         const Eigen::MatrixX2d& residual) {
   std::vector<std::string> terms;
@@ -323,20 +354,10 @@ std::vector<std::string> time_terms_for(std::span<const RecordedSample> observat
 std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
                                      double variance_inflation) {
-  std::vector<std::string> cycles;  // terms outside the catalogue (made for a period or a time)
-  for (const std::string& name : terms) {
-    const ExpressionTerm* term = find_expression_term(name);
-    if (term && (term->period_s > 0.0 || term->name.rfind("step_at_", 0) == 0)) cycles.push_back(name);
-  }
-  const TermDesign all = term_design(observations, rows, residual, cycles);
-  const auto design_for = [&all](const EffectInfo& info) -> std::optional<Eigen::MatrixXd> {
-    Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(info.parameters.size()));
-    for (std::size_t j = 0; j < info.parameters.size(); ++j) {
-      const auto at = std::find(all.terms.begin(), all.terms.end(), info.parameters[j].name);
-      if (at == all.terms.end()) return std::nullopt;  // not available on these rows
-      x.col(static_cast<Eigen::Index>(j)) = all.columns.col(at - all.terms.begin());
-    }
-    return x;
+  const auto design_for = [&](const EffectInfo& info) {
+    std::vector<std::string> names;
+    for (const ParameterSpec& p : info.parameters) names.push_back(p.name);
+    return columns_of(observations, rows, residual, names);  // nullopt: not available on these rows
   };
   const EffectInfo* info_of = &expression_info(terms);
   std::optional<Eigen::MatrixXd> design = design_for(*info_of);
@@ -400,28 +421,15 @@ Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual) {
   return residual.rowwise() - residual.colwise().mean();
 }
 
-/// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
-void remove_channel_levels(Eigen::MatrixXd& columns) {
-  const Eigen::Index n = columns.rows() / 2;
-  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
-    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
-    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
-  }
-}
-
 std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample> observations,
                                                  std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                  const std::vector<std::string>& terms, const Folds& folds) {
-  const TermDesign all = term_design(observations, rows, residual, terms);
-  Eigen::MatrixXd x(all.columns.rows(), static_cast<Eigen::Index>(terms.size()));
-  for (std::size_t j = 0; j < terms.size(); ++j) {
-    const auto at = std::find(all.terms.begin(), all.terms.end(), terms[j]);
-    if (at == all.terms.end()) return std::nullopt;  // not available on these rows
-    const Eigen::VectorXd column = all.columns.col(at - all.terms.begin());
-    x.col(static_cast<Eigen::Index>(j)) = column / (column.norm() / std::sqrt(static_cast<double>(column.size())));
-  }
+  std::optional<Eigen::MatrixXd> x = columns_of(observations, rows, residual, terms);
+  if (!x) return std::nullopt;  // not available on these rows
+  // Normalised as formula_candidate's columns, for the same ridge.
+  for (Eigen::Index j = 0; j < x->cols(); ++j) x->col(j) /= x->col(j).norm() / std::sqrt(static_cast<double>(x->rows()));
   const std::vector<bool> every(terms.size(), true);
-  return held_out(x, residual, folds, [&every](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return every; });
+  return held_out(*x, residual, folds, [&every](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return every; });
 }
 
 std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,

@@ -68,6 +68,10 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
                                                 std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
                                                 const Folds& folds, const FormulaSettings& settings);
 
+/// `residual` less each channel's mean over its rows: what the fast-terms candidate
+/// (FormulaSettings::fast_terms_only) is scored against.
+Eigen::MatrixX2d without_levels(const Eigen::MatrixX2d& residual);
+
 /// The held-out residual of the formula over `terms` on `residual` (each fold fitted on its
 /// training rows, as formula_candidate scores); nullopt when a term cannot be evaluated there.
 std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample> observations,
