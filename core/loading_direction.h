@@ -10,8 +10,13 @@ namespace gc {
 
 struct LoadingDirectionOptions {
   /// Smallest dead band [rad]: changes below it are never a direction, however clean the
-  /// recording. The fixed band used before issue 8, so clean recordings keep their labels.
-  double min_dead_band_rad = 2e-5;
+  /// recording. It only decides on recordings without measurable misalignment noise, and there
+  /// a wide band delays every turn: a slow sweep (3e-6 rad a sample) needs about 7 samples to
+  /// cross 2e-5 rad, the floor before issue 22, so a travel-direction hysteresis read the wrong
+  /// sign on 1.6 % of a 10 Hz campaign's samples. 1e-6 rad is 0.06 millidegree, a thirtieth of
+  /// the bundled sweeps' smallest step (so their labels stand); any noise above 1.7e-7 rad
+  /// widens the band beyond it (6 sigma).
+  double min_dead_band_rad = 1e-6;
   /// The dead band is this many noise sigmas of the recording's misalignment
   /// (core/input_noise.h) when that is wider than min_dead_band_rad [-]. Two samples of a hold
   /// differ by sqrt(2) sigma rms, so 6 sigma is 4.2 of their sigmas: about one false direction

@@ -24,8 +24,10 @@ struct CellMonitorOptions {
   double window_s = 10.0;
   double reference_torque_nm = 1.5e6;   ///< T_ref of validate's wording [N·m]
   /// The loading direction's dead band [rad]: a live stream's noise is not known before it
-  /// ends, so it is configured (docs/recordings.md has the trade-off).
-  double loading_dead_band_rad = LoadingDirectionOptions{}.min_dead_band_rad;
+  /// ends, so it is configured (docs/recordings.md has the trade-off). The default is wider
+  /// than a clean recording's floor (LoadingDirectionOptions::min_dead_band_rad): 3.3e-6 rad of
+  /// sensor noise keeps it (6 sigma) from reading a hold as travel.
+  double loading_dead_band_rad = 2e-5;
   double still_after_s = LoadingDirectionOptions{}.still_after_s;   ///< [s]
   /// The rolling window the monitor's diagnosis runs on (live/sample_window.h): at most this
   /// many evaluated samples of the current run, spanning at least diagnosis_window_s [s].

@@ -76,13 +76,14 @@ TEST(LoadingDirection, DeadBandIsSixSigmaOfTheMisalignmentNoise) {
   EXPECT_NEAR(loading_dead_band_rad(amplitudes), 6.0 * 6e-5, 0.1 * 6.0 * 6e-5);
 }
 
-TEST(LoadingDirection, CleanRecordingsKeepTheFixedBandAndItsLabels) {
-  // Noise of 1e-7 rad: 6 sigma is below the 2e-5 rad floor, so the band and every label are
-  // those of the fixed band used before issue 8.
+TEST(LoadingDirection, CleanRecordingsGetTheFloorAndKeepTheirLabels) {
+  // Noise of 1e-7 rad: 6 sigma is below the 1e-6 rad floor. The ramps move 3.75e-5 rad a sample,
+  // beyond both the floor and the 2e-5 rad band used before issue 22, so every label is the one
+  // that band gave.
   Labelled l = holds_and_ramps(1e-7, 1);
   std::vector<double> amplitudes;
   for (const MeasurementSample& s : l.samples) amplitudes.push_back(s.misalignment_rad);
-  EXPECT_EQ(loading_dead_band_rad(amplitudes), 2e-5);
+  EXPECT_EQ(loading_dead_band_rad(amplitudes), 1e-6);
   derive_loading_directions(l.samples);
   LoadingDirectionTracker old(2e-5, 0.5);
   for (const MeasurementSample& s : l.samples) {
@@ -90,6 +91,33 @@ TEST(LoadingDirection, CleanRecordingsKeepTheFixedBandAndItsLabels) {
   }
   EXPECT_GT(share_right(l, true), 0.95);
   EXPECT_GT(share_right(l, false), 0.95);
+}
+
+TEST(LoadingDirection, ACleanSlowSweepTurnsWithinASample) {
+  // Issue 22: a noise-free sweep of 3e-6 rad a sample (10 Hz) up to 3 mrad and back. The turn is
+  // labelled falling one sample after the peak; the 2e-5 rad band of before took 7 or 8.
+  std::vector<MeasurementSample> samples;
+  for (int i = 0; i <= 2000; ++i) {
+    MeasurementSample s;
+    s.time_s = 0.1 * i;
+    s.misalignment_rad = 3e-6 * (i <= 1000 ? i : 2000 - i);
+    samples.push_back(s);
+  }
+  auto first_fall = [](const std::vector<MeasurementSample>& labelled) {
+    for (std::size_t i = 0; i < labelled.size(); ++i) if (labelled[i].travel_direction < 0) return static_cast<int>(i);
+    return -1;
+  };
+  std::vector<MeasurementSample> derived = samples;
+  derive_loading_directions(derived);
+  EXPECT_EQ(first_fall(derived), 1001);
+  EXPECT_EQ(derived[500].travel_direction, 1);
+  std::vector<MeasurementSample> before = samples;
+  LoadingDirectionTracker old(2e-5, 0.5);
+  for (MeasurementSample& s : before) {
+    s.loading_direction = old.next(s.time_s, s.misalignment_rad);
+    s.travel_direction = old.last_travel();
+  }
+  EXPECT_GE(first_fall(before), 1007);
 }
 
 }  // namespace
