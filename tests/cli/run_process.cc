@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,11 +17,36 @@ extern char** environ;
 
 namespace gc::cli::testing {
 
+namespace {
+
+/// This process's scratch directory in the temporary directory, removed with everything in it
+/// when the process ends normally, so that a test run leaves nothing behind (a crashed test keeps
+/// its files). GC_KEEP_TEST_FILES=1 (or the campaign's GC_CAMPAIGN_KEEP=1) keeps it.
+class ScratchDirectory {
+ public:
+  ScratchDirectory()
+      : path_(std::filesystem::temp_directory_path() / ("gc_test_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDirectory() {
+    const char* keep = std::getenv("GC_KEEP_TEST_FILES");
+    const char* keep_campaign = std::getenv("GC_CAMPAIGN_KEEP");
+    if ((keep && *keep) || (keep_campaign && *keep_campaign)) return;
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace
+
 std::string temp_path(const std::string& stem) {
+  static const ScratchDirectory scratch;
   static std::atomic<int> counter{0};
-  return (std::filesystem::temp_directory_path() /
-          (stem + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++)))
-      .string();
+  return (scratch.path() / (stem + "_" + std::to_string(counter++))).string();
 }
 
 std::string read_file(const std::string& path) {

@@ -18,7 +18,9 @@ struct ProcessResult {
 ProcessResult run_gearcoupling(const std::vector<std::string>& args,
                                const std::string& stdin_path = "/dev/null");
 
-/// A fresh path in the temporary directory whose name starts with `stem`.
+/// A fresh path whose name starts with `stem`, in this process's scratch directory in the
+/// temporary directory, which is removed when the process exits normally (GC_KEEP_TEST_FILES=1
+/// keeps it).
 std::string temp_path(const std::string& stem);
 
 std::string read_file(const std::string& path);
