@@ -25,19 +25,21 @@ namespace {
 class ScratchDirectory {
  public:
   ScratchDirectory()
-      : path_(std::filesystem::temp_directory_path() / ("gc_test_" + std::to_string(::getpid()))) {
+      : owner_(::getpid()), path_(std::filesystem::temp_directory_path() / ("gc_test_" + std::to_string(owner_))) {
     std::filesystem::create_directories(path_);
   }
   ~ScratchDirectory() {
     const char* keep = std::getenv("GC_KEEP_TEST_FILES");
     const char* keep_campaign = std::getenv("GC_CAMPAIGN_KEEP");
-    if ((keep && *keep) || (keep_campaign && *keep_campaign)) return;
+    // A forked child that exits normally must not remove its parent's files.
+    if (::getpid() != owner_ || (keep && *keep) || (keep_campaign && *keep_campaign)) return;
     std::error_code ignored;
     std::filesystem::remove_all(path_, ignored);
   }
   const std::filesystem::path& path() const { return path_; }
 
  private:
+  pid_t owner_;
   std::filesystem::path path_;
 };
 
