@@ -30,9 +30,10 @@ SwapEntry* SwapAudit::latest(const std::string& test_cell) {
 }
 
 void SwapAudit::add(SwapEntry entry) {
-  freeze(entry.test_cell);
+  // The final lines of the swaps it ends are flushed by the swap line's fdatasync: one a swap.
+  if (SwapEntry* previous = latest(entry.test_cell)) freeze(*previous, false);
   if (entries_.size() == kKept) {
-    freeze(entries_.front());
+    freeze(entries_.front(), false);
     entries_.pop_front();
   }
   if (file_ && file_->append_swap(entry)) carry_followed_swaps();   // the others still followed
@@ -65,15 +66,15 @@ void SwapAudit::follow(const std::string& test_cell, const HealthReport& health,
   written.next = now + written.interval;
   written.samples = entry->after_samples;
   for (std::size_t c = 0; c < 2; ++c) written.rmse_nm[c] = entry->after_rmse_nm[c];
-  if (file_->append_after(*entry, AfterState::following)) carry_followed_swaps();
+  if (file_->append_after(*entry, AfterState::following, false)) carry_followed_swaps();
 }
 
-void SwapAudit::freeze(SwapEntry& entry) {
+void SwapAudit::freeze(SwapEntry& entry, bool flush) {
   if (entry.after_frozen) return;
   entry.after_frozen = true;
   follow_writes_.erase(entry.id);
   // Always, samples or not: a swap without its `final` line is loaded as cut off by a kill.
-  if (file_ && file_->append_after(entry, AfterState::final)) carry_followed_swaps();
+  if (file_ && file_->append_after(entry, AfterState::final, flush)) carry_followed_swaps();
 }
 
 void SwapAudit::carry_followed_swaps() {
@@ -85,11 +86,11 @@ void SwapAudit::carry_followed_swaps() {
 }
 
 void SwapAudit::freeze(const std::string& test_cell) {
-  if (SwapEntry* entry = latest(test_cell)) freeze(*entry);
+  if (SwapEntry* entry = latest(test_cell)) freeze(*entry, true);
 }
 
 void SwapAudit::close() {
-  for (SwapEntry& entry : entries_) freeze(entry);
+  for (SwapEntry& entry : entries_) freeze(entry, true);
 }
 
 }  // namespace gc::live

@@ -102,7 +102,8 @@ class SwapAudit {
   };
 
   SwapEntry* latest(const std::string& test_cell);
-  void freeze(SwapEntry& entry);
+  /// Its final after line flushed when `flush`, not when a swap line follows it at once.
+  void freeze(SwapEntry& entry, bool flush);
   /// After the file rotated: the swaps still followed are written again at the head of the new
   /// file, so their records are not dropped with it at the next rotation.
   void carry_followed_swaps();

@@ -284,8 +284,8 @@ bool SwapAuditFile::append_swap(const SwapEntry& entry) {
   return append(swap_record_payload(entry), true);
 }
 
-bool SwapAuditFile::append_after(const SwapEntry& entry, AfterState state) {
-  return append(after_record_payload(entry, state), state == AfterState::final);
+bool SwapAuditFile::append_after(const SwapEntry& entry, AfterState state, bool flush) {
+  return append(after_record_payload(entry, state), flush);
 }
 
 void SwapAuditFile::carry(const std::vector<const SwapEntry*>& followed) {

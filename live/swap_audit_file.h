@@ -63,9 +63,11 @@ class SwapAuditFile {
   /// removed) is logged as an error, never thrown: the monitor serves on. Returns whether the
   /// file was rotated first: the caller then carries the swaps it still follows (carry()).
   bool append_swap(const SwapEntry& entry);
-  /// Appends the after-figures of a swap: `following` by write() alone (they outlive a kill of
-  /// the process, not a power cut of the host), `final` flushed to the disk. As append_swap.
-  bool append_after(const SwapEntry& entry, AfterState state);
+  /// Appends the after-figures of a swap, flushed to the disk when `flush`: a `following` line
+  /// is not (it outlives a kill of the process, not a power cut of the host), a `final` one is,
+  /// unless a swap line, whose fdatasync flushes it too, is appended right after it. As
+  /// append_swap.
+  bool append_after(const SwapEntry& entry, AfterState state, bool flush);
   /// Writes the swap lines of `followed` at the head of a file just rotated, flushed, as far as
   /// they fit in half of kRotateBytes (a swap left out is logged).
   void carry(const std::vector<const SwapEntry*>& followed);
