@@ -300,6 +300,8 @@ TEST_F(LiveTest, AKilledMonitorsAfterSwapFiguresOutliveItMarkedInterrupted) {
   EXPECT_DOUBLE_EQ(is.after_msy_rmse_nm(), was.after_msy_rmse_nm());
   EXPECT_DOUBLE_EQ(is.after_msz_rmse_nm(), was.after_msz_rmse_nm());
   EXPECT_EQ(is.after_state(), "interrupted");
+  const auto table = cli::testing::run_gearcoupling(on_test_domain({"status", "--discovery-s", "0.5"}));
+  EXPECT_NE(table.out.find("(interrupted)"), std::string::npos) << table.out;   // the swaps' table says so too
 }
 
 // A damaged audit file (a line changed, a line of garbage, a last line torn by a kill) is
