@@ -446,7 +446,7 @@ void Monitor::publish_health() {
     const HealthReport health = it->second->monitor.health(wall);
     const bool stale = silent_s >= options_.stale_s;
     write_health(health_writer_.get(), it->first, monitor_id_, stale, health);
-    audit_.follow(it->first, health);
+    audit_.follow(it->first, health, now);
     if (worker_) learn(it->first, *it->second, health, stale);
     ++it;
   }

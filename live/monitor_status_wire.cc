@@ -13,7 +13,8 @@ namespace {
 gearcoupling_SwapRecord swap_wire(const SwapEntry& e) {
   return {lend(e.test_cell), unix_seconds(e.at), lend(e.by), lend(e.source), e.proposal_id,
           lend(e.model_before), lend(e.model_after), e.before_rmse_nm[0], e.before_rmse_nm[1],
-          e.after_rmse_nm[0], e.after_rmse_nm[1], e.after_samples, lend(e.operator_identity)};
+          e.after_rmse_nm[0], e.after_rmse_nm[1], e.after_samples, lend(e.operator_identity),
+          const_cast<char*>(after_state_text(e))};
 }
 
 }  // namespace

@@ -1,15 +1,16 @@
 // The monitor's audit trail of model swaps: who put which model in force for which test cell,
 // when, from which proposal or file, and the error before and after. The latest kKept are kept
 // in memory (every swap is also logged) and published in the monitor's status
-// (live/monitor_status_wire.h); with a state directory every swap is also appended to a file
-// there and the trail is loaded from it at start, so a restart does not forget it
-// (live/swap_audit_file.h).
+// (live/monitor_status_wire.h); with a state directory every swap, and the after-figures it is
+// followed by, are also appended to a file there and the trail is loaded from it at start, so a
+// restart does not forget it (live/swap_audit_file.h).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -31,6 +32,10 @@ struct SwapEntry {
   double after_rmse_nm[2] = {0.0, 0.0};
   std::uint64_t after_samples = 0;
   bool after_frozen = false;               ///< the model was replaced, or the cell is gone
+  /// Loaded from the file: the monitor that followed the swap stopped without writing its final
+  /// after-figures (killed, crashed, the power cut), so they are the last it wrote, not the
+  /// whole stay of the model in force.
+  bool after_interrupted = false;
   /// The ModelSwap sample: its writer's GUID (32 hex digits) and its source timestamp [ns since
   /// 1970]. A restarted monitor gets the latest swap of every live swap writer again
   /// (TRANSIENT_LOCAL); these tell it that swap is already in the trail.
@@ -38,11 +43,24 @@ struct SwapEntry {
   std::int64_t written_ns = 0;
 };
 
+/// "following" (its model is in force, the figures still updated), "final" (it stopped following:
+/// the next swap of the cell, the cell gone, the monitor stopped) or "interrupted" (loaded after
+/// a kill: the figures are the last written, not complete): SwapRecord.after_state.
+const char* after_state_text(const SwapEntry& entry);
+
 class SwapAuditFile;
 
 class SwapAudit {
  public:
   static constexpr std::size_t kKept = 64;
+  /// The after-figures of a swap still followed are written at its first health with samples,
+  /// then 1 s, 2 s, 4 s ... later, at most every 10 min, each time only if they changed. A kill
+  /// loses the figures of at most half the time since the swap while the new model's window
+  /// fills (the first minutes, when they move most), at most 10 min of them after; the cost is
+  /// about 155 lines of 75 bytes (11 kB) a day per followed test cell, so the file's bound
+  /// (SwapAuditFile::kRotateBytes) holds about 90 such days besides the swaps themselves.
+  static constexpr std::chrono::seconds kFirstFollowWrite{1};
+  static constexpr std::chrono::seconds kMaxFollowWrite{600};
 
   /// In memory only.
   SwapAudit();
@@ -59,8 +77,11 @@ class SwapAudit {
   /// its TRANSIENT_LOCAL writer to a restarted monitor.
   bool contains(const std::string& writer, std::int64_t written_ns) const;
   /// Updates the after-figures of `test_cell`'s latest swap from its health, while its model is
-  /// the one that swap put in force.
-  void follow(const std::string& test_cell, const HealthReport& health);
+  /// the one that swap put in force; with a file, the figures go to it at a bounded rate
+  /// (kFirstFollowWrite, doubling up to kMaxFollowWrite, and only when they changed), so a kill
+  /// loses at most that interval of them.
+  void follow(const std::string& test_cell, const HealthReport& health,
+              std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   /// `test_cell` is gone: its latest swap's after-figures stay as they are (and are written to
   /// the file).
   void freeze(const std::string& test_cell);
@@ -72,12 +93,25 @@ class SwapAudit {
   std::uint64_t total() const { return total_; }
 
  private:
+  /// When the after-figures of the swap still followed were last written, and the next wait.
+  struct FollowWrites {
+    std::chrono::steady_clock::time_point next;
+    std::chrono::steady_clock::duration interval{};
+    double rmse_nm[2] = {0.0, 0.0};
+    std::uint64_t samples = 0;
+  };
+
   SwapEntry* latest(const std::string& test_cell);
-  void freeze(SwapEntry& entry);
+  /// Its final after line flushed when `flush`, not when a swap line follows it at once.
+  void freeze(SwapEntry& entry, bool flush);
+  /// After the file rotated: the swaps still followed are written again at the head of the new
+  /// file, so their records are not dropped with it at the next rotation.
+  void carry_followed_swaps();
 
   std::deque<SwapEntry> entries_;
   std::uint64_t total_ = 0;
   std::unique_ptr<SwapAuditFile> file_;
+  std::map<std::uint64_t, FollowWrites> follow_writes_;   // by SwapEntry::id, while followed
 };
 
 }  // namespace gc::live

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -108,6 +109,31 @@ struct Loaded {
   std::map<std::uint64_t, std::size_t> by_id;   // index in swaps
 };
 
+/// The entry of a `swap` line's 17 fields; throws InvalidInput naming the field that does not parse.
+SwapEntry parse_swap(const std::vector<std::string>& f) {
+  SwapEntry e;
+  e.id = parse_hex16(f[1], "id");
+  e.at = std::chrono::system_clock::time_point(std::chrono::duration_cast<std::chrono::system_clock::duration>(
+      std::chrono::nanoseconds(parse_number<std::int64_t>(f[2], "at_ns"))));
+  e.test_cell = decode(f[3], "test_cell");
+  e.proposal_id = parse_hex16(f[4], "proposal_id");
+  e.before_rmse_nm[0] = parse_number<double>(f[5], "before_msy_rmse_nm");
+  e.before_rmse_nm[1] = parse_number<double>(f[6], "before_msz_rmse_nm");
+  e.after_rmse_nm[0] = parse_number<double>(f[7], "after_msy_rmse_nm");
+  e.after_rmse_nm[1] = parse_number<double>(f[8], "after_msz_rmse_nm");
+  e.after_samples = parse_number<std::uint64_t>(f[9], "after_samples");
+  e.writer = decode(f[10], "writer");
+  e.written_ns = parse_number<std::int64_t>(f[11], "written_ns");
+  e.by = decode(f[12], "by");
+  e.source = decode(f[13], "source");
+  e.model_before = decode(f[14], "model_before");
+  e.model_after = decode(f[15], "model_after");
+  e.operator_identity = decode(f[16], "operator_identity");
+  e.after_frozen = true;
+  e.after_interrupted = true;   // until its `final` after line
+  return e;
+}
+
 /// Applies one line's payload to `loaded`; throws InvalidInput naming what does not parse.
 void apply_line(const std::string& line, Loaded& loaded) {
   if (line.rfind("v1 ", 0) != 0) throw InvalidInput("version", "the line does not start with 'v1 '");
@@ -117,39 +143,30 @@ void apply_line(const std::string& line, Loaded& loaded) {
   if (fnv1a64(payload) != hash) throw InvalidInput("hash", "the line does not match its hash (damaged)");
   const std::vector<std::string> f = split(payload);
   if (!f.empty() && f[0] == "swap" && f.size() == 17) {
-    SwapEntry e;
-    e.id = parse_hex16(f[1], "id");
-    e.at = std::chrono::system_clock::time_point(std::chrono::duration_cast<std::chrono::system_clock::duration>(
-        std::chrono::nanoseconds(parse_number<std::int64_t>(f[2], "at_ns"))));
-    e.test_cell = decode(f[3], "test_cell");
-    e.proposal_id = parse_hex16(f[4], "proposal_id");
-    e.before_rmse_nm[0] = parse_number<double>(f[5], "before_msy_rmse_nm");
-    e.before_rmse_nm[1] = parse_number<double>(f[6], "before_msz_rmse_nm");
-    e.after_rmse_nm[0] = parse_number<double>(f[7], "after_msy_rmse_nm");
-    e.after_rmse_nm[1] = parse_number<double>(f[8], "after_msz_rmse_nm");
-    e.after_samples = parse_number<std::uint64_t>(f[9], "after_samples");
-    e.writer = decode(f[10], "writer");
-    e.written_ns = parse_number<std::int64_t>(f[11], "written_ns");
-    e.by = decode(f[12], "by");
-    e.source = decode(f[13], "source");
-    e.model_before = decode(f[14], "model_before");
-    e.model_after = decode(f[15], "model_after");
-    e.operator_identity = decode(f[16], "operator_identity");
-    e.after_frozen = true;
-    loaded.by_id[e.id] = loaded.swaps.size();
-    loaded.swaps.push_back(std::move(e));
-  } else if (!f.empty() && f[0] == "after" && f.size() == 5) {
+    SwapEntry e = parse_swap(f);
+    const auto [at, added] = loaded.by_id.emplace(e.id, loaded.swaps.size());
+    if (added) {
+      loaded.swaps.push_back(std::move(e));
+    } else {
+      loaded.swaps[at->second] = std::move(e);   // carried into a newer file: the same swap
+    }
+  } else if (!f.empty() && f[0] == "after" && (f.size() == 5 || f.size() == 6)) {
     const auto found = loaded.by_id.find(parse_hex16(f[1], "id"));
     const double msy = parse_number<double>(f[2], "after_msy_rmse_nm");
     const double msz = parse_number<double>(f[3], "after_msz_rmse_nm");
     const std::uint64_t samples = parse_number<std::uint64_t>(f[4], "after_samples");
+    const std::string state = f.size() == 6 ? f[5] : "final";
+    if (state != "following" && state != "final") {
+      throw InvalidInput("state", "'" + state + "' is neither 'following' nor 'final'");
+    }
     if (found == loaded.by_id.end()) return;   // its swap was rotated out
     SwapEntry& e = loaded.swaps[found->second];
     e.after_rmse_nm[0] = msy;
     e.after_rmse_nm[1] = msz;
     e.after_samples = samples;
+    e.after_interrupted = state == "following";
   } else {
-    throw InvalidInput("kind", "not a swap line of 17 fields nor an after line of 5 (" +
+    throw InvalidInput("kind", "not a swap line of 17 fields nor an after line of 5 or 6 (" +
                                    std::to_string(f.size()) + " fields)");
   }
 }
@@ -210,9 +227,10 @@ std::string swap_record_payload(const SwapEntry& e) {
                      encode(e.model_before), encode(e.model_after), encode(e.operator_identity));
 }
 
-std::string after_record_payload(const SwapEntry& e) {
-  return fmt::format("after {:016x} {} {} {}", e.id, fixed_number(e.after_rmse_nm[0]),
-                     fixed_number(e.after_rmse_nm[1]), e.after_samples);
+std::string after_record_payload(const SwapEntry& e, AfterState state) {
+  return fmt::format("after {:016x} {} {} {} {}", e.id, fixed_number(e.after_rmse_nm[0]),
+                     fixed_number(e.after_rmse_nm[1]), e.after_samples,
+                     state == AfterState::final ? "final" : "following");
 }
 
 std::string audit_line(const std::string& payload) {
@@ -253,14 +271,37 @@ std::vector<SwapEntry> SwapAuditFile::load(std::size_t keep) {
   size_ = std::filesystem::file_size(path_, error);
   if (error) size_ = 0;
   std::vector<SwapEntry>& swaps = loaded.swaps;
+  // A swap carried into a newer file (carry()) may stand after later ones once the file it was
+  // first written in is dropped.
+  std::stable_sort(swaps.begin(), swaps.end(),
+                   [](const SwapEntry& a, const SwapEntry& b) { return a.at < b.at; });
   if (swaps.size() > keep) swaps.erase(swaps.begin(), swaps.end() - static_cast<std::ptrdiff_t>(keep));
   spdlog::info("swap audit {}: {} swaps loaded", path_.string(), swaps.size());
   return std::move(swaps);
 }
 
-void SwapAuditFile::append_swap(const SwapEntry& entry) { append(swap_record_payload(entry)); }
+bool SwapAuditFile::append_swap(const SwapEntry& entry) {
+  return append(swap_record_payload(entry), true);
+}
 
-void SwapAuditFile::append_after(const SwapEntry& entry) { append(after_record_payload(entry)); }
+bool SwapAuditFile::append_after(const SwapEntry& entry, AfterState state, bool flush) {
+  return append(after_record_payload(entry, state), flush);
+}
+
+void SwapAuditFile::carry(const std::vector<const SwapEntry*>& followed) {
+  std::string lines;
+  for (const SwapEntry* entry : followed) {
+    const std::string line = audit_line(swap_record_payload(*entry));
+    if (size_ + lines.size() + line.size() > kRotateBytes / 2) {
+      spdlog::error("swap audit {}: swap {:016x} of test cell {} not carried into the new file "
+                    "(its records are too long); it leaves the trail with the rotated file",
+                    path_.string(), entry->id, entry->test_cell);
+      continue;
+    }
+    lines += line;
+  }
+  if (!lines.empty()) write_out(lines, true, "carried swaps");
+}
 
 void SwapAuditFile::rotate() {
   ::close(fd_);
@@ -275,28 +316,34 @@ void SwapAuditFile::rotate() {
   }
 }
 
-void SwapAuditFile::append(const std::string& payload) {
+bool SwapAuditFile::append(const std::string& payload, bool flush) {
   const std::string line = audit_line(payload);
-  if (size_ > 0 && size_ + line.size() > kRotateBytes) rotate();
+  const bool rotated = size_ > 0 && size_ + line.size() > kRotateBytes;
+  if (rotated) rotate();
+  write_out(line, flush, payload);
+  return rotated;
+}
+
+void SwapAuditFile::write_out(const std::string& lines, bool flush, const std::string& what) {
   if (fd_ < 0) {
-    spdlog::error("swap audit {}: not open, record lost: {}", path_.string(), payload);
+    spdlog::error("swap audit {}: not open, record lost: {}", path_.string(), what);
     return;
   }
-  // One write() of the whole line with O_APPEND: a kill leaves it whole or cut, never
+  // One write() of whole lines with O_APPEND: a kill leaves them whole or cut, never
   // interleaved; fdatasync before the swap is published, so what the status shows is on disk.
   std::size_t written = 0;
-  while (written < line.size()) {
-    const ssize_t n = ::write(fd_, line.data() + written, line.size() - written);
+  while (written < lines.size()) {
+    const ssize_t n = ::write(fd_, lines.data() + written, lines.size() - written);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       spdlog::error("swap audit {}: record not written ({}): {}", path_.string(),
-                    std::strerror(errno), payload);
+                    std::strerror(errno), what);
       return;
     }
     written += static_cast<std::size_t>(n);
   }
-  size_ += line.size();
-  if (::fdatasync(fd_) != 0) {
+  size_ += lines.size();
+  if (flush && ::fdatasync(fd_) != 0) {
     spdlog::error("swap audit {}: fdatasync failed ({})", path_.string(), std::strerror(errno));
   }
 }

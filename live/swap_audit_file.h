@@ -9,16 +9,23 @@
 // true one (the file is the monitor's own, 0640 in a 0750 directory of its user). KIND is
 //   swap  ID AT_NS TEST_CELL PROPOSAL_ID BEFORE_MSY BEFORE_MSZ AFTER_MSY AFTER_MSZ AFTER_SAMPLES
 //         WRITER WRITTEN_NS BY SOURCE MODEL_BEFORE MODEL_AFTER OPERATOR_IDENTITY
-//   after ID AFTER_MSY AFTER_MSZ AFTER_SAMPLES
+//   after ID AFTER_MSY AFTER_MSZ AFTER_SAMPLES STATE
 // with ID and PROPOSAL_ID in 16 hex digits, times in ns since 1970 (UTC), RMSE in N·m, texts
-// percent-encoded (space, '%', control bytes; "-" is empty). An `after` line updates the
-// after-figures of an earlier swap: written when the swap stops following its model (another
-// swap of the cell, the cell gone) and when the monitor stops; a kill loses those of the swaps
-// still in force (the load shows them as they were last written).
+// percent-encoded (space, '%', control bytes; "-" is empty). An `after` line replaces the
+// after-figures of the swap of its ID (the latest line wins, one entry per ID). STATE is
+// `following` for the figures written while the swap's model is in force (SwapAudit::follow, at a
+// bounded rate, by write() alone: a kill of the monitor does not lose what the kernel has), and
+// `final` when it stops following it (another swap of the cell, the cell gone, the monitor
+// stopping; flushed by fdatasync). A swap loaded without a `final` line was cut off by a kill:
+// its figures are the last written and it is marked SwapEntry::after_interrupted. (An `after`
+// line without STATE is an older monitor's, which wrote one only at the end: final.)
 //
 // Bounded: when a record would take the file beyond kRotateBytes, it is renamed
 // swap_audit.log.1 (the previous .1 dropped) and a new one started; at most 2 kRotateBytes on
-// disk, about 8,000 swaps.
+// disk, about 8,000 swaps (fewer while test cells are followed: a followed cell's after lines
+// take about 11 kB a day). The swaps still followed are written again at the head of the new
+// file (carry()): a `swap` line whose ID is already loaded replaces that entry, so a model in
+// force for months keeps its record.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +36,9 @@
 #include "live/swap_audit.h"
 
 namespace gc::live {
+
+/// Whether an `after` line is written while its swap is followed, or when it stops.
+enum class AfterState { following, final };
 
 class SwapAuditFile {
  public:
@@ -43,20 +53,30 @@ class SwapAuditFile {
   SwapAuditFile(const SwapAuditFile&) = delete;
   SwapAuditFile& operator=(const SwapAuditFile&) = delete;
 
-  /// The latest `keep` swaps of swap_audit.log.1 then swap_audit.log, oldest first, each with
-  /// its latest after-figures and frozen (the monitor that followed them is gone). A line that
+  /// The latest `keep` swaps of swap_audit.log.1 then swap_audit.log, oldest first (by AT), each
+  /// with its latest after-figures and frozen (the monitor that followed them is gone), marked
+  /// after_interrupted when no `final` after line closed it. A line that
   /// does not parse is logged as an error (file, line, why) and skipped; a torn last line (no
   /// end of line: a write cut off) is logged and cut off the file.
   std::vector<SwapEntry> load(std::size_t keep);
-  /// Appends a swap, or the after-figures of one, and flushes it to the disk. A failure (disk
-  /// full, the file removed) is logged as an error, never thrown: the monitor serves on.
-  void append_swap(const SwapEntry& entry);
-  void append_after(const SwapEntry& entry);
+  /// Appends a swap and flushes it to the disk (fdatasync). A failure (disk full, the file
+  /// removed) is logged as an error, never thrown: the monitor serves on. Returns whether the
+  /// file was rotated first: the caller then carries the swaps it still follows (carry()).
+  bool append_swap(const SwapEntry& entry);
+  /// Appends the after-figures of a swap, flushed to the disk when `flush`: a `following` line
+  /// is not (it outlives a kill of the process, not a power cut of the host), a `final` one is,
+  /// unless a swap line, whose fdatasync flushes it too, is appended right after it. As
+  /// append_swap.
+  bool append_after(const SwapEntry& entry, AfterState state, bool flush);
+  /// Writes the swap lines of `followed` at the head of a file just rotated, flushed, as far as
+  /// they fit in half of kRotateBytes (a swap left out is logged).
+  void carry(const std::vector<const SwapEntry*>& followed);
 
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  void append(const std::string& payload);
+  bool append(const std::string& payload, bool flush);
+  void write_out(const std::string& lines, bool flush, const std::string& what);
   void open_for_append();
   void rotate();
 
@@ -68,7 +88,7 @@ class SwapAuditFile {
 /// One line's payload (what follows HASH) for a swap, or for its after-figures. Exposed for the
 /// tests, which write damaged files.
 std::string swap_record_payload(const SwapEntry& entry);
-std::string after_record_payload(const SwapEntry& entry);
+std::string after_record_payload(const SwapEntry& entry, AfterState state);
 /// `v1 HASH payload` for `payload`.
 std::string audit_line(const std::string& payload);
 

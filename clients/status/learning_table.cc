@@ -21,6 +21,8 @@ std::string parameter_text(const v1::ProposedParameterRecord& p) {
 void print_swaps(const std::vector<v1::MonitorRecord>& monitors, std::FILE* out) {
   analysis::Table table({"test cell", "when [unix s]", "by", "identity", "source", "model before", "model after",
                          "RMSE before M_sy'/M_sz' [kN·m]", "RMSE after M_sy'/M_sz' [kN·m]"});
+  // "interrupted": the monitor that followed the swap was killed, the after-figures are the last
+  // it wrote to its state directory (live/swap_audit_file.h).
   bool any = false;
   for (const v1::MonitorRecord& m : monitors) {
     for (const v1::SwapAuditRecord& s : m.recent_swaps()) {
@@ -29,7 +31,8 @@ void print_swaps(const std::vector<v1::MonitorRecord>& monitors, std::FILE* out)
                      s.operator_identity().empty() ? "-" : s.operator_identity(), s.source(),
                      s.model_before(), s.model_after(),
                      knm(s.before_msy_rmse_nm()) + " / " + knm(s.before_msz_rmse_nm()),
-                     knm(s.after_msy_rmse_nm()) + " / " + knm(s.after_msz_rmse_nm())});
+                     knm(s.after_msy_rmse_nm()) + " / " + knm(s.after_msz_rmse_nm()) +
+                         (s.after_state() == "interrupted" ? " (interrupted)" : "")});
     }
   }
   if (!any) return;

@@ -86,6 +86,7 @@ v1::MonitorRecord record_of(const gearcoupling_MonitorStatus& in) {
     r.set_after_msz_rmse_nm(s.after_msz_rmse_nm);
     r.set_after_samples(s.after_samples);
     r.set_operator_identity(sample_text(s.operator_identity));
+    r.set_after_state(sample_text(s.after_state));
   }
   return out;
 }

@@ -1,9 +1,11 @@
 """The learning loop in a real browser (issue 25): headless Chromium driven by Selenium against a
 real gearcoupling-monitor running the library's model, `gearcoupling replay` of a hidden-effect
 recording and two dashboards on a private loopback domain: one started with --operator-cells
-(may apply), one read-only. Within 30 s the cell card shows a proposal naming the hidden effect;
-"apply" puts it in force; within one health window of new samples both channels are at the noise
-level and the audit trail shows the swap. The read-only dashboard refuses to apply (403).
+(may apply, as operator identity operator-shift1), one read-only. Within 30 s the cell card shows
+a proposal naming the hidden effect; "apply" puts it in force; within one health window of new
+samples both channels are at the noise level and the audit trail shows the swap with the operator
+identity and the proposal; a swap with no operator identity (`swap-model` without one) is shown
+as such. The read-only dashboard refuses to apply (403).
 
 Run by ctest (tests/dashboard/CMakeLists.txt); skipped, saying so, without Chromium,
 chromedriver or Selenium (deploy/install-deps.sh installs them).
@@ -31,18 +33,21 @@ DOMAIN = 1 + (os.getpid() + 97) % 200
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 TEST_CELL = "dyno-learning"
+OPERATOR = "shift1"  # the operator dashboard's $GC_IDENTITY is operator-shift1: its swap writers
+                     # are in partition gearcoupling.live.operator.shift1 (docs/security.md)
 RECORDING = os.path.join(SOURCE_DIR, "data/recordings/hidden_eccentricity_torque_ramp.csv")
 
 
-def start(children, args, **kwargs):
-    child = subprocess.Popen(args, env=ENVIRONMENT, **kwargs)
+def start(children, args, env=ENVIRONMENT, **kwargs):
+    child = subprocess.Popen(args, env=env, **kwargs)
     children.append(child)
     return child
 
 
-def start_dashboard(children, *extra):
+def start_dashboard(children, *extra, identity=None):
+    environment = dict(ENVIRONMENT, GC_IDENTITY=identity) if identity else ENVIRONMENT
     child = start(children, [DASHBOARD, "--domain", str(DOMAIN), "--listen", "127.0.0.1:0", *extra],
-                  stdout=subprocess.PIPE, text=True)
+                  stdout=subprocess.PIPE, text=True, env=environment)
     line = child.stdout.readline()
     assert line.startswith("listening on http://"), f"dashboard printed {line!r}"
     return line.split("listening on ", 1)[1].strip()
@@ -71,6 +76,13 @@ def state(url):
         return json.loads(response.read())
 
 
+def swap_rows(driver):
+    """The rows of the page's audit trail: their data attributes and the identity cell's text."""
+    return driver.execute_script(
+        "return [...document.querySelectorAll('#swap-table tr.swap')].map(r => Object.assign("
+        "{identity_text: r.querySelector('td.identity').textContent, text: r.textContent}, r.dataset));")
+
+
 def proposal_box(driver):
     return driver.execute_script(
         "const e = document.querySelector(arguments[0]); return e ? Object.assign({}, e.dataset) : {};",
@@ -85,7 +97,8 @@ def loop():
         start(children, [MONITOR, "--domain", str(DOMAIN), "--model", "paper", "--window-s", "20",
                          "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
                          "--diagnose-after-s", "1", "--diagnosis-nice", "0"], stderr=subprocess.DEVNULL)
-        operator_url = start_dashboard(children, "--operator-cells", TEST_CELL)
+        operator_url = start_dashboard(children, "--operator-cells", TEST_CELL,
+                                       identity="operator-" + OPERATOR)
         read_only_url = start_dashboard(children)
         driver = headless_chromium.new_driver("1400,2400")
         driver.get(operator_url)
@@ -148,7 +161,30 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
         lambda d: loop["proposal"] in d.find_element(By.ID, "swaps").text)
     audit = driver.find_element(By.ID, "swaps").text
     assert "paper_diagnosed" in audit and "dashboard@" in audit, audit
+    rows = [r for r in swap_rows(driver) if r.get("proposal") == loop["proposal"]]
+    assert len(rows) == 1, swap_rows(driver)
+    assert rows[0]["operatorIdentity"] == "operator-" + OPERATOR, rows
+    assert rows[0]["identity_text"] == "operator-" + OPERATOR, rows
+    assert f"proposal {loop['proposal']}" in rows[0]["text"], rows
     os.makedirs(OUTPUT_DIR, exist_ok=True)
     assert driver.save_screenshot(os.path.join(OUTPUT_DIR, "dashboard_learning.png"))
     errors = [entry for entry in driver.get_log("browser") if entry["level"] == "SEVERE"]
     assert errors == [], errors
+
+
+def test_a_swap_without_operator_identity_is_shown_plainly_as_such(loop):
+    environment = {k: v for k, v in ENVIRONMENT.items() if k != "GC_IDENTITY"}
+    subprocess.run([CLI, "swap-model", "--test-cell", TEST_CELL, "--model", "paper", "--wait-s", "10",
+                    "--domain", str(DOMAIN)], env=environment, check=True, stdout=subprocess.DEVNULL)
+
+    def shown(d):
+        rows = [r for r in swap_rows(d) if r.get("testCell") == TEST_CELL and not r.get("proposal")]
+        return rows[-1] if rows else None
+    row = WebDriverWait(loop["driver"], 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(shown)
+    assert row["operatorIdentity"] == "", row
+    assert row["identity_text"] == "none (no operator identity)", row
+    assert "paper_diagnosed" in row["text"] and "file " in row["text"], row   # from the applied model, by file
+    # The operator's swap before it still names its identity, and its after-figures are final now.
+    applied = [r for r in swap_rows(loop["driver"]) if r.get("proposal") == loop["proposal"]]
+    assert applied and applied[0]["identity_text"] == "operator-" + OPERATOR, applied
+    assert applied[0]["afterState"] == "final", applied

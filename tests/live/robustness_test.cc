@@ -195,21 +195,29 @@ std::string new_state_dir() {
   return dir;
 }
 
+/// Starts a monitor with `args` into `monitor`, publishes 300 samples of `test_cell` and swaps
+/// its model to paper_downwind with `gearcoupling swap-model`, as an operator would.
+void start_monitor_and_swap(status::CellBoard& health, live::MeasurementPublisher& publisher,
+                            const std::vector<std::string>& args, const std::string& test_cell,
+                            std::unique_ptr<ChildProcess>& monitor) {
+  monitor = start_monitor(args);
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  publish_stream(publisher, paper_samples(), 300, 2000.0);
+  ASSERT_TRUE(health.wait_for(test_cell, [](const HealthView& h) { return h.taken == 300; }, 10s));
+  const auto swap = cli::testing::run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", test_cell, "--model", "paper_downwind", "--wait-s", "10"}));
+  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+}
+
 // Issue 25's leftover: with --state-dir the audit trail outlives the monitor. Two swaps (the
 // CLI's, and a writer of the test's that stays alive), a SIGKILL, a new monitor on the same
 // directory: its status shows both swaps; the live writer's swap, which the new monitor gets
 // again (TRANSIENT_LOCAL) and puts in force again, is not audited a second time.
 TEST_F(LiveTest, TheAuditTrailOutlivesAKilledMonitor) {
-  const std::string state_dir = new_state_dir();
-  const std::vector<std::string> args = {"--health-period-s", "0.1", "--state-dir", state_dir};
+  const std::vector<std::string> args = {"--health-period-s", "0.1", "--state-dir", new_state_dir()};
   live::MeasurementPublisher publisher(participant_.get(), "audited");
-  auto first = start_monitor(args);
-  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
-  publish_stream(publisher, paper_samples(), 300, 2000.0);
-  ASSERT_TRUE(health_.wait_for("audited", [](const HealthView& h) { return h.taken == 300; }, 10s));
-  const auto swap = cli::testing::run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", "audited", "--model", "paper_downwind", "--wait-s", "10"}));
-  ASSERT_EQ(swap.exit_code, 0) << swap.err;
+  std::unique_ptr<ChildProcess> first;
+  ASSERT_NO_FATAL_FAILURE(start_monitor_and_swap(health_, publisher, args, "audited", first));
   live::ModelSwapPublisher swaps(participant_.get(), {"audited"}, "by=tester@bench;source=file mu012.textproto");
   ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
   swaps.publish("audited", variant_text("mu012", 0.12));
@@ -252,6 +260,48 @@ TEST_F(LiveTest, TheAuditTrailOutlivesAKilledMonitor) {
   EXPECT_EQ(m.recent_swaps(1).source(), "file mu012.textproto");
   EXPECT_EQ(m.recent_swaps(1).model_before(), "paper_downwind");
   EXPECT_EQ(m.recent_swaps(1).model_after(), "mu012");
+  EXPECT_EQ(m.recent_swaps(0).after_state(), "final");         // replaced by the second swap
+  EXPECT_EQ(m.recent_swaps(1).after_state(), "interrupted");   // in force at the kill
+}
+
+// The after-figures of a swap outlive a SIGKILL of the monitor that followed it: a swap, 300
+// samples under the new model (health every 0.1 s), a pause past the second write of its
+// figures (1 s after the first), SIGKILL, a new monitor on the same --state-dir: `status --json`
+// shows the figures the killed monitor showed last, marked "interrupted", not "final".
+TEST_F(LiveTest, AKilledMonitorsAfterSwapFiguresOutliveItMarkedInterrupted) {
+  const std::vector<std::string> args = {"--health-period-s", "0.1", "--state-dir", new_state_dir()};
+  live::MeasurementPublisher publisher(participant_.get(), "followed");
+  std::unique_ptr<ChildProcess> first;
+  ASSERT_NO_FATAL_FAILURE(start_monitor_and_swap(health_, publisher, args, "followed", first));
+  publish_stream(publisher, paper_samples(), 300, 2000.0, 300);
+  const v1::LiveStatus before = wait_for_status([](const v1::LiveStatus& s) {
+    return s.monitors(0).recent_swaps_size() == 1 && s.monitors(0).recent_swaps(0).after_samples() == 300;
+  });
+  ASSERT_EQ(before.monitors_size(), 1);
+  ASSERT_EQ(before.monitors(0).recent_swaps_size(), 1);
+  const v1::SwapAuditRecord was = before.monitors(0).recent_swaps(0);
+  ASSERT_EQ(was.after_samples(), 300u);
+  EXPECT_EQ(was.after_state(), "following");
+  EXPECT_GT(was.after_msy_rmse_nm(), 0.0);
+  std::this_thread::sleep_for(2s);   // the write 1 s after the first has all 300 samples
+  const std::string killed = before.monitors(0).monitor_id();
+  first->signal(SIGKILL);
+  ASSERT_EQ(first->wait_exit(10.0), 128 + SIGKILL);
+
+  auto second = start_monitor(args);
+  const v1::LiveStatus after = wait_for_status(
+      [&](const v1::LiveStatus& s) { return s.monitors(0).monitor_id() != killed; });
+  ASSERT_EQ(after.monitors_size(), 1);
+  ASSERT_NE(after.monitors(0).monitor_id(), killed);
+  ASSERT_EQ(after.monitors(0).recent_swaps_size(), 1);
+  const v1::SwapAuditRecord& is = after.monitors(0).recent_swaps(0);
+  EXPECT_EQ(is.model_after(), "paper_downwind");
+  EXPECT_EQ(is.after_samples(), 300u);
+  EXPECT_DOUBLE_EQ(is.after_msy_rmse_nm(), was.after_msy_rmse_nm());
+  EXPECT_DOUBLE_EQ(is.after_msz_rmse_nm(), was.after_msz_rmse_nm());
+  EXPECT_EQ(is.after_state(), "interrupted");
+  const auto table = cli::testing::run_gearcoupling(on_test_domain({"status", "--discovery-s", "0.5"}));
+  EXPECT_NE(table.out.find("(interrupted)"), std::string::npos) << table.out;   // the swaps' table says so too
 }
 
 // A damaged audit file (a line changed, a line of garbage, a last line torn by a kill) is

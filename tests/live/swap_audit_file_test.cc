@@ -1,12 +1,17 @@
 // The audit trail on disk (live/swap_audit_file.h): what a monitor wrote, the next one loads, as
-// it was; the file stays within its bound; a directory that is not there is refused by name.
-// Damaged files are tested against the real monitor (robustness_test.cc).
+// it was; the after-figures of a swap still followed are written at a bounded rate and a kill
+// leaves them marked interrupted; a later line replaces, never duplicates, its swap; damaged and
+// torn lines are skipped; the file stays within its bound and a swap still followed is carried
+// across rotations; a directory that is not there is refused by name. Damaged files are also
+// tested against the real monitor (robustness_test.cc).
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/model_error.h"
@@ -79,9 +84,155 @@ TEST(SwapAuditFile, WhatOneMonitorWroteTheNextLoadsAsItWas) {
   EXPECT_EQ(got.after_rmse_nm[1], 2100.5);
   EXPECT_EQ(got.after_samples, 1000u);
   EXPECT_TRUE(got.after_frozen);
+  EXPECT_FALSE(got.after_interrupted);   // the monitor stopped: its final after line
+  EXPECT_STREQ(after_state_text(got), "final");
   EXPECT_EQ(loaded.entries()[1].by, "");
+  EXPECT_FALSE(loaded.entries()[1].after_interrupted);   // final too, without a sample after it
   EXPECT_TRUE(loaded.contains(want.writer, want.written_ns));
   EXPECT_FALSE(loaded.contains(want.writer, want.written_ns - 1));
+}
+
+/// The lines of `file` that start with `v1 ` and hold ` KIND ` (swap, after).
+std::size_t lines_of_kind(const std::filesystem::path& file, const std::string& kind) {
+  std::ifstream in(file);
+  std::size_t count = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("v1 ", 0) == 0 && line.find(" " + kind + " ", 19) == 19) ++count;
+  }
+  return count;
+}
+
+HealthReport health_of(const std::string& model, double msy_nm, double msz_nm, std::uint64_t samples) {
+  HealthReport health;
+  health.model.model_name = model;
+  health.model.channels[0].rmse_nm = msy_nm;
+  health.model.channels[1].rmse_nm = msz_nm;
+  health.window_samples = samples;
+  return health;
+}
+
+// A swap followed for 8 s, its health every 0.5 s: its after-figures are written at the first
+// health with samples, then 1 s, 2 s and 4 s later (t = 0, 1, 3, 7 s), not at every health; at
+// t = 20 s, past the next due time, figures equal to those written are not written again. The
+// monitor is then killed (no close(): no final line), and the next one loads the figures last
+// written, marked interrupted, as one entry.
+TEST(SwapAuditFile, FollowedFiguresAreWrittenAtABoundedRateAndOutliveAKillMarkedInterrupted) {
+  const auto dir = new_state_dir("audit_followed");
+  const auto t0 = std::chrono::steady_clock::time_point(std::chrono::hours(1));
+  {
+    SwapAudit audit(dir);
+    SwapEntry swap = swap_of("dyno1", 1, "alice@bench");
+    swap.model_after = "dyno1_eccentric";
+    audit.add(swap);
+    audit.follow("dyno1", health_of("dyno1_eccentric", 0.0, 0.0, 0), t0);   // no sample yet: nothing
+    for (int half_s = 0; half_s <= 16; ++half_s) {
+      const double rmse = 2000.0 + half_s;   // changes at every health
+      audit.follow("dyno1", health_of("dyno1_eccentric", rmse, rmse + 0.5, 100 * (half_s + 1)),
+                   t0 + std::chrono::milliseconds(500 * half_s));
+    }
+    EXPECT_EQ(lines_of_kind(dir / "swap_audit.log", "after"), 4u);
+    EXPECT_EQ(audit.entries().back().after_samples, 1700u);   // in memory, every health
+    audit.follow("dyno1", health_of("dyno1_eccentric", 2014.0, 2014.5, 1500), t0 + std::chrono::seconds(20));
+    EXPECT_EQ(lines_of_kind(dir / "swap_audit.log", "after"), 4u);
+  }   // killed: gone without close()
+  SwapAudit loaded(dir);
+  ASSERT_EQ(loaded.entries().size(), 1u);
+  const SwapEntry& got = loaded.entries()[0];
+  EXPECT_EQ(got.after_samples, 1500u);   // written at t = 7 s (half_s 14), the last write
+  EXPECT_EQ(got.after_rmse_nm[0], 2014.0);
+  EXPECT_EQ(got.after_rmse_nm[1], 2014.5);
+  EXPECT_TRUE(got.after_frozen);        // nobody follows it now
+  EXPECT_TRUE(got.after_interrupted);
+  EXPECT_STREQ(after_state_text(got), "interrupted");
+}
+
+// One swap's records as a file may hold them: its swap line, after lines while followed, the
+// same swap again (carried into a newer file), then a damaged after line, one of an unknown
+// state and a torn last one (a kill in the middle of a write). One entry, with the figures of
+// the last whole after line; the bad lines are skipped, the torn one cut off the file.
+TEST(SwapAuditFile, AnAfterLineReplacesItsSwapsFiguresAndBadOrTornLinesAreSkipped) {
+  const auto dir = new_state_dir("audit_replaces");
+  SwapEntry swap = swap_of("dyno1", 7, "alice@bench");
+  auto after = [&swap](double msy, std::uint64_t samples, AfterState state) {
+    swap.after_rmse_nm[0] = msy;
+    swap.after_rmse_nm[1] = msy + 1.0;
+    swap.after_samples = samples;
+    return audit_line(after_record_payload(swap, state));
+  };
+  const std::string first = audit_line(swap_record_payload(swap));
+  std::string following = after(1900.0, 100, AfterState::following);
+  following += after(1800.0, 200, AfterState::following);   // in this order: `after` sets `swap`
+  const std::string carried = audit_line(swap_record_payload(swap));   // with 1800 / 200
+  std::string damaged = after(1700.0, 300, AfterState::following);
+  damaged[damaged.find("1700")] = '9';
+  std::string unknown_state = "after " + std::string(16 - 1, '0') + "7 1650 1651 350 halfway";
+  unknown_state = audit_line(unknown_state);
+  const std::string whole = first + following + carried + damaged + unknown_state;
+  const std::string torn_final = after(1600.0, 400, AfterState::final);
+  std::ofstream(dir / "swap_audit.log", std::ios::binary) << whole << torn_final.substr(0, torn_final.size() - 3);
+
+  SwapAudit loaded(dir);
+  ASSERT_EQ(loaded.entries().size(), 1u);   // replaced, not duplicated
+  const SwapEntry& got = loaded.entries()[0];
+  EXPECT_EQ(got.id, 7u);
+  EXPECT_EQ(got.after_rmse_nm[0], 1800.0);
+  EXPECT_EQ(got.after_rmse_nm[1], 1801.0);
+  EXPECT_EQ(got.after_samples, 200u);
+  EXPECT_TRUE(got.after_interrupted);   // the final line was torn
+  std::ifstream in(dir / "swap_audit.log", std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), whole);
+}
+
+TEST(SwapAuditFile, AFinalAfterLineMarksTheFollowingCompleteAndAnOlderMonitorsLineIsFinal) {
+  const auto dir = new_state_dir("audit_final");
+  SwapEntry swap = swap_of("dyno1", 3, "bob");
+  const std::string first = audit_line(swap_record_payload(swap));
+  swap.after_samples = 500;
+  const std::string final_line = audit_line(after_record_payload(swap, AfterState::final));
+  SwapEntry older = swap_of("dyno2", 4, "carol");
+  older.after_samples = 600;
+  std::string older_after = after_record_payload(older, AfterState::final);
+  older_after.resize(older_after.rfind(' '));   // "after ID MSY MSZ SAMPLES": no state
+  std::ofstream(dir / "swap_audit.log", std::ios::binary)
+      << first << final_line << audit_line(swap_record_payload(older)) << audit_line(older_after);
+  SwapAudit loaded(dir);
+  ASSERT_EQ(loaded.entries().size(), 2u);
+  EXPECT_EQ(loaded.entries()[0].after_samples, 500u);
+  EXPECT_STREQ(after_state_text(loaded.entries()[0]), "final");
+  EXPECT_EQ(loaded.entries()[1].after_samples, 600u);
+  EXPECT_STREQ(after_state_text(loaded.entries()[1]), "final");
+}
+
+// A swap followed while 60 others of another cell (40 kB each) rotate the file twice: the file
+// it was first written in is dropped, yet it loads first (the oldest), with its figures, because
+// each rotation carried it into the new file.
+TEST(SwapAuditFile, ASwapStillFollowedIsCarriedAcrossRotations) {
+  const auto dir = new_state_dir("audit_carried");
+  const std::string long_by(40'000, 'x');
+  {
+    SwapAudit audit(dir);
+    SwapEntry followed = swap_of("dyno1", 1, "alice@bench");
+    followed.model_after = "dyno1_eccentric";
+    audit.add(followed);
+    audit.follow("dyno1", health_of("dyno1_eccentric", 1900.0, 2000.0, 500), std::chrono::steady_clock::now());
+    for (std::uint64_t i = 2; i <= 61; ++i) audit.add(swap_of("dyno2", i, long_by));
+  }
+  std::size_t files = 0;
+  for (const auto& file : std::filesystem::directory_iterator(dir)) {
+    EXPECT_LE(file.file_size(), SwapAuditFile::kRotateBytes) << file.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 2u);
+  SwapAudit loaded(dir);
+  ASSERT_GE(loaded.entries().size(), 3u);
+  const SwapEntry& got = loaded.entries().front();
+  EXPECT_EQ(got.id, 1u);
+  EXPECT_EQ(got.after_samples, 500u);
+  EXPECT_EQ(got.after_rmse_nm[1], 2000.0);
+  EXPECT_TRUE(got.after_interrupted);
+  EXPECT_EQ(loaded.entries()[1].id, loaded.entries()[2].id - 1);
+  EXPECT_GT(loaded.entries()[1].id, 2u);   // the first swaps of dyno2 went with the dropped file
+  EXPECT_EQ(loaded.entries().back().id, 61u);
 }
 
 TEST(SwapAuditFile, LoadsTheLatestKeptSwaps) {
