@@ -6,9 +6,7 @@
 // tested against the real monitor (robustness_test.cc).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -17,16 +15,13 @@
 #include "core/model_error.h"
 #include "live/swap_audit.h"
 #include "live/swap_audit_file.h"
+#include "tests/cli/run_process.h"
 
 namespace gc::live {
 namespace {
 
-/// A path of its own under the temporary directory, not made.
-std::filesystem::path temp_path(const std::string& stem) {
-  static std::atomic<int> counter{0};
-  return std::filesystem::temp_directory_path() /
-         (stem + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-}
+/// A path of its own in the test process's scratch directory (removed at exit), not made.
+std::filesystem::path temp_path(const std::string& stem) { return cli::testing::temp_path(stem); }
 
 std::filesystem::path new_state_dir(const std::string& stem) {
   const std::filesystem::path dir = temp_path(stem);
