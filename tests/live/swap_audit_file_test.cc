@@ -6,7 +6,6 @@
 // tested against the real monitor (robustness_test.cc).
 #include <gtest/gtest.h>
 
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
