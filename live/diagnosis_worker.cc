@@ -1,13 +1,6 @@
 #include "live/diagnosis_worker.h"
 
-#include <pthread.h>
-#include <sched.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
 #include <time.h>
-#include <unistd.h>
-
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +8,7 @@
 
 #include "core/diagnosis/diagnose.h"
 #include "core/model_error.h"
+#include "live/background_priority.h"
 
 namespace gc::live {
 namespace {
@@ -23,17 +17,6 @@ double thread_cpu_s() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-/// This thread under the normal policy (a monitor run under SCHED_FIFO, `chrt -f`, must not pass
-/// its real-time priority on to the diagnosis) at nice `nice` (Linux: a thread's own nice value,
-/// its process's other threads unchanged). Logged, not fatal, when refused.
-void lower_priority(int nice) {
-  sched_param normal{};
-  pthread_setschedparam(pthread_self(), SCHED_OTHER, &normal);
-  if (setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice) != 0) {
-    spdlog::warn("diagnosis thread: nice {} refused; it runs at the monitor's priority", nice);
-  }
 }
 
 void diagnose_into(const DiagnosisJob& job, const ParallelFor& parallel, DiagnosisOutcome& out) {
@@ -138,7 +121,7 @@ void DiagnosisWorker::throttled_loop(std::size_t count,
 }
 
 void DiagnosisWorker::run() {
-  lower_priority(nice_);
+  lower_this_thread(nice_);
   std::unique_lock lock(mutex_);
   while (true) {
     wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });

@@ -1,6 +1,7 @@
 // The monitor's diagnoses, off the hot path: one background thread at a bounded CPU share (after
 // each loop of model evaluations it sleeps in proportion to the CPU the loop took: a share of 0.25
-// runs 1 ms in 4) and a low priority (its own nice value, 19 by default), one diagnosis at a time across all test cells, a bounded queue of
+// runs 1 ms in 4) and a low priority (its own nice value; 19, the default, is SCHED_IDLE:
+// live/background_priority.h), one diagnosis at a time across all test cells, a bounded queue of
 // at most one job per test cell. The monitor's thread submits jobs and takes the outcomes; it
 // never waits for a diagnosis (docs/architecture.md, "The learning loop").
 #pragma once
@@ -48,7 +49,7 @@ struct DiagnosisOutcome {
 
 class DiagnosisWorker {
  public:
-  /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19) and uses at most
+  /// `queue` >= 1 jobs waiting at most; the thread runs at nice `nice` (0 to 19; lower_this_thread) and uses at most
   /// `cpu_share` (0 < share <= 1) of a core over each loop; `done` is called from the worker
   /// thread after each outcome is ready (e.g. to wake the monitor's waitset).
   DiagnosisWorker(std::size_t queue, int nice, double cpu_share, std::function<void()> done);

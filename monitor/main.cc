@@ -82,7 +82,8 @@ gc::live::MonitorOptions parse_flags(CLI::App& app, int argc, char** argv, std::
                  "the diagnosis thread's CPU at most, as a share of one core (it sleeps between "
                  "its loops in proportion)")->check(CLI::Range(0.01, 1.0))->capture_default_str();
   app.add_option("--diagnosis-nice", o.learning.nice,
-                 "nice value of the diagnosis thread (the monitor's own thread keeps its priority)")
+                 "nice value of the diagnosis thread; 19 runs it under SCHED_IDLE (the monitor's own "
+                 "thread keeps its priority)")
       ->check(CLI::Range(0, 19))->capture_default_str();
   // systemd's StateDirectory=gearcoupling sets STATE_DIRECTORY=/var/lib/gearcoupling: the unit
   // needs no flag (deploy/gearcoupling-monitor.service).
