@@ -19,7 +19,7 @@ std::string parameter_text(const v1::ProposedParameterRecord& p) {
 }
 
 void print_swaps(const std::vector<v1::MonitorRecord>& monitors, std::FILE* out) {
-  analysis::Table table({"test cell", "when [unix s]", "by", "identity", "source", "model before", "model after",
+  analysis::Table table({"test cell", "when [unix s]", "by", "operator identity", "source", "model before", "model after",
                          "RMSE before M_sy'/M_sz' [kN·m]", "RMSE after M_sy'/M_sz' [kN·m]"});
   // "interrupted": the monitor that followed the swap was killed, the after-figures are the last
   // it wrote to its state directory (live/swap_audit_file.h).
@@ -28,7 +28,7 @@ void print_swaps(const std::vector<v1::MonitorRecord>& monitors, std::FILE* out)
     for (const v1::SwapAuditRecord& s : m.recent_swaps()) {
       any = true;
       table.add_row({s.test_cell(), fmt::format("{:.1f}", s.at_unix_s()), s.by(),
-                     s.operator_identity().empty() ? "-" : s.operator_identity(), s.source(),
+                     s.operator_identity().empty() ? "none" : s.operator_identity(), s.source(),
                      s.model_before(), s.model_after(),
                      knm(s.before_msy_rmse_nm()) + " / " + knm(s.before_msz_rmse_nm()),
                      knm(s.after_msy_rmse_nm()) + " / " + knm(s.after_msz_rmse_nm()) +

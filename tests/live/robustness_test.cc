@@ -302,6 +302,9 @@ TEST_F(LiveTest, AKilledMonitorsAfterSwapFiguresOutliveItMarkedInterrupted) {
   EXPECT_EQ(is.after_state(), "interrupted");
   const auto table = cli::testing::run_gearcoupling(on_test_domain({"status", "--discovery-s", "0.5"}));
   EXPECT_NE(table.out.find("(interrupted)"), std::string::npos) << table.out;   // the swaps' table says so too
+  // A swap without an operator identity says so in words, as the dashboard does.
+  EXPECT_NE(table.out.find("operator identity"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find(" none "), std::string::npos) << table.out;
 }
 
 // A damaged audit file (a line changed, a line of garbage, a last line torn by a kill) is
