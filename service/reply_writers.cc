@@ -40,12 +40,13 @@ ParticipantKey participant_key_of(const dds_guid_t& guid) {
 ReplyWriters::ReplyWriters(MakeDomain make_domain, std::string instance_tag,
                            std::size_t max_parked, std::function<void()> on_first_parked,
                            double departed_memory_s, std::size_t writers_per_domain,
-                           double moved_writer_linger_s)
+                           double moved_writer_linger_s, double move_give_up_s)
     : make_domain_(std::move(make_domain)),
       instance_tag_(std::move(instance_tag)),
       writers_per_domain_(std::max<std::size_t>(writers_per_domain, 1)),
       moved_writer_linger_(std::chrono::duration_cast<Clock::duration>(
           std::chrono::duration<double>(moved_writer_linger_s))),
+      move_give_up_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(move_give_up_s))),
       max_parked_(max_parked),
       on_first_parked_(std::move(on_first_parked)),
       departed_memory_(std::chrono::duration_cast<Clock::duration>(
@@ -255,6 +256,7 @@ bool ReplyWriters::move_writers(Clock::time_point now) {
   std::vector<Lingering> over;  // deleted after mutex_ is released (reader_appeared says why)
   std::vector<Key> to_move;
   std::shared_ptr<Generation> current;
+  bool moving = false;  // a successor to make or to wait for
   {
     std::lock_guard lock(mutex_);
     if (!replaced_domains_ && lingering_.empty()) return false;
@@ -263,14 +265,25 @@ bool ReplyWriters::move_writers(Clock::time_point now) {
     for (auto& [key, entry] : writers_) {
       if (!entry.endpoint.writer || entry.endpoint.generation == current) continue;
       outside_current = true;
+      if (entry.move_again > now) continue;
       if (!entry.successor.writer) {
         if (to_move.size() < kMovesPerCall) to_move.push_back(key);
+        moving = true;
         continue;
       }
       // The successor takes over once it reaches every reader the old writer reaches: the
       // client sees no gap, as both are this instance's writers in its partition.
       if (protocol::matched_reader_count(entry.successor.writer.get()) <
           protocol::matched_reader_count(entry.endpoint.writer.get())) {
+        if (now - entry.successor_made < move_give_up_) {
+          moving = true;
+        } else {
+          spdlog::info("client {:016x}: its reply reader has not matched this instance's new reply domain in {} s; "
+                       "it stays in the old one, and the move is tried again later",
+                       key.first, std::chrono::duration<double>(move_give_up_).count());
+          over.push_back({std::exchange(entry.successor, Endpoint{}), now});
+          entry.move_again = now + 10 * move_give_up_;
+        }
         continue;
       }
       lingering_.push_back({std::move(entry.endpoint), now + moved_writer_linger_});
@@ -293,9 +306,10 @@ bool ReplyWriters::move_writers(Clock::time_point now) {
       continue;
     }
     found->second.successor = std::move(successor);
+    found->second.successor_made = now;
   }
   std::lock_guard lock(mutex_);
-  return replaced_domains_ || !lingering_.empty();
+  return moving || !lingering_.empty();
 }
 
 std::size_t ReplyWriters::domains() const {

@@ -95,10 +95,14 @@ class ReplyWriters {
   /// A client whose readers all went is remembered (its late requests dropped at once) for
   /// `departed_memory_s`, then forgotten: clients that come and go (every CLI call is one) must
   /// not grow the service without bound.
+  /// A successor that has not matched as many readers as the writer it replaces within
+  /// `move_give_up_s` is deleted and the client stays in its domain (a client that never
+  /// discovers the new domain's participant, e.g. one whose peer list is full, is still served,
+  /// and the dispatch loop does not poll for it); the move is tried again 10 times as late.
   ReplyWriters(MakeDomain make_domain, std::string instance_tag, std::size_t max_parked,
                std::function<void()> on_first_parked, double departed_memory_s = 60.0,
                std::size_t writers_per_domain = kWritersPerDomain,
-               double moved_writer_linger_s = 2.0);
+               double moved_writer_linger_s = 2.0, double move_give_up_s = 30.0);
 
   /// A reader of `calculation`'s replies, of participant `owner`, appeared in `client_id`'s
   /// partition: make its writer.
@@ -137,9 +141,10 @@ class ReplyWriters {
   void mark_departed(std::uint64_t client_id, double hold_s);
 
   /// Moves up to kMovesPerCall writers of replaced domains to the current one (makes their
-  /// successors), hands over to the successors that have matched as many readers, and deletes
-  /// the old writers whose linger is over (a domain goes with its last writer). True while a
-  /// move is under way: call again soon. Dispatch loop only, as reader_appeared().
+  /// successors), hands over to the successors that have matched as many readers, gives up on
+  /// those that did not in time, and deletes the old writers whose linger is over (a domain goes
+  /// with its last writer). True while a move is under way: call again soon (a move given up on
+  /// is not: it is tried again at a later call). Dispatch loop only, as reader_appeared().
   bool move_writers(Clock::time_point now);
   /// Reply domains alive (the current one and the replaced ones some writer is still in).
   std::size_t domains() const;
@@ -164,6 +169,8 @@ class ReplyWriters {
   struct Writer {
     Endpoint endpoint;
     Endpoint successor;    ///< in the current domain, while `endpoint` is in a replaced one
+    Clock::time_point successor_made;   ///< when `successor` was made
+    Clock::time_point move_again;       ///< a move given up on is not tried before this
     int readers = 0;       ///< discovered readers of this (client, calculation)
     bool matched = false;  ///< a reader has matched it (sticky: it goes only with the reader)
   };
@@ -196,6 +203,7 @@ class ReplyWriters {
   std::string instance_tag_;
   std::size_t writers_per_domain_;
   Clock::duration moved_writer_linger_;
+  Clock::duration move_give_up_;
   std::size_t max_parked_;
   std::function<void()> on_first_parked_;
   Clock::duration departed_memory_;

@@ -100,5 +100,44 @@ TEST_F(ReplyWritersTest, ClientsThatComeAndGoLeaveAtMostTwoReplyDomainsAndAStayi
   EXPECT_GE(protocol::matched_reader_count(writer), 1u) << "the moved writer reaches the staying client";
 }
 
+// A client whose readers never match the new reply domain's writer (here: the new domains are
+// seen on another DDS domain; in the field, a client whose peer list cannot take one more
+// participant): the move is given up on after move_give_up_s, the dispatch loop is not kept
+// polling, and the client is still served by its writer in the old domain.
+TEST_F(ReplyWritersTest, AMoveWhoseSuccessorNeverMatchesIsGivenUpAndTheClientStillServed) {
+  int made = 0;
+  const int elsewhere = (test::test_domain() + 1) % 230;
+  ReplyWriters::MakeDomain make_domain = [&] {
+    return std::make_unique<ReplyDomain>(made++ == 0 ? test::test_domain() : elsewhere, protocol::dds_config());
+  };
+  ReplyWriters writers(make_domain, "0123456789abcdef", 16, [] {}, 60.0, 1, 0.0, 1.0);
+  constexpr std::uint64_t kStaying = 0x5748;
+  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(kStaying));
+  const protocol::Entity subscriber(protocol::check_dds(
+      dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
+  const protocol::Qos qos = protocol::request_reply_qos();
+  const std::size_t jam = protocol::index_of(Calculation::kJamAngle);
+  const protocol::Entity reader(protocol::check_dds(
+      dds_create_reader(subscriber.get(), topics_[jam].get(), qos.get(), nullptr), "dds_create_reader"));
+  writers.reader_appeared(kStaying, Calculation::kJamAngle, owner_);
+  const dds_entity_t first = writers.writer(kStaying, Calculation::kJamAngle);
+  ASSERT_NE(first, 0);
+  for (int i = 0; i < 1000 && protocol::matched_reader_count(first) == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_GE(protocol::matched_reader_count(first), 1u);
+  come_and_go(writers, 1, owner_);   // the first domain has had its one writer: a new one is made
+  ASSERT_EQ(made, 2);
+  const auto started = ReplyWriters::Clock::now();
+  ASSERT_TRUE(move_until_done(writers, std::chrono::seconds(20))) << "the move was never given up";
+  const double took_s = std::chrono::duration<double>(ReplyWriters::Clock::now() - started).count();
+  EXPECT_GE(took_s, 0.9) << "given up before its time";
+  EXPECT_LT(took_s, 10.0);
+  EXPECT_FALSE(writers.move_writers(ReplyWriters::Clock::now())) << "a move given up on keeps the loop polling";
+  EXPECT_EQ(writers.writer(kStaying, Calculation::kJamAngle), first) << "the client lost its writer";
+  EXPECT_GE(protocol::matched_reader_count(first), 1u);
+  EXPECT_EQ(writers.domains(), 2u);   // the old domain stays while the client is in it
+}
+
 }  // namespace
 }  // namespace gc::service
