@@ -41,6 +41,22 @@ class ReplyWritersTest : public testing::Test {
   ReplyWriters::MakeDomain make_domain_ = [] {
     return std::make_unique<ReplyDomain>(test::test_domain(), protocol::dds_config());
   };
+
+  /// A client's jam-angle reply reader, in its partition on this process's other participant.
+  struct ClientReader {
+    protocol::Entity subscriber, reader;
+  };
+  ClientReader jam_angle_reader(std::uint64_t client_id) const {
+    const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(client_id));
+    ClientReader r;
+    r.subscriber = protocol::Entity(protocol::check_dds(
+        dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
+    const protocol::Qos qos = protocol::request_reply_qos();
+    const std::size_t jam = protocol::index_of(Calculation::kJamAngle);
+    r.reader = protocol::Entity(protocol::check_dds(
+        dds_create_reader(r.subscriber.get(), topics_[jam].get(), qos.get(), nullptr), "dds_create_reader"));
+    return r;
+  }
 };
 
 /// Calls move_writers() until it says no move is under way; false if that took over `limit`.
@@ -72,15 +88,9 @@ TEST_F(ReplyWritersTest, AClientJustGoneIsStillRememberedAndItsLateRequestsDropp
 TEST_F(ReplyWritersTest, ClientsThatComeAndGoLeaveAtMostTwoReplyDomainsAndAStayingClientIsStillServed) {
   constexpr std::size_t kWritersPerDomain = 8;
   ReplyWriters writers(make_domain_, "0123456789abcdef", 16, [] {}, 60.0, kWritersPerDomain, 0.0);
-  // A client that stays: its reply reader, in its partition on this process's other participant.
+  // A client that stays.
   constexpr std::uint64_t kStaying = 0x5747;
-  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(kStaying));
-  const protocol::Entity subscriber(protocol::check_dds(
-      dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
-  const protocol::Qos qos = protocol::request_reply_qos();
-  const std::size_t jam = protocol::index_of(Calculation::kJamAngle);
-  const protocol::Entity reader(protocol::check_dds(
-      dds_create_reader(subscriber.get(), topics_[jam].get(), qos.get(), nullptr), "dds_create_reader"));
+  const ClientReader reader = jam_angle_reader(kStaying);
   writers.reader_appeared(kStaying, Calculation::kJamAngle, owner_);
   // Then 100 clients come and go: 12 domains' worth of writers.
   for (std::uint64_t id = 1; id <= 100; ++id) {
@@ -112,13 +122,7 @@ TEST_F(ReplyWritersTest, AMoveWhoseSuccessorNeverMatchesIsGivenUpAndTheClientSti
   };
   ReplyWriters writers(make_domain, "0123456789abcdef", 16, [] {}, 60.0, 1, 0.0, 1.0);
   constexpr std::uint64_t kStaying = 0x5748;
-  const protocol::Qos partition = protocol::partition_qos(protocol::reply_partition(kStaying));
-  const protocol::Entity subscriber(protocol::check_dds(
-      dds_create_subscriber(participant_.get(), partition.get(), nullptr), "dds_create_subscriber"));
-  const protocol::Qos qos = protocol::request_reply_qos();
-  const std::size_t jam = protocol::index_of(Calculation::kJamAngle);
-  const protocol::Entity reader(protocol::check_dds(
-      dds_create_reader(subscriber.get(), topics_[jam].get(), qos.get(), nullptr), "dds_create_reader"));
+  const ClientReader reader = jam_angle_reader(kStaying);
   writers.reader_appeared(kStaying, Calculation::kJamAngle, owner_);
   const dds_entity_t first = writers.writer(kStaying, Calculation::kJamAngle);
   ASSERT_NE(first, 0);
