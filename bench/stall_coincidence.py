@@ -10,7 +10,9 @@ round trip over 1 ms (from its send to its reply), or a gap between two sends wi
 sender's rate in it at which it sent nothing (skipped); overlapping ones are merged. A stall of
 the service is shared when one of ddsperf's overlaps it, each widened by the margin on either
 side: the host held both programs up at once (the hypervisor, the kernel), which no design of
-the service removes. The others are the service's own, and listed: those are the ones to trace.
+the service removes. The others are the service's own, and listed with ddsperf's longest round
+trip in the same time (a host's slowdown that ddsperf, too, felt but kept under 1 ms shows
+there): those are the ones to trace.
 
 The deadlines the service missed (late round trips and skipped ticks, counted as
 bench/latency_stats.py counts them) are split the same way.
@@ -111,7 +113,10 @@ def main(argv):
           f"({100.0 * sum(s[2] for s in theirs) / ticks:.3f}%) "
           f"(margin {args.margin_ms:g} ms)")
     for start, stop, n in own:
-        print(f"  service only: t={start:.4f} {1e3 * (stop - start):.2f} ms, {n} deadline(s)")
+        near = [us for t, us in ddsperf
+                if t < stop + margin_s and start - margin_s < t + us / 1e6]
+        print(f"  service only: t={start:.4f} {1e3 * (stop - start):.2f} ms, {n} deadline(s); "
+              f"ddsperf's longest round trip meanwhile {max(near, default=0.0):.0f} us")
     return 0
 
 
