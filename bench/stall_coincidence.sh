@@ -50,9 +50,11 @@ cleanup() {
 }
 trap cleanup EXIT INT TERM
 
-echo "# $mode against ddsperf $ping_mode, at once, $seconds s at $rate Hz, priority ${STALL_PRIORITY:-fifo}, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# $mode against ddsperf $ping_mode, at once, $seconds s at $rate Hz," \
+  "priority ${STALL_PRIORITY:-fifo}, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 # shellcheck disable=SC2086 # the prefix is words
-$prefix timeout $((seconds + 60)) "$build/service/gearcoupling-service" --domain "$sdomain" --log-level warn &
+$prefix timeout $((seconds + 60)) "$build/service/gearcoupling-service" --domain "$sdomain" \
+  --log-level warn &
 pids="$pids $!"
 # shellcheck disable=SC2086
 $prefix timeout $((seconds + 60)) ddsperf -i "$domain" -D $((seconds + 30)) pong >/dev/null 2>&1 &
@@ -60,8 +62,8 @@ pids="$pids $!"
 sleep 1
 # shellcheck disable=SC2086
 GC_DDSPERF_ROUNDTRIPS="$work/ddsperf.rt" LD_PRELOAD="$build/bench/libgc_ddsperf_roundtrips.so" \
-  $prefix timeout $((seconds + 40)) ddsperf -i "$domain" -D $((seconds + 5)) ping "${rate}Hz" "$ping_mode" \
-  >"$work/ping.out" 2>&1 &
+  $prefix timeout $((seconds + 40)) ddsperf -i "$domain" -D $((seconds + 5)) \
+  ping "${rate}Hz" "$ping_mode" >"$work/ping.out" 2>&1 &
 ping=$!
 # shellcheck disable=SC2086
 $prefix timeout $((seconds + 40)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
