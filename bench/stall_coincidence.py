@@ -44,13 +44,6 @@ def grid_origin(samples, period_s):
     return first + offsets[len(offsets) // 2] - 0.1 * period_s
 
 
-def tick_of(t, samples, period_s, _cache={}):
-    key = (id(samples), period_s)
-    if key not in _cache:
-        _cache[key] = grid_origin(samples, period_s)
-    return int((t - _cache[key]) // period_s)
-
-
 def stalls(samples, period_s, fixed_grid):
     """[(start, end, missed deadlines)], merged where they overlap. fixed_grid: the sender's
     ticks are a fixed grid, and a send may be late by up to a period (gc_bench_control_loop);
@@ -60,9 +53,10 @@ def stalls(samples, period_s, fixed_grid):
     for t, us in samples:
         if us > DEADLINE_US:
             raw.append([t, t + us / 1e6, 1])
+    origin = grid_origin(samples, period_s)
     for (a, _), (b, _) in zip(samples, samples[1:]):
         if fixed_grid:
-            skipped = tick_of(b, samples, period_s) - tick_of(a, samples, period_s) - 1
+            skipped = int((b - origin) // period_s) - int((a - origin) // period_s) - 1
         else:
             skipped = round((b - a) / period_s) - 1
         if skipped > 0:
