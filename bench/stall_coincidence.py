@@ -20,18 +20,7 @@ bench/latency_stats.py counts them) are split the same way.
 import argparse
 import sys
 
-DEADLINE_US = 1000.0
-
-
-def read(path):
-    samples = []
-    with open(path) as text:
-        for line in text:
-            fields = line.split()
-            if len(fields) == 2:
-                samples.append((float(fields[0]), float(fields[1])))
-    samples.sort()
-    return samples
+from latency_stats import DEADLINE_US, read  # the same round-trip files, the same deadline
 
 
 def grid_origin(samples, period_s):
@@ -85,7 +74,7 @@ def main(argv):
     parser.add_argument("--margin-ms", type=float, default=2.0)
     args = parser.parse_args(argv[1:])
     period_s = 1.0 / args.rate_hz
-    service, ddsperf = read(args.service), read(args.ddsperf)
+    service, ddsperf = sorted(read(args.service)), sorted(read(args.ddsperf))
     if not service or not ddsperf:
         print("no round trips in one of the files", file=sys.stderr)
         return 1
