@@ -72,14 +72,28 @@ std::vector<double> term_weights(const std::vector<std::string>& names) {
   return weights;
 }
 
+/// `v` (a stacked column: y rows, then z rows) less each channel's mean.
+template <typename V>
+void remove_levels(V&& v) {
+  const Eigen::Index n = v.size() / 2;
+  v.head(n).array() -= v.head(n).mean();
+  v.tail(n).array() -= v.tail(n).mean();
+}
+
 /// Forward selection (orthogonal matching pursuit): at each step the column whose part orthogonal
 /// to the columns chosen so far explains most of what is left, weighted by `weights`. Columns that
-/// the chosen ones already span are never taken.
+/// the chosen ones already span are never taken. `within_channels`: the order is found on what
+/// varies within each channel, each channel's level over the rows taken out of the residual and of
+/// every column first; a constant on a channel has no part left and is never chosen.
 std::vector<Eigen::Index> forward_order(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, int steps,
-                                        const std::vector<double>& weights) {
+                                        const std::vector<double>& weights, bool within_channels) {
   std::vector<Eigen::Index> order;
   Eigen::MatrixXd q = x;
   Eigen::VectorXd r = y;
+  if (within_channels) {
+    remove_levels(r);
+    for (Eigen::Index j = 0; j < q.cols(); ++j) remove_levels(q.col(j));
+  }
   std::vector<bool> used(static_cast<std::size_t>(x.cols()), false);
   for (int step = 0; step < steps; ++step) {
     Eigen::Index best = -1;
@@ -242,6 +256,30 @@ void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Ma
   }
 }
 
+/// A channel's intercept (constant_on_y, constant_on_z) stays in the formula only when its level
+/// stands out of the slow wander the formula leaves: at least three times the spread of the
+/// residual's means over twenty blocks in time. A zero drift slower than the run (a correlation
+/// time tau up to about three runs of length T) has a level over the run sqrt(3 tau / T) times its
+/// wander within it, and the next run has its own: on rig hysteresis the training run's 0.77 and
+/// 1.06 kN·m (1.9 and 2.6 times the wander), kept, cost the next run 9 points of its cut. A bridge
+/// offset or a weight that matters stands well out of it, as does the level that a term carrying
+/// one needs beside it (a speed drag about 12 rpm: 30 kN·m).
+void drop_levels_within_the_wander(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
+                                   const std::vector<bool>& levels, std::vector<bool>& support) {
+  constexpr int kBlocks = 20;
+  constexpr double kLeastRatio = 3.0;
+  if (residual.rows() < 4 * kBlocks) return;
+  const Eigen::VectorXd y = stacked(residual);
+  const Eigen::VectorXd c = solve_on(z, y, support);
+  const Eigen::VectorXd means = block_means(y - z * c, kBlocks);
+  const double wander = std::sqrt((means.array() - means.mean()).square().mean());
+  for (std::size_t j = 0; j < support.size(); ++j) {
+    if (!support[j] || !levels[j]) continue;
+    const double level = std::abs(c(static_cast<Eigen::Index>(j))) * z.col(static_cast<Eigen::Index>(j)).cwiseAbs().maxCoeff();
+    if (level < kLeastRatio * wander) support[j] = false;
+  }
+}
+
 /// The design without the terms that vary as slowly as a drift (FormulaSettings::fast_terms_only).
 /// The share of a stacked column's squares that is each channel's mean over the rows.
 double level_share(const Eigen::VectorXd& column) {
@@ -321,11 +359,7 @@ std::optional<Eigen::MatrixXd> columns_of(std::span<const RecordedSample> observ
 
 /// Each column less its mean on each channel (rows 0..n-1 are M_sy', n..2n-1 M_sz').
 void remove_channel_levels(Eigen::MatrixXd& columns) {
-  const Eigen::Index n = columns.rows() / 2;
-  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
-    columns.col(j).head(n).array() -= columns.col(j).head(n).mean();
-    columns.col(j).tail(n).array() -= columns.col(j).tail(n).mean();
-  }
+  for (Eigen::Index j = 0; j < columns.cols(); ++j) remove_levels(columns.col(j));
 }
 
 }  // namespace
@@ -432,33 +466,44 @@ std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample>
   return held_out(*x, residual, folds, [&every](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return every; });
 }
 
-std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
-                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& given,
-                                                const Folds& folds, const FormulaSettings& settings) {
-  // Fast terms only: each channel's level over the rows is its zero drift's, for no term to take
-  // (FormulaSettings::fast_terms_only).
-  const Eigen::MatrixX2d residual = settings.fast_terms_only ? without_levels(given) : given;
-  TermDesign design = term_design(observations, rows, given,
-                                  settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
-  if (settings.fast_terms_only) design = fast_terms(std::move(design));
-  if (design.terms.empty()) return std::nullopt;
-  if (settings.fast_terms_only) remove_channel_levels(design.columns);
-  // Normalised columns: a coefficient is then the term's RMS contribution [N·m], one threshold for all.
-  const Eigen::VectorXd scale =
-      (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();
-  const Eigen::MatrixXd z = design.columns * scale.cwiseInverse().asDiagonal();
+namespace {
+
+/// The search's columns on the search rows: normalised (a coefficient is then the term's RMS
+/// contribution [N·m], one threshold for all), and which are the channels' levels.
+struct SearchDesign {
+  std::vector<std::string> terms;
+  Eigen::MatrixXd z;
+  std::vector<double> weights;
+  std::vector<bool> levels;  ///< constant_on_y, constant_on_z
+};
+
+/// The formula the blocked cross-validation chooses on `design` (formula_search.h), its terms
+/// ordered on the whole residual or, `within_channels`, on what varies within each channel with the
+/// channels' levels as intercepts of every fit (forward_order). nullopt when none beats no formula.
+std::optional<CandidateScore> search(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                     const Eigen::MatrixX2d& residual, const SearchDesign& design, const Folds& folds,
+                                     const FormulaSettings& settings, bool within_channels) {
+  const Eigen::MatrixXd& z = design.z;
   const Eigen::VectorXd y = stacked(residual);
-  const std::vector<double> weights = term_weights(design.terms);
-  // The path: formulas of 0, 1, ... max_terms terms, each fold choosing its own terms on its
-  // training rows, scored on its held-out rows.
+  const std::vector<bool> none(design.levels.size(), false);
+  const std::vector<bool>& levels = within_channels ? design.levels : none;
+  const std::size_t first = count(levels) > 0 ? 1 : 0;  // the path's step that adds the intercepts
+  const auto terms_at = [&](const std::vector<Eigen::Index>& order, std::size_t m) {
+    if (m < first) return none;
+    std::vector<bool> keep = first_terms(order, m - first, z.cols());
+    for (std::size_t j = 0; j < keep.size(); ++j) keep[j] = keep[j] || levels[j];
+    return keep;
+  };
+  // The path: no formula, (the intercepts,) then formulas of 1, ... max_terms terms, each fold
+  // choosing its own terms on its training rows, scored on its held-out rows.
   // Forward selection is greedy, so the formula of m terms is the first m of the longest: each
   // fold's order is found once, on the first pass, and cut for every m.
   std::vector<std::vector<Eigen::Index>> order(folds.training.size());
   std::vector<std::pair<double, double>> scores;
-  for (int m = 0; m <= settings.max_terms; ++m) {
+  for (std::size_t m = 0; m <= static_cast<std::size_t>(settings.max_terms) + first; ++m) {
     const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](std::size_t f, const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
-      if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms, weights);
-      return first_terms(order[f], static_cast<std::size_t>(m), z.cols());
+      if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms, design.weights, within_channels);
+      return terms_at(order[f], m);
     });
     scores.push_back(block_mean_square(r, folds));
   }
@@ -474,16 +519,19 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   // SINDy): a term that only the fit on every row picks first has fitted what the held-out blocks
   // do not repeat (a pair of travel-sign terms did, beside a speed drag, which every fold chose).
   // The fit on every row orders the rest when no term has a majority.
-  std::vector<bool> support = first_terms(forward_order(z, y, static_cast<int>(chosen), weights), chosen, z.cols());
+  const std::size_t chosen_terms = chosen - first;
+  std::vector<bool> support =
+      terms_at(forward_order(z, y, static_cast<int>(chosen_terms), design.weights, within_channels), chosen);
   std::vector<int> votes(static_cast<std::size_t>(z.cols()), 0);
   for (const auto& fold_order : order) {
-    for (std::size_t k = 0; k < std::min(chosen, fold_order.size()); ++k) ++votes[static_cast<std::size_t>(fold_order[k])];
+    for (std::size_t k = 0; k < std::min(chosen_terms, fold_order.size()); ++k) ++votes[static_cast<std::size_t>(fold_order[k])];
   }
   std::vector<bool> stable(support.size(), false);
-  for (std::size_t j = 0; j < votes.size(); ++j) stable[j] = 2 * votes[j] > static_cast<int>(order.size());
-  if (count(stable) > 0) support = stable;
+  for (std::size_t j = 0; j < votes.size(); ++j) stable[j] = levels[j] || 2 * votes[j] > static_cast<int>(order.size());
+  if (count(stable) > count(levels)) support = stable;
   drop_drift_that_does_not_extrapolate(z, residual, design.terms, support);
   drop_slow_terms_within_the_wander(z, residual, design.terms, support);
+  drop_levels_within_the_wander(z, residual, levels, support);
   if (count(support) == 0) return std::nullopt;
 
   std::vector<std::string> terms;
@@ -497,6 +545,47 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
       held_out(z, residual, folds, [&](std::size_t, const Eigen::MatrixXd&, const Eigen::VectorXd&) { return support; });
   score_held_out(score, residual, folds);
   return score;
+}
+
+/// A candidate's held-out mean square without each channel's level over the rows.
+double within_channel_mean_square(const CandidateScore& c, const Folds& folds) {
+  return block_mean_square(without_levels(c.held_out_residual), folds).first;
+}
+
+}  // namespace
+
+std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> observations,
+                                                std::span<const std::size_t> rows, const Eigen::MatrixX2d& given,
+                                                const Folds& folds, const FormulaSettings& settings) {
+  // Fast terms only: each channel's level over the rows is its zero drift's, for no term to take
+  // (FormulaSettings::fast_terms_only).
+  const Eigen::MatrixX2d residual = settings.fast_terms_only ? without_levels(given) : given;
+  TermDesign design = term_design(observations, rows, given,
+                                  settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
+  if (settings.fast_terms_only) design = fast_terms(std::move(design));
+  if (design.terms.empty()) return std::nullopt;
+  if (settings.fast_terms_only) remove_channel_levels(design.columns);
+  SearchDesign search_design;
+  const Eigen::VectorXd scale =
+      (design.columns.colwise().norm() / std::sqrt(static_cast<double>(design.columns.rows()))).transpose();
+  search_design.z = design.columns * scale.cwiseInverse().asDiagonal();
+  search_design.weights = term_weights(design.terms);
+  for (const std::string& name : design.terms) search_design.levels.push_back(name == "constant_on_y" || name == "constant_on_z");
+  search_design.terms = std::move(design.terms);
+  std::optional<CandidateScore> whole = search(observations, rows, residual, search_design, folds, settings, false);
+  if (count(search_design.levels) == 0) return whole;
+  // A run's level is the bridge's zero drift at that time as much as anything physical, and a
+  // term that carries a level (T along the misalignment, always positive) can win the ordering on
+  // it: on rig hysteresis it took the training run's 0.8 and 1.1 kN·m with the part of
+  // T sign(dzeta/dt) that it shares, and the next run, with its own level, lost 6 points of its
+  // cut that the right term keeps. So the terms are also ordered on what varies within each
+  // channel, with the levels as intercepts, and that formula is taken when it explains more of
+  // what varies within the channels on held-out rows; the interleaved folds share the run's level
+  // and cannot tell the two apart on it. Where the level is the physics' (a speed drag, T zeta
+  // along the moment), the formula ordered on the whole residual explains the variation as well.
+  std::optional<CandidateScore> within = search(observations, rows, residual, search_design, folds, settings, true);
+  if (!whole || (within && within_channel_mean_square(*within, folds) < within_channel_mean_square(*whole, folds))) return within;
+  return whole;
 }
 
 }  // namespace gc

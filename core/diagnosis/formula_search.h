@@ -4,7 +4,11 @@
 // matching pursuit) on normalised columns: one term at a time, the one that explains most of what
 // the others leave. The number of terms is chosen by the blocked cross-validation of the diagnosis
 // (each fold selects on its own training rows) with the one-standard-error rule (the fewest terms
-// within one standard error of the best). Forward selection rather than thresholded least squares
+// within one standard error of the best). The terms are ordered twice: on the whole residual, and
+// on what varies within each channel with the channels' constants as intercepts of every fit,
+// which a run's level (its zero drift's as much as anything physical) cannot sway; the second is
+// taken when it explains more of that variation on held-out rows, and keeps an intercept only
+// where the level stands out of the run's wander. Forward selection rather than thresholded least squares
 // (SINDy's STLSQ): the catalogue writes one mechanism in several frames that correlate on a
 // recording of a few directions, and thresholding kept combinations of them where one term did.
 // Beside the catalogue, the time_cycle terms of the residual's dominant period
