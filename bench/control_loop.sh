@@ -5,15 +5,21 @@
 #
 #   bench/control_loop.sh [BUILD_DIR]      (default: build)
 #
-# For each load and rate, ROUNDS rounds; a round is one run of SECONDS of each of these four, in
-# this order in odd rounds and pairwise swapped in even ones, so that both see the host alike:
-# - `ddsperf ping RATE listener` against `ddsperf pong` (ping's main thread sends at the rate,
-#   the pong is taken in a listener);
-# - the service with call_then at RATE (gc_bench_control_loop: the loop's thread sends, the
-#   reply's callback takes the time);
-# - `ddsperf ping RATE waitset` (a thread of ping's own is woken for each pong);
-# - the service with blocking call()s at RATE (the loop's thread is woken by each reply).
-# The service's requests are awaited before the next tick; a tick missed meanwhile is skipped.
+# The service's loop (gc_bench_control_loop, its requests awaited before the next tick; a tick
+# missed meanwhile is skipped) runs in two modes, each beside the ddsperf mode with the same
+# wake-ups:
+# - call_then (the loop's thread sends, the reply's callback takes the time) beside `ddsperf ping
+#   RATE listener` against `ddsperf pong` (ping's main thread sends, the pong is taken in a
+#   listener);
+# - blocking call()s (the loop's thread is woken by each reply) beside `ddsperf ping RATE
+#   waitset` (a thread of ping's own is woken for each pong).
+# For each priority, load and rate, ROUNDS rounds. With CONTROL_LOOP_CONCURRENT=1 (the default) a
+# round runs each mode and its ddsperf AT THE SAME TIME, on their two domains, for SECONDS (the
+# two modes one after the other, their order swapped in even rounds; bench/lib/control_loop.sh,
+# as bench/stall_coincidence.sh): a stall that the host makes (the hypervisor waking a halted
+# vCPU late, steal) falls on both alike, where in turn it falls on whichever runs then. With
+# CONTROL_LOOP_CONCURRENT=0 a round runs the four one after the other, SECONDS each (listener,
+# call_then, waitset, call, pairwise swapped in even rounds).
 # Every round trip is recorded, ddsperf's too (bench/ddsperf_roundtrips.c, preloaded: ddsperf
 # itself prints per-second summaries of half the round trip only), and bench/latency_stats.py
 # sums up the rounds of each of the four alike: p50, p99, p99.9, the maximum, the share over
@@ -22,10 +28,15 @@
 # (steal, /proc/stat; a whole vCPU is sometimes taken for 100 ms, and a round trip waits), the
 # share of deadlines missed outside those times (bench/steal_log.py logs them through the whole
 # run; bench/latency_stats.py --steal sets apart what overlapped them, ddsperf's and the
-# service's alike) and the load average when its last run ended. Then the service over the ddsperf mode with the same
-# wake-ups: call_then over listener, call() over waitset.
+# service's alike) and the load average when its last run ended. Then the service over the
+# ddsperf mode with the same wake-ups: the p50 and p99.9 ratios, the deadlines missed, whether
+# the cell met issue 26's goals (deadlines taken outside stolen time) and, at the same time
+# only, the share the service missed in stalls of its own: not ddsperf's within 2 ms
+# (bench/stall_coincidence.py, round by round; the first five of each round listed with their
+# CLOCK_MONOTONIC times, to look up in a `perf record -k CLOCK_MONOTONIC` trace).
 #
-# CONTROL_LOOP_SECONDS (default 3): seconds per run.
+# CONTROL_LOOP_CONCURRENT (default 1): 1, the service and its ddsperf at the same time; 0, in turn.
+# CONTROL_LOOP_SECONDS (default 3): seconds per run (at the same time: the seconds both ran).
 # CONTROL_LOOP_ROUNDS (default 3): rounds per load and rate.
 # CONTROL_LOOP_RATES (default "1000 100"): request rates (Hz).
 # CONTROL_LOOP_LOADS (default "0 1 all"): hogs per load; "all" = one per core.
@@ -50,14 +61,21 @@ rates=${CONTROL_LOOP_RATES:-1000 100}
 loads=${CONTROL_LOOP_LOADS:-0 1 all}
 priorities=${CONTROL_LOOP_PRIORITIES:-none}
 late_us=${CONTROL_LOOP_LATE_US:-}
+concurrent=${CONTROL_LOOP_CONCURRENT:-1}
+case $concurrent in
+  0 | 1) ;;
+  *) echo "CONTROL_LOOP_CONCURRENT: \"$concurrent\" (allowed: 1, at the same time; 0, in turn)" >&2; exit 2 ;;
+esac
 . "$here/bench/lib/hogs.sh"
 . "$here/bench/lib/ddsperf.sh"
+. "$here/bench/lib/control_loop.sh"
 service=""
 steal_logger=""
 work=$(mktemp -d)
 cleanup() {
   if [ -n "$steal_logger" ]; then kill "$steal_logger" 2>/dev/null || true; fi
   stop_hogs
+  ddsperf_ping_wait TERM
   ddsperf_pong_stop
   if [ -n "$service" ]; then kill -TERM "$service" 2>/dev/null || true; fi
   rm -rf "$work"
@@ -88,7 +106,8 @@ steal_ms() {  # the time stolen from all CPUs by the hypervisor so far (ms)
 }
 
 # run WHAT RATE FILE PREFIX...: one run of WHAT (listener, waitset: ddsperf; call_then, call: the
-# service) into FILE; adds the steal time of the run to FILE.steal.
+# service) into FILE, alone (CONTROL_LOOP_CONCURRENT=0); adds the steal time of the run to
+# FILE.steal.
 run() {
   run_what=$1
   run_rate=$2
@@ -96,39 +115,55 @@ run() {
   shift 3
   before=$(steal_ms)
   case $run_what in
-    listener | waitset) ddsperf_loop "$run_rate" "$run_what" "$run_file" "$@" ;;
-    *) service_loop "$run_rate" "$run_what" "$run_file" "$@" ;;
+    listener | waitset)
+      ddsperf_pong_start "$domain" $((seconds + 4)) "$@"
+      ddsperf_ping_start "$run_rate" "$run_what" "$run_file" $((seconds + 1)) "$@"
+      ddsperf_ping_wait
+      ddsperf_pong_stop
+      touch "$run_file"
+      ddsperf_drop_first_second "$run_file" ;;
+    *) service_loop "$run_rate" "$run_what" "$run_file" "$seconds" "$@" ;;
   esac
   echo $(( $(steal_ms) - before )) >>"${run_file%-r*}.steal"
 }
 
-# ddsperf_loop RATE MODE FILE PREFIX...: ddsperf ping at RATE in MODE against a pong, both
-# started through PREFIX, every round trip into FILE.
-ddsperf_loop() {
-  rate=$1
-  mode=$2
-  file=$3
+# run_pair MODE RATE ROUND PREFIX...: the service's loop in MODE and ddsperf in the mode with the
+# same wake-ups at the same time (CONTROL_LOOP_CONCURRENT=1), into the files of round ROUND of the
+# cell $f; adds the steal time of the pair to both programs' .steal.
+run_pair() {
+  pair_what=$1
+  pair_ping=$(ping_mode_of "$1")
+  pair_at=$2
+  pair_round=$3
   shift 3
-  ddsperf_pong_start "$domain" $((seconds + 4)) "$@"
-  GC_DDSPERF_ROUNDTRIPS="$file" LD_PRELOAD="$build/bench/libgc_ddsperf_roundtrips.so" \
-    "$@" timeout $((seconds + 10)) ddsperf -i "$domain" -D $((seconds + 1)) ping "${rate}Hz" "$mode" \
-    >"$file.out" 2>&1 || true
-  ddsperf_pong_stop
-  # The first second is discovery and the first pings' matching: dropped, as the service's
-  # warm-up is.
-  awk 'NR == 1 { start = $1 } $1 >= start + 1' "$file" >"$file.kept"
-  mv "$file.kept" "$file"
+  before=$(steal_ms)
+  control_loop_pair "$pair_at" "$pair_what" "$seconds" "$f-$pair_what-r$pair_round" \
+    "$f-$pair_ping-r$pair_round" "$@"
+  pair_stolen=$(( $(steal_ms) - before ))
+  echo "$pair_stolen" >>"$f-$pair_what.steal"
+  echo "$pair_stolen" >>"$f-$pair_ping.steal"
 }
 
-# service_loop RATE MODE FILE PREFIX...: gc_bench_control_loop at RATE with MODE, every round
-# trip into FILE.
-service_loop() {
-  rate=$1
-  mode=$2
-  file=$3
-  shift 3
-  "$@" timeout $((seconds + 40)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
-    --mode "$mode" --rate-hz "$rate" --seconds "$seconds" --out "$file" >"$file.out" 2>&1 || true
+# own_stalls MODE RATE LABEL: the share (%) of the ticks of cell $f's rounds at which the
+# service in MODE missed its deadline in stalls of its own, not ddsperf's within 2 ms
+# (bench/stall_coincidence.py, round by round, pooled); lists the first five of each round's
+# stalls of its own, with their times, into $work/own.txt.
+own_stalls() {
+  own_ticks=0
+  own_missed=0
+  own_round=1
+  while [ "$own_round" -le "$rounds" ]; do
+    own_out=$(python3 "$here/bench/stall_coincidence.py" --rate-hz "$2" "$f-$1-r$own_round" \
+      "$f-$(ping_mode_of "$1")-r$own_round" 2>&1 || true)
+    own_line=$(echo "$own_out" | head -n 1)
+    own_ticks=$((own_ticks + $(field "$own_line" ticks | grep -E '^[0-9]+$' || echo 0)))
+    own_missed=$((own_missed + $(field "$own_line" of_which_service_only | grep -E '^[0-9]+$' || echo 0)))
+    echo "$own_out" | sed -n '2,6s/^ *service only: /'"$3, round $own_round: "'/p' >>"$work/own.txt"
+    own_more=$(( $(echo "$own_out" | grep -c 'service only:' || true) - 5 ))
+    [ "$own_more" -le 0 ] || echo "$3, round $own_round: and $own_more more" >>"$work/own.txt"
+    own_round=$((own_round + 1))
+  done
+  awk -v m="$own_missed" -v t="$own_ticks" 'BEGIN { if (t > 0) printf "%.3f", 100 * m / t; else print "nan" }'
 }
 
 field() {  # LINE NAME: the value of NAME=VALUE in LINE, unit stripped
@@ -143,15 +178,24 @@ row() {  # PRIORITY HOGS RATE WHAT LINE STEAL_FILE
   echo "| $1 | $2 | $3 | $4 | $(field "$5" n) | $(field "$5" p50) | $(field "$5" p99) | $(field "$5" p999) | $(field "$5" max) | $(field "$5" over_1ms) % | $(field "$5" skipped) | $(field "$5" missed) % | $(field "$5" missed_unstolen) % | $(awk '{ s += $1 } END { print s + 0 }' "$6") ms | $(cut -d' ' -f1 /proc/loadavg) |"
 }
 
-ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE
-  echo "| $1 | $2 | $3 | $4 | $(ratio "$(field "$5" p50)" "$(field "$6" p50)") | $(ratio "$(field "$5" p999)" "$(field "$6" p999)") | $(field "$5" missed) % / $(field "$6" missed) % | $(field "$5" missed_unstolen) % / $(field "$6" missed_unstolen) % |"
+goals_met() {  # SERVICE_LINE DDSPERF_LINE: yes if the cell meets issue 26's three goals, else no
+  awk -v s50="$(field "$1" p50)" -v d50="$(field "$2" p50)" -v s999="$(field "$1" p999)" \
+    -v d999="$(field "$2" p999)" -v sm="$(field "$1" missed_unstolen)" \
+    -v dm="$(field "$2" missed_unstolen)" 'BEGIN {
+      ok = d50 > 0 && s50 <= 1.5 * d50 && d999 > 0 && s999 <= 2 * d999 && (sm <= 0.1 || sm <= 2 * dm)
+      print ok ? "yes" : "no" }'
 }
 
-echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds rounds of $seconds s per run, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE [OWN]
+  echo "| $1 | $2 | $3 | $4 | $(ratio "$(field "$5" p50)" "$(field "$6" p50)") | $(ratio "$(field "$5" p999)" "$(field "$6" p999)") | $(field "$5" missed) % / $(field "$6" missed) % | $(field "$5" missed_unstolen) % / $(field "$6" missed_unstolen) % | ${7:--} | $(goals_met "$5" "$6") |"
+}
+
+if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time"; else how="the service and ddsperf in turn"; fi
+echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds rounds of $seconds s per run, $how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time |
-|---|---|---|---|---|---|---|---|"
+ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
+|---|---|---|---|---|---|---|---|---|---|"
 failed=0
 timeout 3600 python3 "$here/bench/steal_log.py" 3600 "$work/steal.log" &
 steal_logger=$!
@@ -167,13 +211,27 @@ for priority in $priorities; do
       f="$work/$priority-$load-$rate"
       r=1
       while [ "$r" -le "$rounds" ]; do
-        if [ $((r % 2)) -eq 1 ]; then order="listener call_then waitset call"; else order="call_then listener call waitset"; fi
-        for what in $order; do
-          # shellcheck disable=SC2086 # the prefix is words
-          run "$what" "$rate" "$f-$what-r$r" $prefix
-        done
+        if [ "$concurrent" = 1 ]; then
+          if [ $((r % 2)) -eq 1 ]; then order="call_then call"; else order="call call_then"; fi
+          for what in $order; do
+            # shellcheck disable=SC2086 # the prefix is words
+            run_pair "$what" "$rate" "$r" $prefix
+          done
+        else
+          if [ $((r % 2)) -eq 1 ]; then order="listener call_then waitset call"; else order="call_then listener call waitset"; fi
+          for what in $order; do
+            # shellcheck disable=SC2086 # the prefix is words
+            run "$what" "$rate" "$f-$what-r$r" $prefix
+          done
+        fi
         r=$((r + 1))
       done
+      own_call_then=""
+      own_call=""
+      if [ "$concurrent" = 1 ]; then
+        own_call_then="$(own_stalls call_then "$rate" "$priority, $load hog(s), $rate Hz, call_then") %"
+        own_call="$(own_stalls call "$rate" "$priority, $load hog(s), $rate Hz, call") %"
+      fi
       for what in listener call_then waitset call; do
         line=$(stats "$rate" "$f-$what"-r*[0-9])
         [ "$(field "$line" n)" != 0 ] || { failed=1; echo "$what at $rate Hz, $load hog(s): no round trip; its output:" >&2; cat "$f-$what"-r*.out >&2; }
@@ -184,8 +242,8 @@ $(row "$priority" "$load" "$rate" "$what" "$line" "$f-$what.steal")"
       done
       # shellcheck disable=SC2154 # set by the eval above
       ratios="$ratios
-$(ratios_row "$priority" "$load" "$rate" "call_then / ddsperf listener" "$line_call_then" "$line_listener")
-$(ratios_row "$priority" "$load" "$rate" "call() / ddsperf waitset" "$line_call" "$line_waitset")"
+$(ratios_row "$priority" "$load" "$rate" "call_then / ddsperf listener" "$line_call_then" "$line_listener" "$own_call_then")
+$(ratios_row "$priority" "$load" "$rate" "call() / ddsperf waitset" "$line_call" "$line_waitset" "$own_call")"
     done
     stop_hogs
   done
@@ -217,6 +275,15 @@ echo
 echo "The service against ddsperf in the mode with the same wake-ups:"
 echo
 echo "$ratios$cross"
-echo "(goal: p99.9 within 2 x; deadlines missed at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
+echo "(goal: p99.9 within 2 x; deadlines missed outside stolen time at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
+if [ "$concurrent" = 1 ]; then
+  echo "(in stalls of its own: the deadlines the service missed in stalls that ddsperf, running at the same time, did not have within 2 ms; bench/stall_coincidence.py)"
+  if [ -s "$work/own.txt" ]; then
+    echo
+    echo "The service's stalls of its own (CLOCK_MONOTONIC start, length, deadlines; the first five a round):"
+    echo
+    cat "$work/own.txt"
+  fi
+fi
 echo "(steal: the hypervisor took CPUs away for $(awk '{ s += $2 } END { print s + 0 }' "$work/steal.log") ms in all, $(wc -l <"$work/steal.log") times; bench/steal_log.py)"
 exit "$failed"

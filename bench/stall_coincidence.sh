@@ -4,16 +4,18 @@
 #
 #   bench/stall_coincidence.sh [BUILD_DIR]      (default: build)
 #
-# bench/control_loop.sh runs the service and ddsperf one after the other, so a stall of a few ms
-# that the host causes once in a while (the hypervisor pausing a virtual CPU for less than the
-# 10 ms /proc/stat counts steal in, a woken thread held by another's kernel work) falls on
-# whichever of them runs then. Here both run at once for SECONDS, on two domains: the service
-# (gc_bench_control_loop, MODE) and `ddsperf ping RATE` against `ddsperf pong`, in the mode with
-# the same wake-ups (listener for call_then, waitset for call), every process started under the
-# same PRIORITY. bench/stall_coincidence.py then sets each stall of the service (a round trip
-# over 1 ms, or ticks skipped) beside ddsperf's: one that ddsperf had too, within 2 ms, is the
-# host's; the others are the service's own and are listed with their times (CLOCK_MONOTONIC, as
-# perf's timestamps with -k CLOCK_MONOTONIC). Each pair costs a few percent of a core; on two
+# Run one after the other (bench/control_loop.sh with CONTROL_LOOP_CONCURRENT=0), the service and
+# ddsperf each meet the stalls of a few ms that the host causes once in a while (the hypervisor
+# pausing a virtual CPU for less than the 10 ms /proc/stat counts steal in, a woken thread held by
+# another's kernel work) only when they run then. Here both run at once for SECONDS, on two
+# domains, as in a cell of bench/control_loop.sh (the same function: bench/lib/control_loop.sh),
+# for longer and with every stall listed: the service (gc_bench_control_loop, MODE) and `ddsperf
+# ping RATE` against `ddsperf pong`, in the mode with the same wake-ups (listener for call_then,
+# waitset for call), every process started under the same PRIORITY. bench/stall_coincidence.py
+# then sets each stall of the service (a round trip over 1 ms, or ticks skipped) beside
+# ddsperf's: one that ddsperf had too, within 2 ms, is the host's; the others are the service's
+# own and are listed with their times (CLOCK_MONOTONIC, as perf's timestamps with -k
+# CLOCK_MONOTONIC). Each pair costs a few percent of a core; on two
 # cores the four round-trip threads can meet on one, which both sides pay alike.
 #
 # STALL_SECONDS (default 60), STALL_RATE (default 1000), STALL_MODE (default call_then; or call),
@@ -26,11 +28,9 @@ export CYCLONEDDS_URI="${CONTROL_LOOP_CONFIG:-file://$here/deploy/cyclonedds-loo
 seconds=${STALL_SECONDS:-60}
 rate=${STALL_RATE:-1000}
 mode=${STALL_MODE:-call_then}
-case $mode in
-  call_then) ping_mode=listener ;;
-  call) ping_mode=waitset ;;
-  *) echo "STALL_MODE: unknown \"$mode\" (allowed: call_then, call)" >&2; exit 2 ;;
-esac
+. "$here/bench/lib/ddsperf.sh"
+. "$here/bench/lib/control_loop.sh"
+ping_mode=$(ping_mode_of "$mode")
 case ${STALL_PRIORITY:-fifo} in
   fifo) prefix="chrt -f 10" ;;
   none) prefix="" ;;
@@ -39,9 +39,11 @@ esac
 domain=$((1 + $$ % 200))
 sdomain=$(( (domain + 100) % 200 + 1 ))
 work=$(mktemp -d)
-pids=""
+service=""
 cleanup() {
-  for pid in $pids; do kill "$pid" 2>/dev/null || true; done
+  ddsperf_ping_wait TERM
+  ddsperf_pong_stop
+  if [ -n "$service" ]; then kill "$service" 2>/dev/null || true; fi
   if [ -n "${STALL_KEEP:-}" ]; then
     mkdir -p "$STALL_KEEP"
     cp "$work"/*.rt "$STALL_KEEP"/ 2>/dev/null || true
@@ -55,20 +57,9 @@ echo "# $mode against ddsperf $ping_mode, at once, $seconds s at $rate Hz," \
 # shellcheck disable=SC2086 # the prefix is words
 $prefix timeout $((seconds + 60)) "$build/service/gearcoupling-service" --domain "$sdomain" \
   --log-level warn &
-pids="$pids $!"
+service=$!
 # shellcheck disable=SC2086
-$prefix timeout $((seconds + 60)) ddsperf -i "$domain" -D $((seconds + 30)) pong >/dev/null 2>&1 &
-pids="$pids $!"
-sleep 1
-# shellcheck disable=SC2086
-GC_DDSPERF_ROUNDTRIPS="$work/ddsperf.rt" LD_PRELOAD="$build/bench/libgc_ddsperf_roundtrips.so" \
-  $prefix timeout $((seconds + 40)) ddsperf -i "$domain" -D $((seconds + 5)) \
-  ping "${rate}Hz" "$ping_mode" >"$work/ping.out" 2>&1 &
-ping=$!
-# shellcheck disable=SC2086
-$prefix timeout $((seconds + 40)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
-  --mode "$mode" --rate-hz "$rate" --seconds "$seconds" --out "$work/service.rt"
-wait "$ping" || true
+control_loop_pair "$rate" "$mode" "$seconds" "$work/service.rt" "$work/ddsperf.rt" $prefix
 python3 "$here/bench/latency_stats.py" --rate-hz "$rate" "$work/service.rt" | sed 's/^/service: /'
 python3 "$here/bench/latency_stats.py" --rate-hz "$rate" "$work/ddsperf.rt" | sed 's/^/ddsperf: /'
 python3 "$here/bench/stall_coincidence.py" --rate-hz "$rate" "$work/service.rt" "$work/ddsperf.rt"
