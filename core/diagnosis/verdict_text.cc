@@ -56,8 +56,14 @@ std::string rival_formula_text(const DiagnosisRound& round) {
 
 std::string dropped_text(const DiagnosisRound& round) {
   std::string text;
+  const std::vector<std::string>& replaced = round.chosen().replaces;
   for (const std::string& name : round.dropped) {
-    text += " With it in place, the earlier claim " + name + " no longer lowers the held-out error and is dropped.";
+    if (std::find(replaced.begin(), replaced.end(), name) != replaced.end()) {
+      text += " It takes the place of the earlier claim " + name + ", which is dropped: without it, and with these "
+              "refitted together, the model predicts the held-out rows as well, with fewer parameters.";
+    } else {
+      text += " With it in place, the earlier claim " + name + " no longer lowers the held-out error and is dropped.";
+    }
   }
   return text;
 }
@@ -202,7 +208,8 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
                 ", difference t = " + short_number(a.against_best.t) + "); to tell " + c.info->name + " from " + a.name +
                 ", " + a.experiment.advice;
       }
-      return text + ". The search continues with " + c.info->name + ": " + fitted_parameters_text(*round.claimed) + ".";
+      return text + ". The search continues with " + c.info->name + ": " + fitted_parameters_text(*round.claimed) + "." +
+             dropped_text(round);
     }
   }
   return head;
