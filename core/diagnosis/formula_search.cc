@@ -261,7 +261,7 @@ void drop_slow_terms_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Ma
 /// residual's means over twenty blocks in time. A zero drift slower than the run (a correlation
 /// time tau up to about three runs of length T) has a level over the run sqrt(3 tau / T) times its
 /// wander within it, and the next run has its own: on rig hysteresis the training run's 0.77 and
-/// 1.06 kN·m (1.9 and 2.6 times the wander), kept, cost the next run 9 points of its cut. A bridge
+/// 1.06 kN·m (1.9 and 2.6 times the wander), kept, cost the next run 6 points of its cut. A bridge
 /// offset or a weight that matters stands well out of it, as does the level that a term carrying
 /// one needs beside it (a speed drag about 12 rpm: 30 kN·m).
 void drop_levels_within_the_wander(const Eigen::MatrixXd& z, const Eigen::MatrixX2d& residual,
