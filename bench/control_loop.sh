@@ -36,7 +36,13 @@
 # CLOCK_MONOTONIC times, to look up in a `perf record -k CLOCK_MONOTONIC` trace).
 #
 # CONTROL_LOOP_CONCURRENT (default 1): 1, the service and its ddsperf at the same time; 0, in turn.
-# CONTROL_LOOP_SECONDS (default 3): seconds per run (at the same time: the seconds both ran).
+# CONTROL_LOOP_TICKS (default 9000): the ticks of a cell (a rate, a load, a mode) over its rounds
+#   at every rate: a run lasts TICKS / (ROUNDS x RATE) seconds, 3 s at 1 kHz and 30 s at 100 Hz.
+#   The goal's p99.9 and its 0.1 % are then 9 round trips at both rates. With 3,000 ticks they
+#   were 3: a cell whose service misses 0.06 % of its deadlines (mean 1.8) then misses more than
+#   3 with probability 0.11 on chance alone (Poisson); with 9,000 ticks, more than 9 with 0.05.
+# CONTROL_LOOP_SECONDS (unset): seconds per run at every rate instead (at the same time: the
+#   seconds both ran).
 # CONTROL_LOOP_ROUNDS (default 3): rounds per load and rate.
 # CONTROL_LOOP_RATES (default "1000 100"): request rates (Hz).
 # CONTROL_LOOP_LOADS (default "0 1 all"): hogs per load; "all" = one per core.
@@ -55,7 +61,7 @@ build=${1:-$here/build}
 export CYCLONEDDS_URI="${CONTROL_LOOP_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
 domain=$((1 + $$ % 200))
 sdomain=$(( (domain + 100) % 200 + 1 ))
-seconds=${CONTROL_LOOP_SECONDS:-3}
+ticks=${CONTROL_LOOP_TICKS:-9000}
 rounds=${CONTROL_LOOP_ROUNDS:-3}
 rates=${CONTROL_LOOP_RATES:-1000 100}
 loads=${CONTROL_LOOP_LOADS:-0 1 all}
@@ -166,6 +172,14 @@ own_stalls() {
   awk -v m="$own_missed" -v t="$own_ticks" 'BEGIN { if (t > 0) printf "%.3f", 100 * m / t; else print "nan" }'
 }
 
+seconds_at() {  # RATE: seconds per run: CONTROL_LOOP_SECONDS, or `ticks` ticks over the rounds (rounded up)
+  if [ -n "${CONTROL_LOOP_SECONDS:-}" ]; then
+    echo "$CONTROL_LOOP_SECONDS"
+  else
+    awk -v t="$ticks" -v r="$rounds" -v h="$1" 'BEGIN { s = t / (r * h); print (s == int(s)) ? s : int(s) + 1 }'
+  fi
+}
+
 field() {  # LINE NAME: the value of NAME=VALUE in LINE, unit stripped
   echo "$1" | tr ' ' '\n' | awk -F= -v n="$2" '$1 == n { v = $2; sub("us|%", "", v); print v }'
 }
@@ -191,7 +205,7 @@ ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE [OWN]
 }
 
 if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time"; else how="the service and ddsperf in turn"; fi
-echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds rounds of $seconds s per run, $how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds round(s) per cell, $(for rate in $rates; do printf '%s s per run at %s Hz, ' "$(seconds_at "$rate")" "$rate"; done)$how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
@@ -209,6 +223,7 @@ for priority in $priorities; do
     sleep 0.5
     for rate in $rates; do
       f="$work/$priority-$load-$rate"
+      seconds=$(seconds_at "$rate")
       r=1
       while [ "$r" -le "$rounds" ]; do
         if [ "$concurrent" = 1 ]; then
