@@ -49,7 +49,9 @@
 # CONTROL_LOOP_PRIORITIES (default "none"): each a whole pass over the loads, with the service,
 #   the loop and ddsperf (ping and pong alike) started under
 #   - none: as they are;
-#   - fifo: `chrt -f 10` (SCHED_FIFO 10: docs/deploy.md, "Real-time priority").
+#   - fifo: `chrt -f 10` (SCHED_FIFO 10: docs/deploy.md, "Real-time priority");
+#   - slice: still SCHED_OTHER, with a scheduler slice of CONTROL_LOOP_SLICE_US (default 100 us:
+#     bench/gc_sched_slice, parallel/scheduler_slice.h), which needs no privilege.
 # CONTROL_LOOP_LATE_US (unset): also list every round trip over this many us, with the time since
 #   the one before (a periodic cause shows as a steady gap).
 # CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
@@ -67,6 +69,7 @@ rates=${CONTROL_LOOP_RATES:-1000 100}
 loads=${CONTROL_LOOP_LOADS:-0 1 all}
 priorities=${CONTROL_LOOP_PRIORITIES:-none}
 late_us=${CONTROL_LOOP_LATE_US:-}
+slice_us=${CONTROL_LOOP_SLICE_US:-100}
 concurrent=${CONTROL_LOOP_CONCURRENT:-1}
 case $concurrent in
   0 | 1) ;;
@@ -92,7 +95,8 @@ prefix_of() {  # $1 priority: the command prefix that starts a process with it
   case $1 in
     none) echo "" ;;
     fifo) echo "chrt -f 10" ;;
-    *) echo "CONTROL_LOOP_PRIORITIES: unknown \"$1\" (allowed: none, fifo)" >&2; exit 2 ;;
+    slice) echo "$build/bench/gc_sched_slice $slice_us" ;;
+    *) echo "CONTROL_LOOP_PRIORITIES: unknown \"$1\" (allowed: none, fifo, slice)" >&2; exit 2 ;;
   esac
 }
 
@@ -267,20 +271,26 @@ $(ratios_row "$priority" "$load" "$rate" "call() / ddsperf waitset" "$line_call"
   service=""
 done
 
-# The prioritised service against the unprioritised ddsperf of the same run, when both passes ran.
+# The prioritised service (fifo, slice) against the unprioritised ddsperf of the same run, when
+# both passes ran.
 cross=""
-case " $priorities " in *" none "*) case " $priorities " in *" fifo "*)
-  for load in $loads; do
-    for rate in $rates; do
-      for pair in call_then:listener call:waitset; do
-        eval "service_line=\"\$kept_fifo_${load}_${rate}_${pair%%:*}\""
-        eval "ddsperf_line=\"\$kept_none_${load}_${rate}_${pair##*:}\""
-        # shellcheck disable=SC2154 # set by the evals above
-        cross="$cross
-$(ratios_row "fifo / none" "$load" "$rate" "${pair%%:*} (fifo) / ddsperf ${pair##*:} (none)" "$service_line" "$ddsperf_line")"
-      done
-    done
-  done ;; esac ;; esac
+case " $priorities " in *" none "*)
+  for prio in fifo slice; do
+    case " $priorities " in *" $prio "*)
+      for load in $loads; do
+        for rate in $rates; do
+          for pair in call_then:listener call:waitset; do
+            eval "service_line=\"\$kept_${prio}_${load}_${rate}_${pair%%:*}\""
+            eval "ddsperf_line=\"\$kept_none_${load}_${rate}_${pair##*:}\""
+            # shellcheck disable=SC2154 # set by the evals above
+            cross="$cross
+$(ratios_row "$prio / none" "$load" "$rate" "${pair%%:*} ($prio) / ddsperf ${pair##*:} (none)" "$service_line" "$ddsperf_line")"
+          done
+        done
+      done ;;
+    esac
+  done ;;
+esac
 
 echo
 echo "Every run's round trips (us; listener and waitset are ddsperf's, the whole round trip):"
