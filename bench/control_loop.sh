@@ -126,12 +126,8 @@ run() {
   before=$(steal_ms)
   case $run_what in
     listener | waitset)
-      ddsperf_pong_start "$domain" $((seconds + 4)) "$@"
-      ddsperf_ping_start "$run_rate" "$run_what" "$run_file" $((seconds + 1)) "$@"
-      ddsperf_ping_wait
-      ddsperf_pong_stop
-      touch "$run_file"
-      ddsperf_drop_first_second "$run_file" ;;
+      ddsperf_pair_start "$run_rate" "$run_what" "$run_file" $((seconds + 1)) "$@"
+      ddsperf_pair_stop "$run_file" ;;
     *) service_loop "$run_rate" "$run_what" "$run_file" "$seconds" "$@" ;;
   esac
   echo $(( $(steal_ms) - before )) >>"${run_file%-r*}.steal"

@@ -44,6 +44,31 @@ ddsperf_drop_first_second() {
   mv "$1.kept" "$1"
 }
 
+# ddsperf_pair_start RATE MODE FILE SECONDS [PREFIX...]: a `ddsperf pong` on `domain` (outliving
+# the ping by 3 s) and `ddsperf ping RATE MODE` against it for SECONDS (ddsperf_ping_start), in
+# the background.
+ddsperf_pair_start() {
+  start_rate=$1
+  start_mode=$2
+  start_file=$3
+  start_seconds=$4
+  shift 4
+  ddsperf_pong_start "$domain" $((start_seconds + 3)) "$@"
+  ddsperf_ping_start "$start_rate" "$start_mode" "$start_file" "$start_seconds" "$@"
+}
+
+# ddsperf_pair_stop FILE [TERM]: waits for the ping (asking it to end first with TERM), stops the
+# pong, and keeps FILE's round trips from the ping's second second on (an empty FILE where the
+# ping failed: the caller says so).
+ddsperf_pair_stop() {
+  stop_file=$1
+  shift
+  ddsperf_ping_wait "$@"
+  ddsperf_pong_stop
+  touch "$stop_file"
+  ddsperf_drop_first_second "$stop_file"
+}
+
 # service_loop RATE MODE FILE SECONDS [PREFIX...]: gc_bench_control_loop at RATE with MODE for
 # SECONDS against the service on `sdomain`, every round trip into FILE, its output into FILE.out.
 service_loop() {
@@ -68,14 +93,11 @@ control_loop_pair() {
   pair_service=$4
   pair_ddsperf=$5
   shift 5
-  ddsperf_pong_start "$domain" $((pair_seconds + 30)) "$@"
-  ddsperf_ping_start "$pair_rate" "$(ping_mode_of "$pair_mode")" "$pair_ddsperf" $((pair_seconds + 30)) "$@"
+  ddsperf_pair_start "$pair_rate" "$(ping_mode_of "$pair_mode")" "$pair_ddsperf" $((pair_seconds + 30)) "$@"
   sleep 1  # ping's first second, dropped; the loop's discovery and warm-up follow it
   service_loop "$pair_rate" "$pair_mode" "$pair_service" "$pair_seconds" "$@"
-  ddsperf_ping_wait TERM
-  ddsperf_pong_stop
-  touch "$pair_service" "$pair_ddsperf"  # an empty file where a program failed: the caller says so
-  ddsperf_drop_first_second "$pair_ddsperf"
+  ddsperf_pair_stop "$pair_ddsperf" TERM
+  touch "$pair_service"  # an empty file where the loop failed: the caller says so
   # The time both ran: from the later first send to the earlier last one.
   pair_window=$(awk 'FNR == 1 { if ($1 > b) b = $1 } { l[FILENAME] = $1 }
     END { e = ""; for (f in l) if (e == "" || l[f] < e) e = l[f]; print b, e }' \
