@@ -51,7 +51,8 @@
 #   - none: as they are;
 #   - fifo: `chrt -f 10` (SCHED_FIFO 10: docs/deploy.md, "Real-time priority");
 #   - slice: still SCHED_OTHER, with a scheduler slice of CONTROL_LOOP_SLICE_US (default 100 us:
-#     bench/gc_sched_slice, parallel/scheduler_slice.h), which needs no privilege.
+#     bench/gc_sched_slice; docs/architecture.md, "Where a control loop's tail comes from"),
+#     which needs no privilege.
 # CONTROL_LOOP_LATE_US (unset): also list every round trip over this many us, with the time since
 #   the one before (a periodic cause shows as a steady gap).
 # CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
