@@ -5,10 +5,12 @@
 // turns the file into p50, p99, p99.9, the maximum and the share over 1 ms, as it does with
 // ddsperf's round trips (bench/ddsperf_roundtrips.c).
 //
-//   gc_bench_control_loop --domain N --mode call|call_then [--rate-hz 1000] [--seconds 5] --out FILE
+//   gc_bench_control_loop --domain N --mode call|call_then [--rate-hz 1000] [--seconds 5]
+//                         [--spin-us 0] --out FILE
 //
 // call: the loop's thread makes a blocking call() (it sleeps until the reply wakes it, the
-// wake-ups of ddsperf's waitset mode). call_then: the loop's thread sends with call_then and the
+// wake-ups of ddsperf's waitset mode; with --spin-us, ClientOptions::spin_before_sleep, it
+// spins that long on the reply before it sleeps). call_then: the loop's thread sends with call_then and the
 // reply's callback, in Cyclone's receive thread, takes the time (ddsperf's listener mode, where
 // ping's main thread sends at the rate and the listener takes the pong); the loop's thread
 // waits for it only at the next tick, so no wake-up of its own lies inside the round trip.
@@ -38,6 +40,7 @@ struct Options {
   std::string mode = "call";
   double rate_hz = 1000.0;
   double seconds = 5.0;
+  int spin_us = 0;
   std::string out;
 };
 
@@ -162,10 +165,14 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"call", "call_then"}));
   app.add_option("--rate-hz", o.rate_hz, "requests per second")->check(CLI::Range(1.0, 20000.0));
   app.add_option("--seconds", o.seconds, "how long to run")->check(CLI::Range(0.1, 3600.0));
+  app.add_option("--spin-us", o.spin_us, "call: spin this long on the reply before sleeping")
+      ->check(CLI::Range(0, static_cast<int>(gc::client::kMaxSpinBeforeSleep.count())));
   app.add_option("--out", o.out, "file for one \"T_S ROUND_TRIP_US\" line per request")->required();
   CLI11_PARSE(app, argc, argv);
 
-  gc::client::Client client({o.domain, std::chrono::seconds(5)});
+  gc::client::ClientOptions client_options{o.domain, std::chrono::seconds(5)};
+  client_options.spin_before_sleep = std::chrono::microseconds(o.spin_us);
+  gc::client::Client client(client_options);
   if (!client.wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(20))) {
     std::fprintf(stderr, "no service on domain %d\n", o.domain);
     return 1;
@@ -183,7 +190,7 @@ int main(int argc, char** argv) {
                  s.round_trip_us);
   }
   std::fclose(out);
-  std::printf("control_loop mode=%s rate_hz=%g requests=%zu missed_ticks=%ld failed=%ld\n",
-              o.mode.c_str(), o.rate_hz, run.samples.size(), run.missed_ticks, run.failed);
+  std::printf("control_loop mode=%s rate_hz=%g spin_us=%d requests=%zu missed_ticks=%ld failed=%ld\n",
+              o.mode.c_str(), o.rate_hz, o.spin_us, run.samples.size(), run.missed_ticks, run.failed);
   return run.failed == 0 ? 0 : 1;
 }

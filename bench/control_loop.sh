@@ -53,6 +53,9 @@
 #   - slice: still SCHED_OTHER, with a scheduler slice of CONTROL_LOOP_SLICE_US (default 100 us:
 #     bench/gc_sched_slice; docs/architecture.md, "Where a control loop's tail comes from"),
 #     which needs no privilege.
+# CONTROL_LOOP_SPIN_US (default 0): call() spins up to this long on each reply before it sleeps
+#   (ClientOptions::spin_before_sleep, 0 to 10000); its rows then say so. ddsperf's waitset
+#   still sleeps: the option removes a wake-up that ddsperf keeps (docs/architecture.md).
 # CONTROL_LOOP_LATE_US (unset): also list every round trip over this many us, with the time since
 #   the one before (a periodic cause shows as a steady gap).
 # CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
@@ -71,6 +74,12 @@ loads=${CONTROL_LOOP_LOADS:-0 1 all}
 priorities=${CONTROL_LOOP_PRIORITIES:-none}
 late_us=${CONTROL_LOOP_LATE_US:-}
 slice_us=${CONTROL_LOOP_SLICE_US:-100}
+spin_us=${CONTROL_LOOP_SPIN_US:-0}
+case $spin_us in
+  '' | *[!0-9]*) echo "CONTROL_LOOP_SPIN_US: \"$spin_us\" (allowed: 0 to 10000 us)" >&2; exit 2 ;;
+esac
+if [ "$spin_us" -gt 10000 ]; then echo "CONTROL_LOOP_SPIN_US: \"$spin_us\" (allowed: 0 to 10000 us)" >&2; exit 2; fi
+if [ "$spin_us" -gt 0 ]; then call_label="call(), spinning $spin_us us,"; else call_label="call()"; fi
 concurrent=${CONTROL_LOOP_CONCURRENT:-1}
 case $concurrent in
   0 | 1) ;;
@@ -206,7 +215,7 @@ ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE [OWN]
 }
 
 if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time"; else how="the service and ddsperf in turn"; fi
-echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds round(s) per cell, $(for rate in $rates; do printf '%s s per run at %s Hz, ' "$(seconds_at "$rate")" "$rate"; done)$how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds round(s) per cell, $(for rate in $rates; do printf '%s s per run at %s Hz, ' "$(seconds_at "$rate")" "$rate"; done)$how, call() spinning up to $spin_us us before it sleeps, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
@@ -259,7 +268,7 @@ $(row "$priority" "$load" "$rate" "$what" "$line" "$f-$what.steal")"
       # shellcheck disable=SC2154 # set by the eval above
       ratios="$ratios
 $(ratios_row "$priority" "$load" "$rate" "call_then / ddsperf listener" "$line_call_then" "$line_listener" "$own_call_then")
-$(ratios_row "$priority" "$load" "$rate" "call() / ddsperf waitset" "$line_call" "$line_waitset" "$own_call")"
+$(ratios_row "$priority" "$load" "$rate" "$call_label / ddsperf waitset" "$line_call" "$line_waitset" "$own_call")"
     done
     stop_hogs
   done

@@ -70,7 +70,8 @@ ddsperf_pair_stop() {
 }
 
 # service_loop RATE MODE FILE SECONDS [PREFIX...]: gc_bench_control_loop at RATE with MODE for
-# SECONDS against the service on `sdomain`, every round trip into FILE, its output into FILE.out.
+# SECONDS against the service on `sdomain`, every round trip into FILE, its output into FILE.out;
+# call() spins up to `spin_us` (default 0) on each reply before it sleeps.
 service_loop() {
   loop_rate=$1
   loop_mode=$2
@@ -78,8 +79,8 @@ service_loop() {
   loop_seconds=$4
   shift 4
   "$@" timeout $((loop_seconds + 40)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
-    --mode "$loop_mode" --rate-hz "$loop_rate" --seconds "$loop_seconds" --out "$loop_file" \
-    >"$loop_file.out" 2>&1 || true
+    --mode "$loop_mode" --rate-hz "$loop_rate" --seconds "$loop_seconds" --spin-us "${spin_us:-0}" \
+    --out "$loop_file" >"$loop_file.out" 2>&1 || true
 }
 
 # control_loop_pair RATE MODE SECONDS SERVICE_FILE DDSPERF_FILE [PREFIX...]: the control loop

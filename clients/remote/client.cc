@@ -1,12 +1,30 @@
 #include "clients/remote/client.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "clients/remote/client_core.h"
 
 namespace gc::client {
 
 using protocol::Calculation;
 
-Client::Client(ClientOptions options) : core_(std::make_unique<ClientCore>(std::move(options))) {}
+namespace {
+
+ClientOptions checked(ClientOptions options) {
+  const auto spin_us = options.spin_before_sleep.count();
+  if (spin_us < 0 || options.spin_before_sleep > kMaxSpinBeforeSleep) {
+    throw std::invalid_argument("ClientOptions::spin_before_sleep: " + std::to_string(spin_us) +
+                                " us (allowed: 0 to " +
+                                std::to_string(kMaxSpinBeforeSleep.count()) + " us)");
+  }
+  return options;
+}
+
+}  // namespace
+
+Client::Client(ClientOptions options)
+    : core_(std::make_unique<ClientCore>(checked(std::move(options)))) {}
 
 Client::~Client() = default;
 
@@ -26,6 +44,14 @@ template void Client::call_then<Calculation::kRestoringTorque>(
     const Request<Calculation::kRestoringTorque>&, Callback<Calculation::kRestoringTorque>, Clock::time_point);
 template void Client::call_then<Calculation::kFrictionEstimate>(
     const Request<Calculation::kFrictionEstimate>&, Callback<Calculation::kFrictionEstimate>, Clock::time_point);
+
+void Client::spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__) || defined(__arm__)
+  asm volatile("yield");
+#endif
+}
 
 bool Client::wait_for_service(Calculation calculation, std::chrono::milliseconds timeout) {
   return core_->wait_for_service(calculation, timeout);

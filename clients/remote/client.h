@@ -113,17 +113,18 @@ class Client {
     return future;
   }
 
-  /// call_async(request).get(): the result, or throws the error. The caller sleeps in the
-  /// future (a futex) and never spins: a sleeping thread keeps the scheduler's wake-up
-  /// preference, so on a busy host the reply wakes it ahead of CPU hogs.
+  /// call_async(request).get(): the result, or throws the error. The caller spins on the
+  /// future for up to ClientOptions::spin_before_sleep (none by default), then sleeps in it (a
+  /// futex): a sleeping thread keeps the scheduler's wake-up preference, so on a busy host the
+  /// reply wakes it ahead of CPU hogs.
   template <protocol::Calculation kCalculation>
   Result<kCalculation> call(const Request<kCalculation>& request) {
-    return call_async<kCalculation>(request).get();
+    return await(call_async<kCalculation>(request));
   }
   /// call, failing with Timeout at `deadline`.
   template <protocol::Calculation kCalculation>
   Result<kCalculation> call(const Request<kCalculation>& request, Clock::time_point deadline) {
-    return call_async<kCalculation>(request, deadline).get();
+    return await(call_async<kCalculation>(request, deadline));
   }
 
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.
@@ -142,6 +143,21 @@ class Client {
   const std::string& dds_configuration() const;
 
  private:
+  /// future.get(), after spinning on it for up to ClientOptions::spin_before_sleep.
+  template <typename T>
+  T await(std::future<T> future) const {
+    if (options().spin_before_sleep.count() > 0) {
+      const Clock::time_point until = Clock::now() + options().spin_before_sleep;
+      while (future.wait_for(Clock::duration::zero()) != std::future_status::ready &&
+             Clock::now() < until) {
+        spin_pause();
+      }
+    }
+    return future.get();
+  }
+  /// One turn of a spin: tells the CPU (x86 `pause`, Arm `yield`) that this thread only waits.
+  static void spin_pause();
+
   std::unique_ptr<ClientCore> core_;
 };
 

@@ -22,7 +22,16 @@ struct ClientOptions {
   /// reading replies only for client ids whose top 32 bits are this prefix. 0: no security, all
   /// 64 bits at random.
   std::uint32_t client_id_prefix = 0;
+  /// Longest call() spins on its reply before it sleeps, [0, kMaxSpinBeforeSleep]. 0 (the
+  /// default): it sleeps at once, and on a busy host the reply wakes it ahead of CPU hogs. A
+  /// control loop that can spare a core for the round trip sets about its deadline: where idle
+  /// cores halt (virtual machines), waking a sleeping caller costs more than the round trip's
+  /// own work (docs/architecture.md, "Where a control loop's tail comes from").
+  std::chrono::microseconds spin_before_sleep{0};
 };
+
+/// The bound of ClientOptions::spin_before_sleep: a longer spin is a busy loop, not a wait.
+inline constexpr std::chrono::microseconds kMaxSpinBeforeSleep{10000};
 
 /// One calculation's figures in an instance's status.
 struct CalculationStatus {

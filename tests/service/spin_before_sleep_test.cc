@@ -1,0 +1,98 @@
+// ClientOptions::spin_before_sleep: call() spins on its reply for at most that long, then sleeps;
+// the result is call()'s as ever, and a bound out of range is refused before any DDS entity.
+#include <signal.h>
+#include <time.h>
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "clients/remote/client.h"
+#include "core/model_error.h"
+#include "tests/service/service_process.h"
+
+namespace gc {
+namespace {
+
+using protocol::Calculation;
+using protocol::CatalogueName;
+using Clock = std::chrono::steady_clock;
+
+const protocol::InducedMomentsRequest kRequest{CatalogueName{"nrel_upwind"},
+                                               OperatingPoint{1.5e6, 0.007, 0.0, 0.1}, {}};
+
+client::ClientOptions spinning(std::chrono::microseconds spin) {
+  client::ClientOptions options{test::test_domain(), std::chrono::seconds(20)};
+  options.spin_before_sleep = spin;
+  return options;
+}
+
+/// The calling thread's CPU time [ms].
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+TEST(SpinBeforeSleep, ABoundOutOfRangeIsRefusedNamingTheFieldAndTheRange) {
+  for (const long us : {-1L, 10001L, 1000000L}) {
+    try {
+      client::Client client(spinning(std::chrono::microseconds(us)));
+      ADD_FAILURE() << us << " us accepted";
+    } catch (const std::invalid_argument& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("ClientOptions::spin_before_sleep"), std::string::npos) << message;
+      EXPECT_NE(message.find(std::to_string(us) + " us"), std::string::npos) << message;
+      EXPECT_NE(message.find("allowed: 0 to 10000 us"), std::string::npos) << message;
+    }
+  }
+}
+
+TEST(SpinBeforeSleep, ASpinningCallReturnsWhatASleepingOneDoes) {
+  test::ServiceProcess service;
+  client::Client sleeping(spinning(std::chrono::microseconds(0)));
+  client::Client spinner(spinning(client::kMaxSpinBeforeSleep));
+  const InducedMoments expected = sleeping.call<Calculation::kInducedMoments>(kRequest);
+  for (int i = 0; i < 20; ++i) {
+    const InducedMoments got = spinner.call<Calculation::kInducedMoments>(kRequest);
+    EXPECT_EQ(got.moment_y_nm, expected.moment_y_nm);
+    EXPECT_EQ(got.moment_z_nm, expected.moment_z_nm);
+  }
+  protocol::InducedMomentsRequest bad = kRequest;
+  bad.operating_point.torque_nm = -1.0;
+  EXPECT_THROW(spinner.call<Calculation::kInducedMoments>(bad), InvalidInput);
+}
+
+// With the service stopped (SIGSTOP), a call waits its whole deadline: the caller burns about
+// its spin in CPU time, then sleeps for the rest; without a spin it burns almost nothing.
+TEST(SpinBeforeSleep, TheCallerSpinsAtMostItsBoundThenSleeps) {
+  test::ServiceProcess service;
+  client::Client sleeping(spinning(std::chrono::microseconds(0)));
+  client::Client spinner(spinning(client::kMaxSpinBeforeSleep));
+  for (client::Client* c : {&sleeping, &spinner}) {
+    ASSERT_TRUE(c->wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(20)));
+    c->call<Calculation::kInducedMoments>(kRequest);
+  }
+  service.signal(SIGSTOP);
+  auto cpu_ms_of_a_timed_out_call = [&](client::Client& c) {
+    const double before = thread_cpu_ms();
+    EXPECT_THROW(c.call<Calculation::kInducedMoments>(kRequest,
+                                                      Clock::now() + std::chrono::milliseconds(400)),
+                 client::Timeout);
+    return thread_cpu_ms() - before;
+  };
+  const double spinning_ms = cpu_ms_of_a_timed_out_call(spinner);
+  const double sleeping_ms = cpu_ms_of_a_timed_out_call(sleeping);
+  service.signal(SIGCONT);
+  std::printf("CPU time of a call timed out after 400 ms: %.2f ms spinning up to 10 ms, %.2f ms "
+              "sleeping at once\n", spinning_ms, sleeping_ms);
+  EXPECT_GE(spinning_ms, 3.0);     // it spun: 10 ms of wall time, less what was preempted
+  EXPECT_LE(spinning_ms, 100.0);   // and then slept: a quarter of the 400 ms at most
+  EXPECT_LE(sleeping_ms, 3.0);
+}
+
+}  // namespace
+}  // namespace gc
