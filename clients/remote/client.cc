@@ -1,5 +1,7 @@
 #include "clients/remote/client.h"
 
+#include <sched.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -45,7 +47,16 @@ template void Client::call_then<Calculation::kRestoringTorque>(
 template void Client::call_then<Calculation::kFrictionEstimate>(
     const Request<Calculation::kFrictionEstimate>&, Callback<Calculation::kFrictionEstimate>, Clock::time_point);
 
-void Client::spin_pause() {
+bool Client::real_time_thread() {
+  const int policy = sched_getscheduler(0);
+  return policy == SCHED_FIFO || policy == SCHED_RR;
+}
+
+void Client::spin_turn(bool real_time) {
+  if (real_time) {
+    sched_yield();
+    return;
+  }
 #if defined(__x86_64__) || defined(__i386__)
   __builtin_ia32_pause();
 #elif defined(__aarch64__) || defined(__arm__)

@@ -148,15 +148,21 @@ class Client {
   T await(std::future<T> future) const {
     if (options().spin_before_sleep.count() > 0) {
       const Clock::time_point until = Clock::now() + options().spin_before_sleep;
+      const bool real_time = real_time_thread();
       while (future.wait_for(Clock::duration::zero()) != std::future_status::ready &&
              Clock::now() < until) {
-        spin_pause();
+        spin_turn(real_time);
       }
     }
     return future.get();
   }
-  /// One turn of a spin: tells the CPU (x86 `pause`, Arm `yield`) that this thread only waits.
-  static void spin_pause();
+  /// Whether the calling thread runs under SCHED_FIFO or SCHED_RR.
+  static bool real_time_thread();
+  /// One turn of a spin. A real-time thread yields (sched_yield): a thread of its own priority
+  /// queued on its core, such as this client's receive thread with the reply, would otherwise
+  /// wait out the whole spin. A normal one tells the CPU it only waits (x86 `pause`, Arm
+  /// `yield`): yielding would hand its core to a CPU hog for a whole time slice.
+  static void spin_turn(bool real_time);
 
   std::unique_ptr<ClientCore> core_;
 };

@@ -1,14 +1,19 @@
 // ClientOptions::spin_before_sleep: call() spins on its reply for at most that long, then sleeps;
 // the result is call()'s as ever, and a bound out of range is refused before any DDS entity.
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <time.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -104,6 +109,37 @@ TEST(SpinBeforeSleep, TheCallerSpinsAtMostItsBoundThenSleeps) {
   EXPECT_GE(spinning_ms, 3.0);    // it spun: 10 ms of wall time, less what was preempted
   EXPECT_LE(spinning_ms, 50.0);   // and then slept: a quarter of the 200 ms at most
   EXPECT_LE(sleeping_ms, 3.0);
+}
+
+// A real-time caller yields at each turn of its spin. Here the caller and every thread of its
+// client share one core under SCHED_FIFO: a spin that did not yield would keep the client's
+// receive thread, with the reply, off that core for the whole 10 ms spin of every call.
+TEST(SpinBeforeSleep, ARealTimeCallerLetsItsOwnReceiveThreadRun) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one CPU: the service would starve";
+  test::ServiceProcess service;  // forked before this thread turns real-time: a normal process
+  cpu_set_t one_core;
+  CPU_ZERO(&one_core);
+  CPU_SET(0, &one_core);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one_core, &one_core), 0);
+  const sched_param fifo{10};
+  if (sched_setscheduler(0, SCHED_FIFO, &fifo) != 0) {
+    GTEST_SKIP() << "SCHED_FIFO refused (no CAP_SYS_NICE): " << std::strerror(errno);
+  }
+  std::vector<double> ms;
+  {
+    client::Client spinner(spinning(client::kMaxSpinBeforeSleep));  // its threads inherit both
+    ASSERT_TRUE(spinner.wait_for_service(Calculation::kInducedMoments, std::chrono::seconds(20)));
+    for (int i = 0; i < 21; ++i) {
+      const Clock::time_point start = Clock::now();
+      spinner.call<Calculation::kInducedMoments>(kRequest);
+      ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+  }
+  const sched_param other{0};
+  sched_setscheduler(0, SCHED_OTHER, &other);
+  std::sort(ms.begin(), ms.end());
+  std::printf("real-time caller on one core, spinning up to 10 ms: median call %.2f ms\n", ms[10]);
+  EXPECT_LT(ms[10], 5.0);  // not the whole spin
 }
 
 }  // namespace
