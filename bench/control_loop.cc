@@ -10,10 +10,11 @@
 //
 // call: the loop's thread makes a blocking call() (it sleeps until the reply wakes it, the
 // wake-ups of ddsperf's waitset mode; with --spin-us, ClientOptions::spin_before_sleep, it
-// spins that long on the reply before it sleeps). call_then: the loop's thread sends with call_then and the
-// reply's callback, in Cyclone's receive thread, takes the time (ddsperf's listener mode, where
-// ping's main thread sends at the rate and the listener takes the pong); the loop's thread
-// waits for it only at the next tick, so no wake-up of its own lies inside the round trip.
+// spins that long on the reply before it sleeps). call_then: the loop's thread sends with
+// call_then and the reply's callback, in Cyclone's receive thread, takes the time (ddsperf's
+// listener mode, where ping's main thread sends at the rate and the listener takes the pong);
+// the loop's thread waits for it only at the next tick, so no wake-up of its own lies inside
+// the round trip.
 // A tick missed because the previous request was still out is skipped, not made up (counted:
 // missed_ticks). The request: induced moments of nrel_upwind at 1.5 MN m, 0.4 deg, mu 0.1.
 #include <time.h>
@@ -190,7 +191,8 @@ int main(int argc, char** argv) {
                  s.round_trip_us);
   }
   std::fclose(out);
-  std::printf("control_loop mode=%s rate_hz=%g spin_us=%d requests=%zu missed_ticks=%ld failed=%ld\n",
-              o.mode.c_str(), o.rate_hz, o.spin_us, run.samples.size(), run.missed_ticks, run.failed);
+  std::printf(
+      "control_loop mode=%s rate_hz=%g spin_us=%d requests=%zu missed_ticks=%ld failed=%ld\n",
+      o.mode.c_str(), o.rate_hz, o.spin_us, run.samples.size(), run.missed_ticks, run.failed);
   return run.failed == 0 ? 0 : 1;
 }
