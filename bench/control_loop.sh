@@ -76,10 +76,17 @@ late_us=${CONTROL_LOOP_LATE_US:-}
 slice_us=${CONTROL_LOOP_SLICE_US:-100}
 spin_us=${CONTROL_LOOP_SPIN_US:-0}
 case $spin_us in
-  '' | *[!0-9]*) echo "CONTROL_LOOP_SPIN_US: \"$spin_us\" (allowed: 0 to 10000 us)" >&2; exit 2 ;;
+  '' | *[!0-9]*) spin_ok=0 ;;
+  *) spin_ok=$((spin_us <= 10000)) ;;
 esac
-if [ "$spin_us" -gt 10000 ]; then echo "CONTROL_LOOP_SPIN_US: \"$spin_us\" (allowed: 0 to 10000 us)" >&2; exit 2; fi
-if [ "$spin_us" -gt 0 ]; then call_label="call(), spinning $spin_us us,"; else call_label="call()"; fi
+[ "$spin_ok" = 1 ] || { echo "CONTROL_LOOP_SPIN_US: \"$spin_us\" (allowed: 0 to 10000 us)" >&2; exit 2; }
+if [ "$spin_us" -gt 0 ]; then
+  call_label="call(), spinning $spin_us us,"
+  call_how="call() spinning up to $spin_us us before it sleeps"
+else
+  call_label="call()"
+  call_how="call() sleeping at once"
+fi
 concurrent=${CONTROL_LOOP_CONCURRENT:-1}
 case $concurrent in
   0 | 1) ;;
@@ -215,7 +222,7 @@ ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE [OWN]
 }
 
 if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time"; else how="the service and ddsperf in turn"; fi
-echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds round(s) per cell, $(for rate in $rates; do printf '%s s per run at %s Hz, ' "$(seconds_at "$rate")" "$rate"; done)$how, call() spinning up to $spin_us us before it sleeps, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $rounds round(s) per cell, $(for rate in $rates; do printf '%s s per run at %s Hz, ' "$(seconds_at "$rate")" "$rate"; done)$how, $call_how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
