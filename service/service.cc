@@ -17,6 +17,7 @@
 #include "protocol/wire_results.h"
 #include "service/compute.h"
 #include "service/inline_answer.h"
+#include "service/periodic_work.h"
 
 namespace gc::service {
 
@@ -404,14 +405,26 @@ void Service::log_stats() const {
                reply_backlog_.dropped());
 }
 
+void Service::publish_status() {
+  std::lock_guard lock(status_mutex_);
+  status_.publish(accepting_);
+}
+
+void Service::stop_accepting() {
+  std::lock_guard lock(status_mutex_);
+  accepting_ = false;
+  status_.publish(false);
+}
+
 void Service::run() {
   spdlog::info("gearcoupling-service instance {} on domain {}: {} worker threads, catalogue [{}], "
                "requests in partition \"{}\"",
                protocol::hex_id(instance_id_), config_.domain, pool_.threads(), catalogue_.names(),
                protocol::request_partition(instance_id_));
-  status_.publish(true);
-  Clock::time_point next_status = Clock::now() + seconds(config_.status_interval_s);
-  Clock::time_point next_stats = Clock::now() + seconds(config_.stats_log_interval_s);
+  publish_status();
+  // The status and the stats line on a clock, at normal priority (periodic_work.h says why).
+  PeriodicWork periodic({{seconds(config_.status_interval_s), [this] { publish_status(); }},
+                         {seconds(config_.stats_log_interval_s), [this] { log_stats(); }}});
   std::optional<Clock::time_point> stop_at;
   bool moving_writers = false;  // reply writers are moving to a new reply domain: poll
   for (;;) {
@@ -423,13 +436,15 @@ void Service::run() {
         spdlog::info("reloading: answering the requests taken, then a new participant");
       } else {
         stop_at = now + seconds(config_.shutdown_grace_s);
-        status_.publish(false);
+        stop_accepting();
         spdlog::info("shutting down: answering requests in flight for {} s",
                      config_.shutdown_grace_s);
       }
     }
     if (stop_at && now >= *stop_at) break;
-    Clock::time_point wake = std::min(next_status, next_stats);
+    // At least once a status interval, as when the status was written here: a writer whose
+    // move to a new reply domain waits (ReplyWriters::move_writers) is looked at again.
+    Clock::time_point wake = now + seconds(config_.status_interval_s);
     if (stop_at) wake = std::min(wake, *stop_at);
     if (reply_writers_.parked() > 0 || moving_writers) wake = std::min(wake, now + kParkedPoll);
     const auto timeout = std::chrono::duration_cast<std::chrono::nanoseconds>(wake - now).count();
@@ -440,16 +455,8 @@ void Service::run() {
     take_all_requests();
     release_parked(false);
     moving_writers = reply_writers_.move_writers(Clock::now());
-    now = Clock::now();
-    if (now >= next_status) {
-      status_.publish(!stop_at);
-      next_status = now + seconds(config_.status_interval_s);
-    }
-    if (now >= next_stats) {
-      log_stats();
-      next_stats = now + seconds(config_.stats_log_interval_s);
-    }
   }
+  periodic.stop();
   for (const Entity& reader : request_readers_) dds_set_listener(reader.get(), nullptr);
   take_all_requests();
   release_parked(true);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <exception>
 #include <map>
+#include <mutex>
 #include <optional>
 
 #include "protocol/calculation.h"
@@ -73,6 +74,10 @@ class Service {
   void take_all_requests();
   void take_subscriptions();
   void log_stats() const;
+  /// Writes the status, accepting while accepting_ (PeriodicWork's thread and run()).
+  void publish_status();
+  /// From now on the status says accepting = false (written at once).
+  void stop_accepting();
 
   ServiceConfig config_;
   Catalogue catalogue_;
@@ -101,6 +106,8 @@ class Service {
   ReplyWriters reply_writers_;
   ReplyBacklog reply_backlog_;
   StatusPublisher status_;
+  std::mutex status_mutex_;  ///< one status write at a time, with accepting_ as it is then
+  bool accepting_ = true;
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> reload_requested_{false};
   // Parked requests dropped and not yet logged (dispatch loop only).
