@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "service/normal_priority.h"
+#include "service/background_priority.h"
 
 namespace gc::service {
 
@@ -25,7 +25,7 @@ void PeriodicWork::stop() {
 
 void PeriodicWork::loop() {
   pthread_setname_np(pthread_self(), "periodic");  // as `top -H` and /proc show it
-  leave_real_time_priority();
+  enter_background_priority();
   std::vector<Clock::time_point> due(tasks_.size());
   const Clock::time_point start = Clock::now();
   for (std::size_t i = 0; i < tasks_.size(); ++i) due[i] = start + tasks_[i].interval;

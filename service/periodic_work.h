@@ -1,14 +1,13 @@
 // The service's work on a clock (its status every status_interval_s, its stats line every
-// stats_log_interval_s), on a thread of its own at normal priority.
+// stats_log_interval_s), on a thread of its own below the request path's priority.
 //
 // It used to run in the dispatch loop (Service::run), a thread that inherits the process's
 // priority. Under the real-time deployment option that made 0.3-1.2 ms of SCHED_FIFO work once a
 // second (the status's statistics sorted, its catalogue serialised and written), and a request
-// or reply woken on the same core waited behind it: in a 100 Hz control loop, the round trips of
-// over 1 ms that ddsperf, run beside it, did not have (docs/architecture.md, "Where a control
-// loop's tail comes from"). Here the thread leaves real-time scheduling first
-// (leave_real_time_priority), so the request path preempts it; a status a few milliseconds late
-// on a busy host is harmless (clients drop an instance after a lease of several seconds).
+// or a reply woken on the same core waited behind it (docs/architecture.md, "Where a control
+// loop's tail comes from"). Here the thread takes the lowest real-time priority first
+// (enter_background_priority, which says why not a normal one), so the request path preempts it;
+// without a real-time policy it runs as every other thread does.
 #pragma once
 
 #include <atomic>

@@ -10,12 +10,15 @@
 #include <chrono>
 #include <cstring>
 #include <mutex>
+#include <optional>
+#include <utility>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "service/normal_priority.h"
+#include "service/background_priority.h"
+#include "tests/service/on_fifo_thread.h"
 
 namespace gc::service {
 namespace {
@@ -97,36 +100,57 @@ TEST(PeriodicWork, ASlowTaskDoesNotPileUp) {
   }
 }
 
-TEST(NormalPriority, LeavesANormalThreadAsItIs) {
+/// The calling thread's policy and priority.
+std::pair<int, int> policy_and_priority() {
   int policy = -1;
+  sched_param param{};
+  pthread_getschedparam(pthread_self(), &policy, &param);
+  return {policy, param.sched_priority};
+}
+
+TEST(BackgroundPriority, LeavesANormalThreadAsItIs) {
+  std::pair<int, int> after{-1, -1};
   std::thread([&] {
-    const bool changed = leave_real_time_priority();
-    EXPECT_FALSE(changed);
-    policy = sched_getscheduler(0);
+    EXPECT_FALSE(enter_background_priority());
+    after = policy_and_priority();
   }).join();
-  EXPECT_EQ(policy, SCHED_OTHER);
+  EXPECT_EQ(after, std::make_pair(SCHED_OTHER, 0));
+}
+
+TEST(BackgroundPriority, TakesTheLowestPriorityOfARealTimeThreadsPolicy) {
+  bool changed = false;
+  std::pair<int, int> after{-1, -1};
+  if (!test::on_fifo_thread(10, [&] {
+        changed = enter_background_priority();
+        after = policy_and_priority();
+      })) {
+    GTEST_SKIP() << "SCHED_FIFO refused (no CAP_SYS_NICE)";
+  }
+  EXPECT_TRUE(changed);
+  // Still real-time (no normal process preempts it), below every other priority of the policy.
+  EXPECT_EQ(after, std::make_pair(SCHED_FIFO, sched_get_priority_min(SCHED_FIFO)));
 }
 
 // The reason PeriodicWork exists: made by a real-time thread, as the service's dispatch loop is
-// under the real-time deployment option, its thread must not stay real-time. A thread made the
-// same way without it does: the check would fail if the priority were not left.
-TEST(PeriodicWork, ItsThreadLeavesTheRealTimePriorityOfItsCreator) {
-  int made_plainly = -1;
-  std::atomic<int> periodic_policy{-1};
-  bool refused = false;
-  std::thread([&] {
-    const sched_param fifo{1};
-    if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &fifo) != 0) {
-      refused = true;
-      return;
-    }
-    std::thread([&] { made_plainly = sched_getscheduler(0); }).join();
-    PeriodicWork work({{milliseconds(1), [&] { periodic_policy = sched_getscheduler(0); }}});
-    eventually([&] { return periodic_policy != -1; });
-  }).join();
-  if (refused) GTEST_SKIP() << "SCHED_FIFO refused (no CAP_SYS_NICE)";
-  EXPECT_EQ(made_plainly, SCHED_FIFO);
-  EXPECT_EQ(periodic_policy, SCHED_OTHER);
+// under the real-time deployment option, its thread must not keep that priority. A thread made
+// the same way without it does: the check would fail if the priority were not lowered.
+TEST(PeriodicWork, ItsThreadRunsBelowTheRealTimePriorityOfItsCreator) {
+  std::pair<int, int> made_plainly{-1, -1};
+  std::mutex mutex;
+  std::optional<std::pair<int, int>> periodic;
+  if (!test::on_fifo_thread(10, [&] {
+        std::thread([&] { made_plainly = policy_and_priority(); }).join();
+        PeriodicWork work({{milliseconds(1), [&] {
+                              std::lock_guard l(mutex);
+                              periodic = policy_and_priority();
+                            }}});
+        eventually([&] { std::lock_guard l(mutex); return periodic.has_value(); });
+      })) {
+    GTEST_SKIP() << "SCHED_FIFO refused (no CAP_SYS_NICE)";
+  }
+  EXPECT_EQ(made_plainly, std::make_pair(SCHED_FIFO, 10));
+  ASSERT_TRUE(periodic.has_value());
+  EXPECT_EQ(*periodic, std::make_pair(SCHED_FIFO, sched_get_priority_min(SCHED_FIFO)));
 }
 
 }  // namespace
