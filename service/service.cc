@@ -422,7 +422,7 @@ void Service::run() {
                protocol::hex_id(instance_id_), config_.domain, pool_.threads(), catalogue_.names(),
                protocol::request_partition(instance_id_));
   publish_status();
-  // The status and the stats line on a clock, at normal priority (periodic_work.h says why).
+  // The status and the stats line on a clock, below the request path (periodic_work.h says why).
   PeriodicWork periodic({{seconds(config_.status_interval_s), [this] { publish_status(); }},
                          {seconds(config_.stats_log_interval_s), [this] { log_stats(); }}});
   std::optional<Clock::time_point> stop_at;
