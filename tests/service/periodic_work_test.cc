@@ -42,8 +42,14 @@ TEST(PeriodicWork, RunsEachTaskNoSoonerThanItsInterval) {
   std::vector<Clock::time_point> fast_runs;
   std::vector<Clock::time_point> slow_runs;
   const Clock::time_point start = Clock::now();
-  PeriodicWork work({{milliseconds(10), [&] { std::lock_guard l(mutex); fast_runs.push_back(Clock::now()); }},
-                     {milliseconds(40), [&] { std::lock_guard l(mutex); slow_runs.push_back(Clock::now()); }}});
+  const auto recorder = [&](std::vector<Clock::time_point>& runs) {
+    return [&mutex, runs = &runs] {
+      std::lock_guard l(mutex);
+      runs->push_back(Clock::now());
+    };
+  };
+  PeriodicWork work(
+      {{milliseconds(10), recorder(fast_runs)}, {milliseconds(40), recorder(slow_runs)}});
   ASSERT_TRUE(eventually([&] { std::lock_guard l(mutex); return slow_runs.size() >= 3; }));
   work.stop();
   std::lock_guard l(mutex);

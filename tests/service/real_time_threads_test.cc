@@ -67,13 +67,16 @@ TEST(RealTimeThreads, PeriodicWorkRunsBelowTheRequestPath) {
   }
   {
     client::Client client({test::test_domain(), std::chrono::seconds(10)});
-    ASSERT_TRUE(client.wait_for_service(protocol::Calculation::kJamAngle, std::chrono::seconds(20)));
+    ASSERT_TRUE(
+        client.wait_for_service(protocol::Calculation::kJamAngle, std::chrono::seconds(20)));
     // A second status, written by the periodic thread (the first is written before it starts).
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   }
   const std::map<int, ThreadPolicy> threads = threads_of(service->pid());
   std::map<std::string, std::vector<std::pair<int, int>>> by_name;  // policy, priority
-  for (const auto& [tid, thread] : threads) by_name[thread.name].push_back({thread.policy, thread.priority});
+  for (const auto& [tid, thread] : threads) {
+    by_name[thread.name].push_back({thread.policy, thread.priority});
+  }
   std::ostringstream listing;
   for (const auto& [tid, thread] : threads) {
     listing << tid << ' ' << thread.name << " policy " << thread.policy << " priority "
