@@ -65,6 +65,7 @@
 #   the one before (a periodic cause shows as a steady gap).
 # CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
 #   configuration of every process, ddsperf's too, to compare another.
+# After the tables, each cell's medians round by round (service/ddsperf).
 # CONTROL_LOOP_PLAN (default 0): 1 prints the run's first line (rounds, seconds, modes) and stops.
 # Every process is bounded in time (timeout) and uses a domain derived from this shell's pid.
 set -eu
@@ -209,6 +210,19 @@ seconds_at() {  # RATE: seconds per run: CONTROL_LOOP_SECONDS, or `ticks` ticks 
   fi
 }
 
+round_medians() {  # SERVICE_MODE DDSPERF_MODE: cell $f's p50s round by round, service/ddsperf (us)
+  rm_round=1
+  rm_out=""
+  while [ "$rm_round" -le "$rounds" ]; do
+    for rm_mode in "$1" "$2"; do
+      rm_line=$(python3 "$here/bench/latency_stats.py" --rate-hz "$rate" "$f-$rm_mode-r$rm_round" | head -n 1 || true)
+      if [ "$rm_mode" = "$1" ]; then rm_out="$rm_out $(field "$rm_line" p50)"; else rm_out="$rm_out/$(field "$rm_line" p50)"; fi
+    done
+    rm_round=$((rm_round + 1))
+  done
+  echo "${rm_out# }"
+}
+
 field() {  # LINE NAME: the value of NAME=VALUE in LINE, unit stripped
   echo "$1" | tr ' ' '\n' | awk -F= -v n="$2" '$1 == n { v = $2; sub("us|%", "", v); print v }'
 }
@@ -240,6 +254,7 @@ table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (u
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
 |---|---|---|---|---|---|---|---|---|---|"
+medians=""
 failed=0
 timeout 3600 python3 "$here/bench/steal_log.py" 3600 "$work/steal.log" &
 steal_logger=$!
@@ -272,6 +287,8 @@ for priority in $priorities; do
         fi
         r=$((r + 1))
       done
+      medians="$medians
+$priority, $load hog(s), $rate Hz: call_then/listener $(round_medians call_then listener); call/waitset $(round_medians call waitset)"
       own_call_then=""
       own_call=""
       if [ "$concurrent" = 1 ]; then
@@ -328,6 +345,9 @@ echo "The service against ddsperf in the mode with the same wake-ups:"
 echo
 echo "$ratios$cross"
 echo "(goal: p99.9 within 2 x; deadlines missed outside stolen time at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
+echo
+echo "The medians round by round (us, service/ddsperf; at the same time, two loops share two vCPUs and each round deals out which is fast: the rounds above pool them):"
+echo "$medians"
 if [ "$concurrent" = 1 ]; then
   echo "(in stalls of its own: the deadlines the service missed in stalls that ddsperf, running at the same time, did not have within 2 ms; bench/stall_coincidence.py)"
   if [ -s "$work/own.txt" ]; then
