@@ -45,10 +45,10 @@
 #   seconds both ran).
 # CONTROL_LOOP_ROUNDS (default: runs of at most 10 s, at least 3 rounds; 3 at 1 kHz, 9 at 100 Hz):
 #   rounds per load and rate. Run at the same time, the two loops share two vCPUs, and each round
-#   deals out who gets the better of them: at 100 Hz with a hog per core, round by round, the
-#   service's median went 89-187 us while ddsperf's went 161-77 us, the one fast where the other
-#   was slow (docs/benchmarks.md). Pooled over 9 rounds, the two were within 8 % of each other;
-#   over 3, one lucky round for either made the median ratio 0.8-1.8.
+#   deals out who gets the better of them: at 100 Hz with a hog per core, `call_then` over
+#   ddsperf's listener went from 2.06 x in one round to 0.82 x in another of the same run
+#   (docs/benchmarks.md); with 3 rounds of 30 s, one such round weighed a third, and the cell's
+#   median ratio went 0.96-1.85 from run to run.
 # CONTROL_LOOP_RATES (default "1000 100"): request rates (Hz).
 # CONTROL_LOOP_LOADS (default "0 1 all"): hogs per load; "all" = one per core.
 # CONTROL_LOOP_PRIORITIES (default "none"): each a whole pass over the loads, with the service,
