@@ -346,7 +346,7 @@ echo
 echo "$ratios$cross"
 echo "(goal: p99.9 within 2 x; deadlines missed outside stolen time at most 0.1 %, or twice ddsperf's; p50 within 1.5 x; load after: $(cut -d' ' -f1-3 /proc/loadavg))"
 echo
-echo "The medians round by round (us, service/ddsperf; at the same time, two loops share two vCPUs and each round deals out which is fast: the rounds above pool them):"
+echo "The medians round by round (us, service/ddsperf; the rounds above pool them):"
 echo "$medians"
 if [ "$concurrent" = 1 ]; then
   echo "(in stalls of its own: the deadlines the service missed in stalls that ddsperf, running at the same time, did not have within 2 ms; bench/stall_coincidence.py)"
