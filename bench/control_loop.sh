@@ -36,6 +36,14 @@
 # CLOCK_MONOTONIC times, to look up in a `perf record -k CLOCK_MONOTONIC` trace).
 #
 # CONTROL_LOOP_CONCURRENT (default 1): 1, the service and its ddsperf at the same time; 0, in turn.
+# CONTROL_LOOP_PHASE (default 0.5; at the same time only): the loop's ticks fall this many periods
+#   (0 to 1) after ddsperf ping's, and follow them when ping starts its schedule again
+#   (gc_bench_control_loop --phase-of); "free": wherever the loop's start puts them. Two loops
+#   left free keep, through a round, the offset their starts gave, and the one whose round trip
+#   follows the other's closely finds the host's network path and caches warm: at 100 Hz with a
+#   hog per core, `call_then` was 0.59-0.62 x ddsperf's listener in rounds where it followed by
+#   0.1-1.2 ms and 1.40-1.41 x where it led by 2.9-3.0 ms (docs/benchmarks.md). Half a period
+#   apart, neither follows the other closer.
 # CONTROL_LOOP_TICKS (default 9000): the ticks of a cell (a rate, a load, a mode) over its rounds
 #   at every rate: a run lasts TICKS / (ROUNDS x RATE) seconds, 3 s at 1 kHz and 10 s at 100 Hz.
 #   The goal's p99.9 and its 0.1 % are then 9 round trips at both rates. With 3,000 ticks they
@@ -44,11 +52,11 @@
 # CONTROL_LOOP_SECONDS (unset): seconds per run at every rate instead (at the same time: the
 #   seconds both ran).
 # CONTROL_LOOP_ROUNDS (default: runs of at most 10 s, at least 3 rounds; 3 at 1 kHz, 9 at 100 Hz):
-#   rounds per load and rate. Run at the same time, the two loops share two vCPUs, and each round
-#   deals out who gets the better of them: at 100 Hz with a hog per core, `call_then` over
-#   ddsperf's listener went from 2.06 x in one round to 0.82 x in another of the same run
-#   (docs/benchmarks.md); with 3 rounds of 30 s, one such round weighed a third, and the cell's
-#   median ratio went 0.96-1.85 from run to run.
+#   rounds per load and rate. A host slow for a while weighs less spread over more rounds; and
+#   with CONTROL_LOOP_PHASE=free each round deals out a new offset between the two loops: at
+#   100 Hz with a hog per core, `call_then` over ddsperf's listener went from 2.06 x in one round
+#   to 0.82 x in another of the same run, and with 3 rounds of 30 s the cell's median ratio went
+#   0.96-1.85 from run to run (docs/benchmarks.md).
 # CONTROL_LOOP_RATES (default "1000 100"): request rates (Hz).
 # CONTROL_LOOP_LOADS (default "0 1 all"): hogs per load; "all" = one per core.
 # CONTROL_LOOP_PRIORITIES (default "none"): each a whole pass over the loads, with the service,
@@ -65,7 +73,8 @@
 #   the one before (a periodic cause shows as a steady gap).
 # CONTROL_LOOP_CONFIG (default deploy/cyclonedds-loopback.xml as a file:// URI): the Cyclone
 #   configuration of every process, ddsperf's too, to compare another.
-# After the tables, each cell's medians round by round (service/ddsperf).
+# After the tables, each cell's medians round by round (service/ddsperf) and, at the same time,
+# how far the loop's sends fell after ping's, in periods (bench/send_phase.py), round by round.
 # CONTROL_LOOP_PLAN (default 0): 1 prints the run's first line (rounds, seconds, modes) and stops.
 # Every process is bounded in time (timeout) and uses a domain derived from this shell's pid.
 set -eu
@@ -105,6 +114,12 @@ case $concurrent in
   0 | 1) ;;
   *) echo "CONTROL_LOOP_CONCURRENT: \"$concurrent\" (allowed: 1, at the same time; 0, in turn)" >&2; exit 2 ;;
 esac
+phase=${CONTROL_LOOP_PHASE:-0.5}  # bench/lib/control_loop.sh's service_loop reads it
+case $phase in
+  free | 0 | 1 | 0.[0-9] | 0.[0-9][0-9] | 1.0) ;;
+  *) echo "CONTROL_LOOP_PHASE: \"$phase\" (allowed: free, or 0 to 1 periods in at most two decimals)" >&2; exit 2 ;;
+esac
+if [ "$phase" = free ]; then phase_how="the loop's ticks where its start puts them"; else phase_how="the loop's ticks $phase of a period after ping's"; fi
 . "$here/bench/lib/hogs.sh"
 . "$here/bench/lib/ddsperf.sh"
 . "$here/bench/lib/control_loop.sh"
@@ -158,7 +173,7 @@ run() {
     listener | waitset)
       ddsperf_pair_start "$run_rate" "$run_what" "$run_file" $((seconds + 1)) "$@"
       ddsperf_pair_stop "$run_file" ;;
-    *) service_loop "$run_rate" "$run_what" "$run_file" "$seconds" "$@" ;;
+    *) service_loop "$run_rate" "$run_what" "$run_file" "$seconds" - "$@" ;;
   esac
   echo $(( $(steal_ms) - before )) >>"${run_file%-r*}.steal"
 }
@@ -210,6 +225,17 @@ seconds_at() {  # RATE: seconds per run: CONTROL_LOOP_SECONDS, or `ticks` ticks 
   fi
 }
 
+round_phases() {  # SERVICE_MODE: how far cell $f's loop's sends fell after ping's, round by round
+  rp_round=1
+  rp_out=""
+  while [ "$rp_round" -le "$rounds" ]; do
+    rp_out="$rp_out $(python3 "$here/bench/send_phase.py" --rate-hz "$rate" "$f-$1-r$rp_round" \
+      "$f-$(ping_mode_of "$1")-r$rp_round" || true)"
+    rp_round=$((rp_round + 1))
+  done
+  echo "${rp_out# }"
+}
+
 round_medians() {  # SERVICE_MODE DDSPERF_MODE: cell $f's p50s round by round, service/ddsperf (us)
   rm_round=1
   rm_out=""
@@ -247,7 +273,7 @@ ratios_row() {  # PRIORITY HOGS RATE WHAT SERVICE_LINE DDSPERF_LINE [OWN]
   echo "| $1 | $2 | $3 | $4 | $(ratio "$(field "$5" p50)" "$(field "$6" p50)") | $(ratio "$(field "$5" p999)" "$(field "$6" p999)") | $(field "$5" missed) % / $(field "$6" missed) % | $(field "$5" missed_unstolen) % / $(field "$6" missed_unstolen) % | ${7:--} | $(goals_met "$5" "$6") |"
 }
 
-if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time"; else how="the service and ddsperf in turn"; fi
+if [ "$concurrent" = 1 ]; then how="the service and ddsperf at the same time, $phase_how"; else how="the service and ddsperf in turn"; fi
 echo "# loopback config: $CYCLONEDDS_URI, domains $domain (ddsperf) and $sdomain (service), $(nproc) cores, $(for rate in $rates; do printf '%s round(s) of %s s per run at %s Hz, ' "$(rounds_at "$rate")" "$(seconds_at "$rate")" "$rate"; done)$how, $call_how, at $(git -C "$here" describe --always --dirty 2>/dev/null || echo "?"), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 [ "${CONTROL_LOOP_PLAN:-0}" = 0 ] || exit 0
 table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (us) | max (us) | over 1 ms | ticks skipped | deadlines missed | missed outside stolen time | steal | load average |
@@ -255,6 +281,7 @@ table="| priority | hogs | rate (Hz) | what | n | p50 (us) | p99 (us) | p99.9 (u
 ratios="| priority | hogs | rate (Hz) | service / ddsperf, same wake-ups | p50 ratio | p99.9 ratio | deadlines missed, service / ddsperf | outside stolen time | service's, in stalls of its own | goals met |
 |---|---|---|---|---|---|---|---|---|---|"
 medians=""
+phases=""
 failed=0
 timeout 3600 python3 "$here/bench/steal_log.py" 3600 "$work/steal.log" &
 steal_logger=$!
@@ -289,6 +316,10 @@ for priority in $priorities; do
       done
       medians="$medians
 $priority, $load hog(s), $rate Hz: call_then/listener $(round_medians call_then listener); call/waitset $(round_medians call waitset)"
+      if [ "$concurrent" = 1 ]; then
+        phases="$phases
+$priority, $load hog(s), $rate Hz: call_then $(round_phases call_then); call $(round_phases call)"
+      fi
       own_call_then=""
       own_call=""
       if [ "$concurrent" = 1 ]; then
@@ -350,6 +381,9 @@ echo "The medians round by round (us, service/ddsperf; the rounds above pool the
 echo "$medians"
 if [ "$concurrent" = 1 ]; then
   echo "(in stalls of its own: the deadlines the service missed in stalls that ddsperf, running at the same time, did not have within 2 ms; bench/stall_coincidence.py)"
+  echo
+  echo "How far the loop's sends fell after ddsperf ping's, round by round (periods, median; bench/send_phase.py):"
+  echo "$phases"
   if [ -s "$work/own.txt" ]; then
     echo
     echo "The service's stalls of its own (CLOCK_MONOTONIC start, length, deadlines; the first five a round):"

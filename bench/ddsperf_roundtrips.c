@@ -9,53 +9,64 @@
  * (seconds), the round trip the time of the take minus the pong's source timestamp, which ping
  * set when it wrote the ping (pong writes it back): the time ddsperf takes in process_pong, the
  * whole round trip, not its half. bench/latency_stats.py reads the file as it reads the service's.
- * The lines are kept in a 4 MiB buffer and written at exit, so the run makes no write of its own. */
+ * The lines are kept in a 4 MiB buffer and written at exit, so the run makes no write of its own.
+ *
+ * With GC_DDSPERF_PING_TIMES=FILE it also wraps dds_write_ts, with which ping writes its pings,
+ * and keeps in FILE (8 bytes, mapped shared) the CLOCK_MONOTONIC time (ns) of the latest ping.
+ * gc_bench_control_loop --phase-of FILE reads it to put its ticks between ping's
+ * (bench/lib/control_loop.sh). Ping's schedule is fixed, but it starts again from any ping sent
+ * over half a period late (ddsperf.c, maybe_send_new_ping), so the latest ping is what counts. */
 #define _GNU_SOURCE
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <dds/dds.h>
 
 typedef int32_t (*take_fn) (dds_entity_t, void **, dds_sample_info_t *, size_t, uint32_t);
+typedef dds_return_t (*write_ts_fn) (dds_entity_t, const void *, dds_time_t);
 
 static FILE *out;
 static char out_buffer[4 << 20];
 
-/* The readers seen, whether each is the pong reader: a take costs no name lookup after the first.
-   Takes come from several of Cyclone's threads (listeners), hence the lock. */
-#define MAX_READERS 64
-static struct { dds_entity_t reader; int is_pong; } readers[MAX_READERS];
-static int nreaders;
-static pthread_mutex_t readers_lock = PTHREAD_MUTEX_INITIALIZER;
+/* The readers and writers seen, whether each is of a topic DDSPerf*KIND* (readers: Pong, writers:
+   Ping): a take or a write costs no name lookup after the first. Takes come from several of
+   Cyclone's threads (listeners), hence the lock. */
+#define MAX_ENTITIES 64
+static struct { dds_entity_t entity; int of_kind; } entities[MAX_ENTITIES];
+static int nentities;
+static pthread_mutex_t entities_lock = PTHREAD_MUTEX_INITIALIZER;
 
-static int is_pong_reader_locked (dds_entity_t reader)
+static int of_topic_locked (dds_entity_t entity, const char *kind)
 {
-  for (int i = 0; i < nreaders; i++)
-    if (readers[i].reader == reader)
-      return readers[i].is_pong;
+  for (int i = 0; i < nentities; i++)
+    if (entities[i].entity == entity)
+      return entities[i].of_kind;
   char name[64] = "";
-  const dds_entity_t topic = dds_get_topic (reader);
-  const int is_pong = topic > 0 && dds_get_name (topic, name, sizeof (name)) > 0 &&
-                      strncmp (name, "DDSPerf", 7) == 0 && strstr (name, "Pong") != NULL;
-  if (nreaders < MAX_READERS)
+  const dds_entity_t topic = dds_get_topic (entity);
+  const int of_kind = topic > 0 && dds_get_name (topic, name, sizeof (name)) > 0 &&
+                      strncmp (name, "DDSPerf", 7) == 0 && strstr (name, kind) != NULL;
+  if (nentities < MAX_ENTITIES)
   {
-    readers[nreaders].reader = reader;
-    readers[nreaders].is_pong = is_pong;
-    nreaders++;
+    entities[nentities].entity = entity;
+    entities[nentities].of_kind = of_kind;
+    nentities++;
   }
-  return is_pong;
+  return of_kind;
 }
 
-static int is_pong_reader (dds_entity_t reader)
+static int of_topic (dds_entity_t entity, const char *kind)
 {
-  pthread_mutex_lock (&readers_lock);
-  const int is_pong = is_pong_reader_locked (reader);
-  pthread_mutex_unlock (&readers_lock);
-  return is_pong;
+  pthread_mutex_lock (&entities_lock);
+  const int of_kind = of_topic_locked (entity, kind);
+  pthread_mutex_unlock (&entities_lock);
+  return of_kind;
 }
 
 static double monotonic_s (void)
@@ -86,13 +97,51 @@ int32_t dds_take (dds_entity_t reader, void **buf, dds_sample_info_t *si, size_t
   if (real_take == NULL)
     *(void **) &real_take = dlsym (RTLD_NEXT, "dds_take");  /* POSIX's way to a function pointer */
   const int32_t n = real_take (reader, buf, si, bufsz, maxs);
-  if (n > 0 && is_pong_reader (reader))
+  if (n > 0 && of_topic (reader, "Pong"))
     record (si, n);
   return n;
 }
 
+/* GC_DDSPERF_PING_TIMES's 8 bytes, mapped: the latest ping's CLOCK_MONOTONIC time (ns). */
+static int64_t *latest_ping_ns;
+
+dds_return_t dds_write_ts (dds_entity_t writer, const void *data, dds_time_t timestamp)
+{
+  static write_ts_fn real_write_ts;
+  if (real_write_ts == NULL)
+    *(void **) &real_write_ts = dlsym (RTLD_NEXT, "dds_write_ts");
+  /* Ping took the ping's timestamp before this call: what is done here counts in its round trip,
+     so it is one clock read (vDSO) and one store, after the first ping's name lookup. */
+  if (latest_ping_ns != NULL && of_topic (writer, "Ping"))
+  {
+    struct timespec t;
+    clock_gettime (CLOCK_MONOTONIC, &t);
+    __atomic_store_n (latest_ping_ns, (int64_t) t.tv_sec * 1000000000 + t.tv_nsec, __ATOMIC_RELEASE);
+  }
+  return real_write_ts (writer, data, timestamp);
+}
+
+/* Maps GC_DDSPERF_PING_TIMES, 8 bytes of zeros until the first ping. */
+static void map_ping_times (void)
+{
+  const char *path = getenv ("GC_DDSPERF_PING_TIMES");
+  if (path == NULL)
+    return;
+  const int fd = open (path, O_RDWR | O_CREAT | O_TRUNC, 0644);
+  void *p = MAP_FAILED;
+  if (fd >= 0 && ftruncate (fd, sizeof (int64_t)) == 0)
+    p = mmap (NULL, sizeof (int64_t), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  if (fd >= 0)
+    close (fd);
+  if (p == MAP_FAILED)
+    fprintf (stderr, "GC_DDSPERF_PING_TIMES=%s: cannot map\n", path);
+  else
+    latest_ping_ns = p;
+}
+
 __attribute__ ((constructor)) static void open_output (void)
 {
+  map_ping_times ();
   const char *path = getenv ("GC_DDSPERF_ROUNDTRIPS");
   if (path == NULL)
     return;

@@ -20,7 +20,8 @@
 #
 # STALL_SECONDS (default 60), STALL_RATE (default 1000), STALL_MODE (default call_then; or call),
 # STALL_PRIORITY (default fifo: `chrt -f 10`; or none), STALL_KEEP (unset: a directory to keep
-# both round-trip files in). Every process is bounded in time (timeout).
+# both round-trip files in), STALL_PHASE (default 0.5: the loop's ticks half a period after
+# ping's, as in bench/control_loop.sh; "free": where the loop's start puts them). Every process is bounded in time (timeout).
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -28,6 +29,7 @@ export CYCLONEDDS_URI="${CONTROL_LOOP_CONFIG:-file://$here/deploy/cyclonedds-loo
 seconds=${STALL_SECONDS:-60}
 rate=${STALL_RATE:-1000}
 mode=${STALL_MODE:-call_then}
+phase=${STALL_PHASE:-0.5}  # bench/lib/control_loop.sh's service_loop reads it
 . "$here/bench/lib/ddsperf.sh"
 . "$here/bench/lib/control_loop.sh"
 ping_mode=$(ping_mode_of "$mode")

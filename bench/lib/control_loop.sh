@@ -1,7 +1,8 @@
 # The control loop and its ddsperf anchor, for bench/control_loop.sh and bench/stall_coincidence.sh:
 # `. bench/lib/ddsperf.sh; . bench/lib/control_loop.sh`. The caller sets `build` (the build
 # directory), `domain` (ddsperf's) and `sdomain` (the service's, where a gearcoupling-service
-# runs). Every process is bounded in time (timeout).
+# runs). Every process is bounded in time (timeout). The caller may set `phase`: the control loop's
+# ticks that many periods after ddsperf ping's ("free": wherever its start puts them; default 0.5).
 # shellcheck shell=sh disable=SC2154 # build, domain and sdomain are the caller's
 ddsperf_ping=""
 
@@ -15,14 +16,17 @@ ping_mode_of() {  # MODE: the ddsperf ping mode with the same wake-ups as the co
 
 # ddsperf_ping_start RATE MODE FILE SECONDS [PREFIX...]: `ddsperf ping RATE MODE` for SECONDS on
 # `domain`, in the background, every round trip into FILE (bench/ddsperf_roundtrips.c,
-# preloaded), its output into FILE.out.
+# preloaded), its output into FILE.out, the time of its latest ping into FILE.ping_times (8 bytes:
+# CLOCK_MONOTONIC ns).
 ddsperf_ping_start() {
   ping_rate=$1
   ping_mode=$2
   ping_file=$3
   ping_seconds=$4
   shift 4
-  GC_DDSPERF_ROUNDTRIPS="$ping_file" LD_PRELOAD="$build/bench/libgc_ddsperf_roundtrips.so" \
+  rm -f "$ping_file.ping_times"
+  GC_DDSPERF_ROUNDTRIPS="$ping_file" GC_DDSPERF_PING_TIMES="$ping_file.ping_times" \
+    LD_PRELOAD="$build/bench/libgc_ddsperf_roundtrips.so" \
     "$@" timeout $((ping_seconds + 10)) ddsperf -i "$domain" -D "$ping_seconds" \
     ping "${ping_rate}Hz" "$ping_mode" >"$ping_file.out" 2>&1 &
   ddsperf_ping=$!
@@ -69,24 +73,32 @@ ddsperf_pair_stop() {
   ddsperf_drop_first_second "$stop_file"
 }
 
-# service_loop RATE MODE FILE SECONDS [PREFIX...]: gc_bench_control_loop at RATE with MODE for
-# SECONDS against the service on `sdomain`, every round trip into FILE, its output into FILE.out;
-# call() spins up to `spin_us` (default 0) on each reply before it sleeps.
+# service_loop RATE MODE FILE SECONDS PHASE_OF [PREFIX...]: gc_bench_control_loop at RATE with
+# MODE for SECONDS against the service on `sdomain`, every round trip into FILE, its output into
+# FILE.out; call() spins up to `spin_us` (default 0) on each reply before it sleeps. With PHASE_OF
+# (a ddsperf ping's FILE.ping_times; "-" for none) and `phase` not "free", its ticks fall `phase`
+# periods after that ping's.
 service_loop() {
   loop_rate=$1
   loop_mode=$2
   loop_file=$3
   loop_seconds=$4
-  shift 4
-  "$@" timeout $((loop_seconds + 40)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
+  loop_phase_of=$5
+  shift 5
+  set -- "$@" timeout $((loop_seconds + 60)) "$build/bench/gc_bench_control_loop" --domain "$sdomain" \
     --mode "$loop_mode" --rate-hz "$loop_rate" --seconds "$loop_seconds" --spin-us "${spin_us:-0}" \
-    --out "$loop_file" >"$loop_file.out" 2>&1 || true
+    --out "$loop_file"
+  if [ "$loop_phase_of" != - ] && [ "${phase:-0.5}" != free ]; then
+    set -- "$@" --phase-of "$loop_phase_of" --phase "${phase:-0.5}"
+  fi
+  "$@" >"$loop_file.out" 2>&1 || true
 }
 
 # control_loop_pair RATE MODE SECONDS SERVICE_FILE DDSPERF_FILE [PREFIX...]: the control loop
 # (MODE) and `ddsperf ping RATE` in the mode with the same wake-ups against a `ddsperf pong`, at
-# the same time on their two domains, every process started through PREFIX; both files then
-# keep only the time both ran (ddsperf's first second dropped), about SECONDS.
+# the same time on their two domains, every process started through PREFIX, the loop's ticks
+# `phase` periods after ping's (service_loop); both files then keep only the time both ran
+# (ddsperf's first second dropped), about SECONDS.
 control_loop_pair() {
   pair_rate=$1
   pair_mode=$2
@@ -96,7 +108,7 @@ control_loop_pair() {
   shift 5
   ddsperf_pair_start "$pair_rate" "$(ping_mode_of "$pair_mode")" "$pair_ddsperf" $((pair_seconds + 30)) "$@"
   sleep 1  # ping's first second, dropped; the loop's discovery and warm-up follow it
-  service_loop "$pair_rate" "$pair_mode" "$pair_service" "$pair_seconds" "$@"
+  service_loop "$pair_rate" "$pair_mode" "$pair_service" "$pair_seconds" "$pair_ddsperf.ping_times" "$@"
   ddsperf_pair_stop "$pair_ddsperf" TERM
   touch "$pair_service"  # an empty file where the loop failed: the caller says so
   # The time both ran: from the later first send to the earlier last one.
