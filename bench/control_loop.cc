@@ -110,12 +110,12 @@ class PhaseLock {
     return at_or_after(Clock::now() + period_, send);
   }
 
-  /// `tick`, or, once the other's sends have been over a quarter period off `phase` for
+  /// `tick`, or, once the other's sends have been over an eighth of a period off `phase` for
   /// kOffTicks ticks in a row (the other sender started its schedule again), the next tick after
   /// `now` on the other's new phase. One late send of the other's moves nothing.
   Clock::time_point follow(Clock::time_point tick, Clock::time_point now) {
     const Clock::duration off = folded((tick - latest_send() - offset_) % period_);
-    off_ticks_ = (off > period_ / 4 || off < -period_ / 4) ? off_ticks_ + 1 : 0;
+    off_ticks_ = (off > period_ / 8 || off < -period_ / 8) ? off_ticks_ + 1 : 0;
     if (off_ticks_ < kOffTicks) return tick;
     off_ticks_ = 0;
     moves_ += 1;
