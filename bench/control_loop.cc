@@ -55,7 +55,7 @@ struct Options {
   double rate_hz = 1000.0;
   double seconds = 5.0;
   int spin_us = 0;
-  std::string phase_of;  ///< the other sender's first send (empty: ticks from the start)
+  std::string phase_of;  ///< holds the other sender's latest send (PhaseLock; empty: none)
   double phase = 0.5;    ///< ticks this many periods after the other sender's
   std::string out;
 };
@@ -302,9 +302,9 @@ int main(int argc, char** argv) {
   app.add_option("--spin-us", o.spin_us, "call: spin this long on the reply before sleeping")
       ->check(CLI::Range(0, static_cast<int>(gc::client::kMaxSpinBeforeSleep.count())));
   app.add_option("--phase-of", o.phase_of,
-                 "file with the first send of another sender at this rate (CLOCK_MONOTONIC s): "
-                 "tick --phase of a period after its ticks");
-  app.add_option("--phase", o.phase, "with --phase-of: periods after the other sender's ticks")
+                 "file holding the latest send of another sender at this rate (8 bytes, "
+                 "CLOCK_MONOTONIC ns): tick --phase of a period after its sends");
+  app.add_option("--phase", o.phase, "with --phase-of: periods after the other sender's sends")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--out", o.out, "file for one \"T_S ROUND_TRIP_US\" line per request")->required();
   CLI11_PARSE(app, argc, argv);
