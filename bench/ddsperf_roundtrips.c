@@ -111,7 +111,8 @@ dds_return_t dds_write_ts (dds_entity_t writer, const void *data, dds_time_t tim
   if (real_write_ts == NULL)
     *(void **) &real_write_ts = dlsym (RTLD_NEXT, "dds_write_ts");
   /* Ping took the ping's timestamp before this call: what is done here counts in its round trip,
-     so it is one clock read (vDSO) and one store, after the first ping's name lookup. */
+     so it is a look into the cache above (its name looked up at the first ping only), one clock
+     read (vDSO) and one store. */
   if (latest_ping_ns != NULL && of_topic (writer, "Ping"))
   {
     struct timespec t;
