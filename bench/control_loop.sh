@@ -52,11 +52,8 @@
 # CONTROL_LOOP_SECONDS (unset): seconds per run at every rate instead (at the same time: the
 #   seconds both ran).
 # CONTROL_LOOP_ROUNDS (default: runs of at most 10 s, at least 3 rounds; 3 at 1 kHz, 9 at 100 Hz):
-#   rounds per load and rate. A host slow for a while weighs less spread over more rounds; and
-#   with CONTROL_LOOP_PHASE=free each round deals out a new offset between the two loops: at
-#   100 Hz with a hog per core, `call_then` over ddsperf's listener went from 2.06 x in one round
-#   to 0.82 x in another of the same run, and with 3 rounds of 30 s the cell's median ratio went
-#   0.96-1.85 from run to run (docs/benchmarks.md).
+#   rounds per load and rate: a host slow for a while weighs less spread over more rounds, and
+#   with CONTROL_LOOP_PHASE=free so does the offset each round deals out between the two loops.
 # CONTROL_LOOP_RATES (default "1000 100"): request rates (Hz).
 # CONTROL_LOOP_LOADS (default "0 1 all"): hogs per load; "all" = one per core.
 # CONTROL_LOOP_PRIORITIES (default "none"): each a whole pass over the loads, with the service,
