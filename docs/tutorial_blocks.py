@@ -20,6 +20,12 @@ for the next, and the output names relative paths only. Marker options, comma-se
     file NAME block 'TEXT'      not a command: the top-level `{ ... }` block of NAME (written
                                 by an earlier command) that contains TEXT
 
+`--check` compares what matters: the text exactly, and each number within a relative 1e-6 or one
+unit of its last printed digit, whichever is larger (REL_TOLERANCE, same_text_and_numbers). A
+program prints a number to the precision it carries, and the last digit of a long one differs
+between CPUs and libm builds (a parameter printed with 17 significant digits ended in ...8395 on one
+machine and ...8386 on another); a change of wording, or of a number beyond that, is still stale.
+
 Usage:
     docs/tutorial_blocks.py --gearcoupling build/clients/cli/gearcoupling          # rewrite in place
     docs/tutorial_blocks.py --gearcoupling build/clients/cli/gearcoupling --check  # diff, exit 1
@@ -43,6 +49,38 @@ KEEP = re.compile(r'^keep (\d+) lines then "(.*)"$')
 FILE_BLOCK = re.compile(r"^file (\S+) block '(.*)'$")
 OPTION = re.compile(r"""(?:[^,"']|"[^"]*"|'[^']*')+""")   # comma-separated, quotes kept whole
 EXIT = re.compile(r"^exit (\d+)$")
+
+
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+REL_TOLERANCE = 1e-6
+
+
+def last_digit_unit(token):
+    """One unit of the last printed digit of a number token: 0.0123 -> 1e-4, 12e3 -> 1e3."""
+    mantissa, _, exponent = token.lower().lstrip("+-").partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 10.0 ** (int(exponent or 0) - decimals)
+
+
+def numbers_agree(a, b):
+    if a == b:
+        return True
+    x, y = float(a), float(b)
+    allowed = max(REL_TOLERANCE * max(abs(x), abs(y)), last_digit_unit(a), last_digit_unit(b))
+    return abs(x - y) <= allowed * (1 + 1e-9)
+
+
+def same_text_and_numbers(expected, actual):
+    """True when two texts are the same but for numbers that agree (numbers_agree)."""
+    expected_lines, actual_lines = expected.splitlines(), actual.splitlines()
+    if len(expected_lines) != len(actual_lines):
+        return False
+    for e, a in zip(expected_lines, actual_lines):
+        if NUMBER.sub("#", e) != NUMBER.sub("#", a):
+            return False
+        if not all(numbers_agree(x, y) for x, y in zip(NUMBER.findall(e), NUMBER.findall(a))):
+            return False
+    return True
 
 
 class TutorialError(Exception):
@@ -146,7 +184,7 @@ def main():
         print(f"tutorial_blocks.py: {tutorial}: {error}", file=sys.stderr)
         return 2
     if args.check:
-        if fresh == current:
+        if same_text_and_numbers(current, fresh):
             print(f"{tutorial}: every block is what the programs print")
             return 0
         sys.stdout.writelines(difflib.unified_diff(
