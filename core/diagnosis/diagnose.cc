@@ -9,6 +9,7 @@
 #include "core/diagnosis/delay_estimate.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
+#include "core/diagnosis/signature_held_out.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression.h"
@@ -228,12 +229,15 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
   return ranking;
 }
 
-/// Significant on held-out blocks and removing a real share of the excess over the noise.
+/// The claim rule (docs/diagnosis.md, "The claim rule"): significant on held-out blocks (a paired t
+/// against the long-run variance of the block means), and a material fall of the held-out mean
+/// square: a share of the excess over the noise, and a share of the mean square itself.
 bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const DiagnosisSettings& settings) {
   if (!c.failure.empty() || c.against_base.t < settings.claim_t) return false;
   const double effect_ms = c.held_out_rmse_nm * c.held_out_rmse_nm;
   const double excess = std::max(base_ms - noise_ms, 0.0);
-  return base_ms - effect_ms >= settings.claim_excess_share * excess && base_ms > effect_ms;
+  const double fall = base_ms - effect_ms;
+  return fall >= settings.claim_excess_share * excess && fall >= settings.claim_least_fall * base_ms && fall > 0.0;
 }
 
 bool plausible(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
@@ -337,6 +341,28 @@ void put_simpler_swap_first(std::vector<CandidateScore>& ranking, const Folds& f
   }
 }
 
+/// Of the claimable, plausible effects alike to the one ranked first (alike()), the one with the
+/// fewest parameters goes first: where the data cannot tell two apart, the simpler model. An
+/// assembly misalignment (two parameters) and a thermal misalignment (more) fit a recording at a
+/// nearly steady oil temperature alike; the simpler says as much with less.
+void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen::MatrixX2d& base, const Folds& folds,
+                              double base_ms, double noise_ms, const DiagnosisSettings& settings) {
+  if (ranking.empty() || !ranking.front().info || !claimable(ranking.front(), base_ms, noise_ms, settings)) return;
+  std::size_t simplest = 0;
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    const CandidateScore& c = ranking[k];
+    if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || !plausible(c)) continue;
+    if (c.info->parameters.size() >= ranking[simplest].info->parameters.size()) continue;
+    double similarity = 0.0;
+    PairedBlockTest t;
+    if (alike(ranking.front(), c, base, folds, settings, similarity, t)) simplest = k;
+  }
+  if (simplest > 0) {
+    std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(simplest),
+                ranking.begin() + static_cast<std::ptrdiff_t>(simplest) + 1);
+  }
+}
+
 FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSettings& settings) {
   FormulaSettings out = settings.formula_settings;
   out.variance_inflation = round.noise.variance_inflation();
@@ -415,6 +441,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, rivals, settings, hints);
   put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
   put_simpler_swap_first(round.ranking, folds, settings);
+  put_simplest_alike_first(round.ranking, base, folds, base_ms, noise_ms, settings);
   if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
   // Refitting an effect an earlier round added and said explains only partly makes no new claim:
   // it needs to be significant, not to remove a share of the excess (a thermal misalignment fitted
@@ -485,11 +512,15 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   if (!effect_ok && !formula_ok) {
     // Structure must be explained by something: an input (the signature), a time pattern or a
     // frequency (the formula's terms). A level above the noise estimate that none of them explains
-    // on held-out data is heavy-tailed or wandering noise, not physics.
-    round.unstructured_excess = !round.signature.systematic();
+    // on held-out data is heavy-tailed or wandering noise, not physics. The signature's structure
+    // too must pay held out, by the claim rule, before it is called "unexplained".
+    const std::optional<CandidateScore> held_signature =
+        signature_held_out(observations, search, base, folds, round.signature);
+    if (held_signature) round.signature_reduction = held_signature->reduction;
+    round.unstructured_excess = !held_signature || !claimable(*held_signature, base_ms, noise_ms, settings);
     if (round.unstructured_excess) {
       round.systematic = false;
-      round.noise = *as_noise;
+      round.noise = estimate_noise(residual, true);
     }
     round.outcome = round.unstructured_excess ? RoundOutcome::noise : RoundOutcome::unexplained;
     return round;
@@ -564,11 +595,17 @@ std::optional<EffectFit> refit_claim(const CouplingModel& model, const Diagnosis
   return fit;
 }
 
+/// A fresh formula that takes over an earlier claim: its search-row score and its refit.
+struct AbsorbingFormula {
+  CandidateScore score;
+  EffectFit refit;
+};
+
 /// A formula claimed this round may take over an earlier claim (an offset that took the mean of a
 /// drift in round 1): the formula searched afresh on what the model leaves without that claim and
 /// without its formula. When it does as well on held-out blocks as the model with both (paired t
-/// below keep_t), it is returned, refitted on the refit rows, to replace them.
-std::optional<EffectFit> formula_absorbing(const CouplingModel& model, const std::string& name,
+/// below keep_t), it is returned, with its refit on the refit rows, to replace them.
+std::optional<AbsorbingFormula> formula_absorbing(const CouplingModel& model, const std::string& name,
                                            const Eigen::MatrixX2d& held_out, std::span<const RecordedSample> observations,
                                            const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit,
                                            const Folds& folds, const ParallelFor& parallel, const FormulaSettings& settings,
@@ -584,7 +621,9 @@ std::optional<EffectFit> formula_absorbing(const CouplingModel& model, const std
   if (!on_refit.failed_rows.empty()) return std::nullopt;
   std::vector<std::string> terms;
   for (const ParameterEstimate& p : fresh->fit->parameters) terms.push_back(p.name);
-  return fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
+  std::optional<EffectFit> fitted = fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
+  if (!fitted) return std::nullopt;
+  return AbsorbingFormula{*fresh, std::move(*fitted)};
 }
 
 /// Search rows per block of the paired tests: three times the variance inflation of the noise's
@@ -645,14 +684,21 @@ void revisit_claims(CouplingModel& model, DiagnosisRound& round, std::vector<std
     if (name == kExpressionEffect || std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
       continue;
     }
-    std::optional<EffectFit> absorbed = formula_absorbing(model, name, round.chosen().held_out_residual, observations,
-                                                          search, refit, folds, parallel, formula_settings(round, settings),
-                                                          settings.keep_t);
+    std::optional<AbsorbingFormula> absorbed = formula_absorbing(model, name, round.chosen().held_out_residual,
+                                                                 observations, search, refit, folds, parallel,
+                                                                 formula_settings(round, settings), settings.keep_t);
     if (!absorbed) continue;
-    const CouplingModel taken = model.without_effect(name).with_effect(absorbed->effect);
+    const CouplingModel taken = model.without_effect(name).with_effect(absorbed->refit.effect);
     if (!model_residuals(taken, observations, refit, parallel).failed_rows.empty()) continue;
     model = taken;
-    round.claimed = std::move(absorbed);
+    // The round's formula record becomes the one claimed, so the JSON's formula, its claimed
+    // parameters and the verdict's held-out figures are of one formula. Its fall is quoted against
+    // the round's model, as every candidate's.
+    absorbed->score.reduction = round.search_base_rmse_nm > 0.0
+                                    ? 1.0 - absorbed->score.held_out_rmse_nm / round.search_base_rmse_nm
+                                    : 0.0;
+    round.formula = std::move(absorbed->score);
+    round.claimed = std::move(absorbed->refit);
     drop(name);
   }
 }
@@ -739,6 +785,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       const CouplingModel claimed_model = candidate;
       const std::vector<std::shared_ptr<const Effect>> added_before = out.added;
       const std::optional<EffectFit> claimed_fit = round.claimed;
+      const std::optional<CandidateScore> formula_before = round.formula;
       // A dense-row formula's held-out residual is not on the search rows the revisit compares.
       if (!round.formula_on_dense_rows) {
         revisit_claims(candidate, round, out.added, model, observations, search, refit, folds, parallel, settings);
@@ -753,6 +800,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
           candidate = claimed_model;
           out.added = added_before;
           round.claimed = claimed_fit;
+          round.formula = formula_before;
           const std::vector<std::string>& replaced = round.chosen().replaces;
           std::erase_if(round.dropped, [&](const std::string& name) {
             return std::find(replaced.begin(), replaced.end(), name) == replaced.end();

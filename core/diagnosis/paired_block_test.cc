@@ -21,26 +21,60 @@ void winsorize(std::vector<double>& values) {
   for (double& v : values) v = std::clamp(v, low, high);
 }
 
+double variance(const Eigen::VectorXd& x) {
+  return x.size() < 2 ? 0.0 : (x.array() - x.mean()).square().sum() / (static_cast<double>(x.size()) - 1.0);
+}
+
+/// Means of `length` consecutive values (the last partial batch left out).
+Eigen::VectorXd batch_means(const Eigen::VectorXd& series, Eigen::Index length) {
+  const Eigen::Index batches = series.size() / length;
+  Eigen::VectorXd means(batches);
+  for (Eigen::Index j = 0; j < batches; ++j) means(j) = series.segment(j * length, length).mean();
+  return means;
+}
+
+/// Per block (present ones, in order), the mean of each column of `x`.
+Eigen::MatrixXd block_means(const Eigen::MatrixXd& x, const std::vector<int>& block_of, int blocks) {
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(blocks, x.cols());
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(blocks);
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    sum.row(block_of[static_cast<std::size_t>(i)]) += x.row(i);
+    count(block_of[static_cast<std::size_t>(i)]) += 1.0;
+  }
+  Eigen::MatrixXd out(static_cast<Eigen::Index>((count.array() > 0.0).count()), x.cols());
+  for (Eigen::Index k = 0, j = 0; k < blocks; ++k) if (count(k) > 0) out.row(j++) = sum.row(k) / count(k);
+  return out;
+}
+
 }  // namespace
+
+double long_run_ratio(const Eigen::VectorXd& series, int least_batches) {
+  const double v = variance(series);
+  if (!(v > 0.0)) return 1.0;
+  double ratio = 1.0;
+  const Eigen::Index least = std::max(2, least_batches);
+  for (Eigen::Index length = 2; series.size() / length >= least; length *= 2) {
+    ratio = std::max(ratio, variance(batch_means(series, length)) * static_cast<double>(length) / v);
+  }
+  return ratio;
+}
 
 PairedBlockTest paired_block_test(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b,
                                   const std::vector<int>& block_of, int blocks) {
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(blocks), count = Eigen::VectorXd::Zero(blocks);
   const Eigen::VectorXd difference = 0.5 * (a.rowwise().squaredNorm() - b.rowwise().squaredNorm());
-  for (Eigen::Index i = 0; i < difference.size(); ++i) {
-    sum(block_of[static_cast<std::size_t>(i)]) += difference(i);
-    count(block_of[static_cast<std::size_t>(i)]) += 1.0;
-  }
+  const Eigen::MatrixXd means_matrix = block_means(difference, block_of, blocks);
   PairedBlockTest out;
-  std::vector<double> means;
-  for (int k = 0; k < blocks; ++k) if (count(k) > 0) means.push_back(sum(k) / count(k));
+  std::vector<double> means(means_matrix.data(), means_matrix.data() + means_matrix.rows());
   out.blocks = static_cast<int>(means.size());
   if (means.size() < 2) return out;
   winsorize(means);
   const Eigen::Map<const Eigen::VectorXd> m(means.data(), static_cast<Eigen::Index>(means.size()));
   out.mean_difference = m.mean();
-  const double sd = std::sqrt((m.array() - out.mean_difference).square().sum() / (m.size() - 1.0));
-  out.t = sd > 0.0 ? out.mean_difference / (sd / std::sqrt(static_cast<double>(m.size()))) : 0.0;
+  // The noise's correlation between blocks, on the better model's residual (b when t > 0).
+  const Eigen::MatrixXd noise = block_means(out.mean_difference >= 0.0 ? b : a, block_of, blocks);
+  for (Eigen::Index c = 0; c < noise.cols(); ++c) out.inflation = std::max(out.inflation, long_run_ratio(noise.col(c)));
+  const double sd = std::sqrt(variance(m));
+  out.t = sd > 0.0 ? out.mean_difference / (sd * std::sqrt(out.inflation / static_cast<double>(m.size()))) : 0.0;
   return out;
 }
 

@@ -180,6 +180,22 @@ InputSignature signature_for(const BinnedInput& b, const Eigen::MatrixX2d& centr
 
 }  // namespace
 
+std::vector<int> signature_bins(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                const std::string& input) {
+  for (const InputAxis& axis : axes()) {
+    if (axis.name != input) continue;
+    Eigen::VectorXd x(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const std::optional<double> v = axis.read(observations[rows[k]].input);
+      if (!v) return {};
+      x(static_cast<Eigen::Index>(k)) = *v;
+    }
+    std::vector<std::pair<double, double>> edges;
+    return assign_bins(x, axis.binning, edges);
+  }
+  return {};
+}
+
 const InputSignature* ResidualSignature::find(const std::string& input) const {
   for (const InputSignature& s : inputs) if (s.input == input) return &s;
   return nullptr;

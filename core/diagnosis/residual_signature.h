@@ -63,4 +63,9 @@ ResidualSignature residual_signature(std::span<const RecordedSample> observation
                                      std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual, double variance_inflation = 1.0);
 
+/// The bin of every row of `rows` for `input` (an InputSignature::input name), cut as the signature
+/// cuts it; empty when the input is unknown or a row lacks it.
+std::vector<int> signature_bins(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                const std::string& input);
+
 }  // namespace gc

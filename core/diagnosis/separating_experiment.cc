@@ -37,7 +37,24 @@ struct Sweep {
   std::function<void(MeasurementSample&, double)> set;
 };
 
-std::vector<Sweep> sweeps(const CouplingModel& model, double max_torque) {
+/// The recorded range of an optional input over `rows`, or nullopt when a row lacks it.
+std::optional<std::pair<double, double>> recorded_range(std::span<const RecordedSample> observations,
+                                                        std::span<const std::size_t> rows,
+                                                        std::optional<double> MeasurementSample::*input) {
+  std::pair<double, double> range{INFINITY, -INFINITY};
+  for (std::size_t r : rows) {
+    const std::optional<double>& v = observations[r].input.*input;
+    if (!v) return std::nullopt;
+    range = {std::min(range.first, *v), std::max(range.second, *v)};
+  }
+  return range;
+}
+
+/// Every input a candidate can depend on: torque, misalignment, direction, loading direction, and
+/// speed and temperature where the recording has them (a thermal growth and an assembly offset part
+/// only as the oil warms, so an experiment that leaves temperature out cannot tell them apart).
+std::vector<Sweep> sweeps(const CouplingModel& model, double max_torque, std::span<const RecordedSample> observations,
+                          std::span<const std::size_t> rows) {
   std::vector<Sweep> out(4);
   out[0] = {"torque", "N·m", {}, [](MeasurementSample& s, double v) { s.torque_nm = v; }};
   out[1] = {"misalignment", "rad", {}, [](MeasurementSample& s, double v) { s.misalignment_rad = v; }};
@@ -48,6 +65,18 @@ std::vector<Sweep> sweeps(const CouplingModel& model, double max_torque) {
     out[0].values.push_back(max_torque * (0.1 + 1.4 * k / 24.0));
     out[1].values.push_back(0.9 * jam * k / 24.0);
     out[2].values.push_back(2 * std::numbers::pi * k / 24.0);
+  }
+  // Beyond the recorded range by half of it (at least 20 deg C, or 0 to 1.5 times the top speed).
+  if (const auto t = recorded_range(observations, rows, &MeasurementSample::temperature_c)) {
+    const double margin = std::max(20.0, 0.5 * (t->second - t->first));
+    Sweep sweep{"temperature", "deg C", {}, [](MeasurementSample& s, double v) { s.temperature_c = v; }};
+    for (int k = 0; k <= 24; ++k) sweep.values.push_back(t->first - margin + (t->second - t->first + 2 * margin) * k / 24.0);
+    out.push_back(std::move(sweep));
+  }
+  if (const auto n = recorded_range(observations, rows, &MeasurementSample::speed_rpm)) {
+    Sweep sweep{"speed", "rpm", {}, [](MeasurementSample& s, double v) { s.speed_rpm = v; }};
+    for (int k = 0; k <= 24; ++k) sweep.values.push_back(1.5 * std::max(n->second, 1.0) * k / 24.0);
+    out.push_back(std::move(sweep));
   }
   return out;
 }
@@ -86,7 +115,7 @@ SeparatingExperiment separating_experiment(const CouplingModel& a, const Couplin
   const std::optional<Eigen::Vector2d> at_reference = difference(a, b, reference);
   const Eigen::Vector2d offset = at_reference ? *at_reference : Eigen::Vector2d::Zero();
   std::string unit;
-  for (const Sweep& sweep : sweeps(a, max_torque)) {
+  for (const Sweep& sweep : sweeps(a, max_torque, observations, rows)) {
     for (double v : sweep.values) {
       MeasurementSample s = reference;
       sweep.set(s, v);
@@ -112,7 +141,8 @@ SeparatingExperiment separating_experiment(const CouplingModel& a, const Couplin
            << best.difference_nm << " N·m there, " << best.difference_nm / noise << " times the noise";
   } else {
     best.input.clear();
-    advice << "no sweep of torque, misalignment, direction, loading direction or shaft tilt separates them "
+    advice << "no sweep of the recorded inputs (torque, misalignment, direction, loading direction, and speed and "
+              "temperature where recorded) or of shaft tilt separates them "
               "(their predictions stay within 3 noise sigma); change what they depend on outside the recording";
   }
   best.advice = advice.str();

@@ -13,12 +13,13 @@
 namespace gc {
 
 struct SeparatingExperiment {
-  std::string input;        ///< "torque", "misalignment", "direction", "loading_direction", "tilt"; empty: none
+  std::string input;        ///< "torque", "misalignment", "direction", "loading_direction", "temperature", "speed", "tilt"; empty: none
   double value = 0.0;       ///< where the predictions part most [input unit]
   double difference_nm = 0.0;  ///< |prediction a - prediction b| there, relative to the reference
   std::string advice;       ///< one sentence for the user
 };
 
+/// Speed and temperature are swept too where every row records them.
 /// `a` and `b` are the base model with either effect fitted; `rows` the recording's usable rows;
 /// `noise_sigma_nm` the pooled noise. The sweeps run from a reference sample at the recording's
 /// median torque and misalignment: torque 0.1 to 1.5 times the recorded maximum, misalignment 0

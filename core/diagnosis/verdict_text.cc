@@ -150,8 +150,9 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
     case RoundOutcome::noise:
       if (round.unstructured_excess) {
         return head + "the residual is noise: " + noise_text(round) + " (its own scale: a short variogram put it lower, "
-               "but no input, time pattern or frequency explains any of the difference on held-out data; noise with "
-               "heavy tails, a long correlation or a wandering level, not physics). No effect is claimed.";
+               "but no input, time pattern or frequency explains enough of the difference on held-out data to be "
+               "claimed; noise with heavy tails, a long correlation or a wandering level, not physics). No effect is "
+               "claimed.";
       }
       return head + "the residual is noise: " + noise_text(round) +
              ", and no input shows a systematic dependence. No effect is claimed.";
@@ -160,7 +161,12 @@ std::string round_verdict(int number, const DiagnosisRound& round) {
  if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
         best = " (the best, " + round.ranking.front().info->name + ", lowers the held-out RMSE by " +
                percent(round.ranking.front().reduction) + " with t = " + short_number(round.ranking.front().against_base.t) +
-               " over blocks of the recording; a claim needs t >= 3.5 and 30 % of the excess over the noise)";
+               " over blocks of the recording; a claim needs t >= 3.5, 5 % of the mean square and 30 % of the excess "
+               "over the noise)";
+      }
+      if (round.signature_reduction) {
+        best += "; the signature's additive model of the inputs lowers it by " + percent(*round.signature_reduction) +
+                " on held-out blocks";
       }
  return head + "the residual is systematic (" + noise_text(round) + ") but neither an effect of the library nor a formula of physical terms explains it" +
              best + ". Its signature: " + signature_text(round.signature) + ".";
