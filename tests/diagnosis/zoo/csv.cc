@@ -19,7 +19,6 @@ std::string CsvStyle::describe() const {
 
 CsvStyle draw_style(Rng& rng) {
   CsvStyle s;
-  if (!rng.chance(0.25)) return s;
   s.time = rng.chance(0.5) ? "ms" : "s";
   const char* torques[] = {"nm", "knm", "mnm"};
   const char* angles[] = {"rad", "deg", "mrad"};

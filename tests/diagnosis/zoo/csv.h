@@ -27,7 +27,7 @@ struct CsvStyle {
   std::string describe() const;   ///< "SI" or e.g. "ms, kNm, deg, kNm, +Ch9"
 };
 
-/// SI most of the time; a DAQ export's units in about a quarter of the draws.
+/// A DAQ export's units, drawn (each column's unit at random; possibly all SI).
 CsvStyle draw_style(Rng& rng);
 
 /// The CSV text. A NaN value is written "nan"; the cells in `empty` ((row, column)) are left empty.
