@@ -5,7 +5,11 @@
 //
 //   gc_noise_zoo --gearcoupling build/clients/cli/gearcoupling --draws 40 --seed 1 [--jobs 2]
 //                [--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b]
-//                [--diagnose-threads T]
+//                [--diagnose-threads T] [--effect-truth NAME --snr X]
+//
+// Power mode (--effect-truth torque_gain|misalignment_offset|twice_per_rev|weight --snr X): the
+// same draws with a hidden effect of X times the noise level (tests/diagnosis/zoo/hidden_effects.h);
+// the share of draws whose first claim names it.
 //
 // A draw's seed is derived from the master seed and its index (gc::zoo::draw_seed), so
 // `--seed S --only K` reruns draw K alone. The default master seed comes from the clock, printed.
@@ -28,6 +32,8 @@
 
 #include "tests/diagnosis/zoo/families.h"
 #include "tests/diagnosis/zoo/harness.h"
+#include "tests/diagnosis/zoo/hidden_effects.h"
+#include <regex>
 #include "tests/diagnosis/zoo/zoo.h"
 
 namespace {
@@ -45,6 +51,8 @@ struct Options {
   long only = -1;
   int diagnose_threads = -1;  // -1: 1 when jobs > 1 (so at most `jobs` busy threads), else diagnose's default
   std::vector<std::string> families;
+  std::string effect_truth;
+  double snr = 1.0;
 };
 
 [[noreturn]] void usage(const char* why) {
@@ -72,6 +80,8 @@ Options parse(int argc, char** argv) {
     else if (a == "--keep") o.keep = value();
     else if (a == "--only") o.only = std::stol(value());
     else if (a == "--diagnose-threads") o.diagnose_threads = std::stoi(value());
+    else if (a == "--effect-truth") o.effect_truth = value();
+    else if (a == "--snr") o.snr = std::stod(value());
     else if (a == "--families") {
       std::string v = value();
       for (std::size_t p = 0; p != std::string::npos;) {
@@ -86,6 +96,11 @@ Options parse(int argc, char** argv) {
     else usage(("unknown flag " + a).c_str());
   }
   if (o.gearcoupling.empty()) usage("--gearcoupling is required");
+  if (!o.effect_truth.empty()) {
+    bool known = false;
+    for (const auto& n : hidden_effect_names()) known = known || n == o.effect_truth;
+    if (!known) usage(("unknown --effect-truth " + o.effect_truth).c_str());
+  }
   if (o.jobs < 1 || o.jobs > 2) usage("--jobs must be 1 or 2 (the machine is shared)");
   if (o.min_rows < 10 || o.max_rows < o.min_rows) usage("rows: 10 <= --min-rows <= --max-rows");
   if (!o.seed_given) o.seed = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
@@ -113,6 +128,8 @@ int main(int argc, char** argv) {
   lim.max_rows = o.max_rows;
   lim.min_rows = std::min(o.min_rows, o.max_rows);
   lim.only_families = o.families;
+  lim.effect_truth = o.effect_truth;
+  lim.effect_snr = o.snr;
   std::vector<std::size_t> todo;
   if (o.only >= 0) todo.push_back(static_cast<std::size_t>(o.only));
   else for (std::size_t k = 0; k < o.draws; ++k) todo.push_back(k);
@@ -163,7 +180,7 @@ int main(int argc, char** argv) {
   std::size_t claims = 0, errors = 0;
   for (const auto& r : results) claims += r.outcome.claim, errors += r.outcome.error;
   const std::size_t n = results.size() - errors;
-  std::printf("\n## Noise zoo: master seed %llu\n\n", static_cast<unsigned long long>(o.seed));
+  std::printf("\n## Noise zoo%s: master seed %llu\n\n", o.effect_truth.empty() ? "" : " (power mode: claims are wanted)", static_cast<unsigned long long>(o.seed));
   std::printf("draws %zu (errors %zu, not counted); false claims %zu of %zu = %.1f %% (95 %% Clopper-Pearson upper bound %.1f %%)\n",
               results.size(), errors, claims, n, n ? 100.0 * claims / n : 0.0, 100.0 * clopper_pearson_upper(claims, n));
 
@@ -196,6 +213,19 @@ int main(int argc, char** argv) {
     for (const auto& r : results) {
       if (r.outcome.error) std::printf("- K=%zu exit %d: %s\n  %s\n", r.k, r.outcome.exit_code, r.outcome.stderr_tail.c_str(), r.draw.description.c_str());
     }
+  }
+
+  if (!o.effect_truth.empty()) {
+    const std::regex re(hidden_effect_pattern(o.effect_truth));
+    std::size_t hits = 0;
+    for (const auto& r : results) {
+      const bool hit = !r.outcome.first_claim.empty() &&
+                       std::any_of(r.outcome.first_claim.begin(), r.outcome.first_claim.end(),
+                                   [&](const std::string& nm) { return std::regex_search(nm, re); });
+      hits += hit;
+    }
+    std::printf("\npower: hidden %s at %.2fx the noise: named first in %zu of %zu draws (%.1f %%); any claim in %zu\n",
+                o.effect_truth.c_str(), o.snr, hits, n, n ? 100.0 * hits / n : 0.0, claims);
   }
 
   // Diagnose's wall time against rows.

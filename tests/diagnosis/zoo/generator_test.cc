@@ -81,7 +81,9 @@ TEST(ZooGenerator, InputFamiliesNoiseTheInputsNotTheMoments) {
     EXPECT_EQ(diff(d.logged.zeta_rad, d.truth.zeta_rad) > 0, n == "probes") << n;
     EXPECT_EQ(diff(d.logged.speed_rpm, d.truth.speed_rpm) > 0, n == "tachometer") << n;
     EXPECT_EQ(diff(d.logged.temperature_c, d.truth.temperature_c) > 0, n == "oil_rtd") << n;
-    if (n == "torque_sensor") EXPECT_LT(diff(d.logged.torque_nm, d.truth.torque_nm), 0.006 * 2.6e6 * d.model.torque_scale);
+    if (n == "torque_sensor") {
+      EXPECT_LT(diff(d.logged.torque_nm, d.truth.torque_nm), 0.006 * 2.6e6 * d.model.torque_scale);
+    }
     if (n == "probes") {
       for (double z : d.logged.zeta_rad) EXPECT_GT(z, 0.0);
     }

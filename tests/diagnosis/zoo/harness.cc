@@ -53,11 +53,18 @@ void read_diagnosis_json(const std::string& json, DiagnoseOutcome& out) {
     const auto& round = r.rounds(i);
     out.outcomes += (i ? "; " : "") + round.outcome();
     if (round.outcome() == "noise") continue;
+    const bool first = !out.claim;
     out.claim = true;
-    name(round.claimed().effect());
+    std::vector<std::string> names = {round.claimed().effect()};
+    for (const auto& p : round.claimed().parameters()) names.push_back(p.name());
     if (round.formula_chosen() || round.outcome() == "formula_proposed") {
-      name(round.formula().effect());
-      for (const auto& p : round.formula().parameters()) name(p.name());
+      names.push_back(round.formula().effect());
+      for (const auto& p : round.formula().parameters()) names.push_back(p.name());
+    }
+    for (const auto& n : names) {
+      if (n.empty()) continue;
+      name(n);
+      if (first) out.first_claim.push_back(n);
     }
     std::string n = format("round %d %s: rmse %.4g N·m, noise %.4g N·m (phi %.2f/%.2f)", i + 1, round.outcome().c_str(),
                            round.rmse_nm(), round.noise_rmse_nm(), round.noise_phi_y(), round.noise_phi_z());

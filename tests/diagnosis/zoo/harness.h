@@ -20,6 +20,7 @@ struct DiagnoseOutcome {
   bool error = false;                ///< exit code not 0, or JSON that does not parse
   std::string outcomes;              ///< the rounds' outcomes, "noise" or e.g. "effect_found; noise"
   std::vector<std::string> claimed;  ///< names claimed: effects, formula terms, add_flags
+  std::vector<std::string> first_claim;  ///< the names of the first claiming round (power mode's "named first")
   std::string numbers;               ///< held-out figures of the claiming rounds, as text
   std::string stderr_tail;           ///< the end of its standard error (errors)
 };

@@ -47,13 +47,13 @@ std::string proximity_probes(const NoiseContext& c, Rng& rng, Channels& out) {
   return format("proximity probes %.2e rad per axis (%.2f%% of jam) tau %.2g s", sd, 100 * sd / c.jam_rad, tau);
 }
 
-std::string tachometer(const NoiseContext& c, Rng& rng, Channels& out) {
+std::string tachometer(const NoiseContext&, Rng& rng, Channels& out) {
   const double sd = rng.uniform(0.01, 0.2);
   for (double& v : out.speed_rpm) v = std::max(0.5, v + sd * rng.normal());
   return format("tachometer %.3f rpm", sd);
 }
 
-std::string oil_rtd(const NoiseContext& c, Rng& rng, Channels& out) {
+std::string oil_rtd(const NoiseContext&, Rng& rng, Channels& out) {
   const double sd = rng.uniform(0.02, 0.3), phi = rng.chance(0.5) ? 0.0 : rng.uniform(0.5, 0.99);
   Series e = phi > 0 ? ar1(out.rows(), phi, rng) : white(out.rows(), rng);
   scale_to(e, sd);

@@ -7,6 +7,7 @@
 
 #include "core/coupling_geometry.h"
 #include "tests/diagnosis/zoo/families.h"
+#include "tests/diagnosis/zoo/hidden_effects.h"
 #include "tests/diagnosis/zoo/programme.h"
 #include "tests/diagnosis/zoo/text.h"
 
@@ -79,6 +80,11 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
   for (std::size_t i = 0; i < truth.rows(); ++i) peak = std::max({peak, std::abs(truth.msy_nm[i]), std::abs(truth.msz_nm[i])});
   d.moment_range_nm = std::max({ry, rz, 0.1 * peak});
   d.level_nm = d.level_share * d.moment_range_nm;
+  std::string hidden;
+  if (!lim.effect_truth.empty()) {
+    Rng effect_rng(derive_seed(seed, "effect"));
+    hidden = "HIDDEN " + add_hidden_effect(lim.effect_truth, lim.effect_snr, d.level_nm, *model, jam, truth, effect_rng) + "; ";
+  }
 
   // The families: 1-3 distinct, at least one on the moments (a bridge always has some noise).
   Rng pick(derive_seed(seed, "families"));
@@ -96,9 +102,9 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
       const Family* f = &all[static_cast<std::size_t>(pick.integer(0, static_cast<int>(all.size()) - 1))];
       if (std::find(chosen.begin(), chosen.end(), f) == chosen.end()) chosen.push_back(f);
     }
-    if (std::none_of(chosen.begin(), chosen.end(), [](const Family* f) { return f->kind == FamilyKind::moment; })) {
-      chosen.push_back(find_family("white"));
-    }
+  }
+  if (std::none_of(chosen.begin(), chosen.end(), [](const Family* f) { return f->kind == FamilyKind::moment; })) {
+    chosen.push_back(find_family("white"));
   }
   std::stable_sort(chosen.begin(), chosen.end(), [](const Family* a, const Family* b) {
     auto rank = [](FamilyKind k) { return k == FamilyKind::input ? 0 : k == FamilyKind::moment ? 1 : 2; };
@@ -134,7 +140,7 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
                          static_cast<unsigned long long>(seed), d.rows, d.fs_hz, d.rows / d.fs_hz, d.model.description.c_str(),
                          prog.description.c_str(), 100 * d.level_share, d.moment_range_nm / 1e3, d.level_nm / 1e3,
                          style.describe().c_str()) +
-                  fams;
+                  hidden + fams;
   if (lim.keep_channels) {
     d.truth = std::move(truth);
     d.logged = std::move(logged);

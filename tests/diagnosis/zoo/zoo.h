@@ -25,6 +25,8 @@ struct DrawLimits {
   double style_share = 0.25;                       ///< share of draws exported in other units
   std::vector<std::string> only_families;          ///< when set: exactly these (unit tests)
   bool keep_channels = false;                      ///< keep truth and logged in the draw (unit tests)
+  std::string effect_truth;                        ///< power mode: a hidden effect (hidden_effects.h), empty for none
+  double effect_snr = 1.0;                         ///< its RMS / the moment noise level
 };
 
 struct ZooDraw {
