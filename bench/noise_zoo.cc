@@ -1,0 +1,248 @@
+// gc_noise_zoo: the false-claim rate of `gearcoupling diagnose` on noise-only recordings, like a
+// statistical test's size (tests/diagnosis/zoo/). Each draw is a random coupling, test programme,
+// sample rate, length and mix of noise families on the model's own prediction; diagnose is run on
+// it as a user runs it, with the same model. Any claim is false.
+//
+//   gc_noise_zoo --gearcoupling build/clients/cli/gearcoupling --draws 40 --seed 1 [--jobs 2]
+//                [--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b]
+//                [--diagnose-threads T] [--effect-truth NAME --snr X]
+//
+// Power mode (--effect-truth torque_gain|misalignment_offset|twice_per_rev|weight --snr X): the
+// same draws with a hidden effect of X times the noise level (tests/diagnosis/zoo/hidden_effects.h);
+// the share of draws whose first claim names it.
+//
+// A draw's seed is derived from the master seed and its index (gc::zoo::draw_seed), so
+// `--seed S --only K` reruns draw K alone. The default master seed comes from the clock, printed.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <unistd.h>
+
+#include "tests/diagnosis/zoo/families.h"
+#include "tests/diagnosis/zoo/harness.h"
+#include "tests/diagnosis/zoo/hidden_effects.h"
+#include <regex>
+#include "tests/diagnosis/zoo/zoo.h"
+
+namespace {
+
+using namespace gc::zoo;
+
+struct Options {
+  std::string gearcoupling;
+  std::size_t draws = 40;
+  std::uint64_t seed = 0;
+  bool seed_given = false;
+  int jobs = 2;
+  std::size_t max_rows = 200000, min_rows = 1000;
+  std::string keep;
+  long only = -1;
+  int diagnose_threads = -1;  // -1: 1 when jobs > 1 (so at most `jobs` busy threads), else diagnose's default
+  std::vector<std::string> families;
+  std::string effect_truth;
+  double snr = 1.0;
+};
+
+[[noreturn]] void usage(const char* why) {
+  std::fprintf(stderr,
+               "gc_noise_zoo: %s\nusage: gc_noise_zoo --gearcoupling PATH [--draws N] [--seed S] [--jobs J (1-2)] "
+               "[--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b] [--diagnose-threads T]\n",
+               why);
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) usage(("missing value for " + a).c_str());
+      return argv[++i];
+    };
+    if (a == "--gearcoupling") o.gearcoupling = value();
+    else if (a == "--draws") o.draws = std::stoul(value());
+    else if (a == "--seed") o.seed = std::stoull(value(), nullptr, 0), o.seed_given = true;
+    else if (a == "--jobs") o.jobs = std::stoi(value());
+    else if (a == "--max-rows") o.max_rows = std::stoul(value());
+    else if (a == "--min-rows") o.min_rows = std::stoul(value());
+    else if (a == "--keep") o.keep = value();
+    else if (a == "--only") o.only = std::stol(value());
+    else if (a == "--diagnose-threads") o.diagnose_threads = std::stoi(value());
+    else if (a == "--effect-truth") o.effect_truth = value();
+    else if (a == "--snr") o.snr = std::stod(value());
+    else if (a == "--families") {
+      std::string v = value();
+      for (std::size_t p = 0; p != std::string::npos;) {
+        const std::size_t q = v.find(',', p);
+        o.families.push_back(v.substr(p, q == std::string::npos ? q : q - p));
+        p = q == std::string::npos ? q : q + 1;
+      }
+      for (const auto& f : o.families) {
+        if (!find_family(f)) usage(("unknown family " + f).c_str());
+      }
+    } else if (a == "--help" || a == "-h") usage("help");
+    else usage(("unknown flag " + a).c_str());
+  }
+  if (o.gearcoupling.empty()) usage("--gearcoupling is required");
+  if (!o.effect_truth.empty()) {
+    bool known = false;
+    for (const auto& n : hidden_effect_names()) known = known || n == o.effect_truth;
+    if (!known) usage(("unknown --effect-truth " + o.effect_truth).c_str());
+  }
+  if (o.jobs < 1 || o.jobs > 2) usage("--jobs must be 1 or 2 (the machine is shared)");
+  if (o.min_rows < 10 || o.max_rows < o.min_rows) usage("rows: 10 <= --min-rows <= --max-rows");
+  if (!o.seed_given) o.seed = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+  if (o.diagnose_threads < 0) o.diagnose_threads = o.jobs > 1 ? 1 : 0;
+  return o;
+}
+
+struct Result {
+  std::size_t k = 0;
+  ZooDraw draw;  // csv dropped after writing
+  DiagnoseOutcome outcome;
+};
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  DrawLimits lim;
+  lim.max_rows = o.max_rows;
+  lim.min_rows = std::min(o.min_rows, o.max_rows);
+  lim.only_families = o.families;
+  lim.effect_truth = o.effect_truth;
+  lim.effect_snr = o.snr;
+  std::vector<std::size_t> todo;
+  if (o.only >= 0) todo.push_back(static_cast<std::size_t>(o.only));
+  else for (std::size_t k = 0; k < o.draws; ++k) todo.push_back(k);
+
+  const std::filesystem::path root = o.keep.empty()
+      ? std::filesystem::temp_directory_path() / ("gc_noise_zoo_" + std::to_string(::getpid()))
+      : std::filesystem::path(o.keep);
+  std::printf("noise zoo: master seed %llu, %zu draw(s), jobs %d, rows %zu-%zu, diagnose %s\n",
+              static_cast<unsigned long long>(o.seed), todo.size(), o.jobs, lim.min_rows, lim.max_rows,
+              o.diagnose_threads > 0 ? ("-j " + std::to_string(o.diagnose_threads)).c_str() : "(default threads)");
+  std::fflush(stdout);
+
+  std::vector<Result> results(todo.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex print;
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t j = next++;
+      if (j >= todo.size()) return;
+      Result& r = results[j];
+      r.k = todo[j];
+      const auto t0 = std::chrono::steady_clock::now();
+      r.draw = draw(draw_seed(o.seed, r.k), lim);
+      const double gen_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto dir = root / ("draw_" + std::to_string(r.k));
+      const auto model = write_choice(r.draw.model, dir);
+      const auto csv = dir / "recording.csv";
+      std::ofstream(csv, std::ios::binary) << r.draw.csv;
+      std::ofstream(dir / "description.txt") << r.draw.description << "\n";
+      r.draw.csv.clear();
+      r.draw.csv.shrink_to_fit();
+      r.outcome = run_diagnose(o.gearcoupling, csv, model, o.diagnose_threads);
+      if (o.keep.empty()) std::filesystem::remove_all(dir);
+      std::lock_guard lock(print);
+      std::printf("[%zu] %s -> %s%s (diagnose %.1f s, generate %.1f s)\n  %s\n", r.k,
+                  r.outcome.error ? "ERROR" : r.outcome.claim ? "CLAIM" : "noise", r.outcome.outcomes.c_str(),
+                  r.outcome.error ? (" exit " + std::to_string(r.outcome.exit_code) + ": " + r.outcome.stderr_tail).c_str() : "",
+                  r.outcome.wall_s, gen_s, r.draw.description.c_str());
+      std::fflush(stdout);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < o.jobs; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  if (o.keep.empty()) std::filesystem::remove_all(root);
+
+  // The rate, with a 95 % Clopper-Pearson interval's upper end.
+  std::size_t claims = 0, errors = 0;
+  for (const auto& r : results) claims += r.outcome.claim, errors += r.outcome.error;
+  const std::size_t n = results.size() - errors;
+  std::printf("\n## Noise zoo%s: master seed %llu\n\n", o.effect_truth.empty() ? "" : " (power mode: claims are wanted)", static_cast<unsigned long long>(o.seed));
+  std::printf("draws %zu (errors %zu, not counted); false claims %zu of %zu = %.1f %% (95 %% Clopper-Pearson upper bound %.1f %%)\n",
+              results.size(), errors, claims, n, n ? 100.0 * claims / n : 0.0, 100.0 * clopper_pearson_upper(claims, n));
+
+  std::printf("\n| family | draws | claims | errors |\n|---|---|---|---|\n");
+  std::map<std::string, std::array<std::size_t, 3>> per;
+  for (const auto& f : all_families()) per[f.name] = {0, 0, 0};
+  for (const auto& r : results) {
+    for (const auto& f : r.draw.families) {
+      auto& p = per[f];
+      ++p[0];
+      p[1] += r.outcome.claim;
+      p[2] += r.outcome.error;
+    }
+  }
+  for (const auto& f : all_families()) {
+    const auto& p = per[f.name];
+    std::printf("| %s | %zu | %zu | %zu |\n", f.name, p[0], p[1], p[2]);
+  }
+
+  std::printf("\n### Claimed draws (rerun one: --seed %llu --only K)\n", static_cast<unsigned long long>(o.seed));
+  for (const auto& r : results) {
+    if (!r.outcome.claim) continue;
+    std::string names;
+    for (const auto& c : r.outcome.claimed) names += (names.empty() ? "" : ", ") + c;
+    std::printf("- K=%zu %s\n  outcomes: %s\n  claimed: %s\n  numbers: %s\n", r.k, r.draw.description.c_str(),
+                r.outcome.outcomes.c_str(), names.empty() ? "(none named)" : names.c_str(), r.outcome.numbers.c_str());
+  }
+  if (errors) {
+    std::printf("\n### Errors\n");
+    for (const auto& r : results) {
+      if (r.outcome.error) std::printf("- K=%zu exit %d: %s\n  %s\n", r.k, r.outcome.exit_code, r.outcome.stderr_tail.c_str(), r.draw.description.c_str());
+    }
+  }
+
+  if (!o.effect_truth.empty()) {
+    const std::regex re(hidden_effect_pattern(o.effect_truth));
+    std::size_t hits = 0;
+    for (const auto& r : results) {
+      const bool hit = !r.outcome.first_claim.empty() &&
+                       std::any_of(r.outcome.first_claim.begin(), r.outcome.first_claim.end(),
+                                   [&](const std::string& nm) { return std::regex_search(nm, re); });
+      hits += hit;
+    }
+    std::printf("\npower: hidden %s at %.2fx the noise: named first in %zu of %zu draws (%.1f %%); any claim in %zu\n",
+                o.effect_truth.c_str(), o.snr, hits, n, n ? 100.0 * hits / n : 0.0, claims);
+  }
+
+  // Diagnose's wall time against rows.
+  std::vector<double> all;
+  std::map<int, std::vector<double>> by_bucket;
+  const std::size_t edges[] = {1000, 3000, 10000, 30000, 100000, 1000000};
+  for (const auto& r : results) {
+    all.push_back(r.outcome.wall_s);
+    int b = 0;
+    while (b < 5 && r.draw.rows >= edges[b + 1]) ++b;
+    by_bucket[b].push_back(r.outcome.wall_s);
+  }
+  std::printf("\ndiagnose wall time: median %.1f s, p90 %.1f s, max %.1f s\n\n| rows | draws | median s | p90 s | max s |\n|---|---|---|---|---|\n",
+              quantile(all, 0.5), quantile(all, 0.9), quantile(all, 1.0));
+  for (const auto& [b, v] : by_bucket) {
+    std::printf("| %zu-%zu | %zu | %.1f | %.1f | %.1f |\n", edges[b], edges[b + 1], v.size(), quantile(v, 0.5), quantile(v, 0.9),
+                quantile(v, 1.0));
+  }
+  return 0;
+}

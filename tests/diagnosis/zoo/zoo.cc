@@ -1,0 +1,151 @@
+#include "tests/diagnosis/zoo/zoo.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "core/coupling_geometry.h"
+#include "tests/diagnosis/zoo/families.h"
+#include "tests/diagnosis/zoo/hidden_effects.h"
+#include "tests/diagnosis/zoo/programme.h"
+#include "tests/diagnosis/zoo/text.h"
+
+namespace gc::zoo {
+namespace {
+
+double three_digits(double x) {
+  const double p = std::pow(10.0, std::floor(std::log10(x)) - 2.0);
+  return std::round(x / p) * p;
+}
+
+// The model's prediction at the true inputs, on two threads for long records.
+void predict(const CouplingModel& model, Channels& c) {
+  const std::size_t n = c.rows();
+  auto part = [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) {
+      MeasurementSample s;
+      s.time_s = c.time_s[i];
+      s.torque_nm = c.torque_nm[i];
+      s.misalignment_rad = c.zeta_rad[i];
+      s.direction_rad = c.beta_rad[i];
+      s.speed_rpm = c.speed_rpm[i];
+      s.temperature_c = c.temperature_c[i];
+      const SensorMoments m = model.predict(s).moments;
+      c.msy_nm[i] = m.y_nm;
+      c.msz_nm[i] = m.z_nm;
+    }
+  };
+  if (n < 20000) return part(0, n);
+  std::thread t(part, n / 2, n);
+  part(0, n / 2);
+  t.join();
+}
+
+double spread(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi - *lo;
+}
+
+}  // namespace
+
+std::uint64_t draw_seed(std::uint64_t master, std::size_t k) { return derive_seed(master, static_cast<std::uint64_t>(k)); }
+
+ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
+  ZooDraw d;
+  d.seed = seed;
+  Rng sizes(derive_seed(seed, "sizes"));
+  d.rows = static_cast<std::size_t>(std::lround(sizes.log_uniform(static_cast<double>(lim.min_rows), static_cast<double>(lim.max_rows))));
+  d.rows = std::clamp(d.rows, lim.min_rows, lim.max_rows);
+  d.fs_hz = three_digits(sizes.log_uniform(lim.min_rate_hz, lim.max_rate_hz));
+  d.level_share = sizes.log_uniform(lim.min_level, lim.max_level);
+
+  Rng model_rng(derive_seed(seed, "model"));
+  d.model = draw_model(model_rng, lim.bundled_share);
+  const auto model = load_choice(d.model);
+  const double jam = model->geometry().jam_angle().angle_rad;
+
+  Rng prog_rng(derive_seed(seed, "programme"));
+  ProgrammeLimits pl;
+  pl.torque_min_nm = 0.1e6 * d.model.torque_scale;
+  pl.torque_max_nm = prog_rng.uniform(1.5e6, 2.6e6) * d.model.torque_scale;
+  pl.zeta_max_rad = prog_rng.uniform(0.3, 0.6) * jam;
+  pl.zeta_min_rad = prog_rng.uniform(0.03, 0.1) * jam;
+  Programme prog = draw_programme(d.rows, d.fs_hz, pl, prog_rng);
+  Channels& truth = prog.truth;
+  predict(*model, truth);
+
+  const double ry = spread(truth.msy_nm), rz = spread(truth.msz_nm);
+  double peak = 0.0;
+  for (std::size_t i = 0; i < truth.rows(); ++i) peak = std::max({peak, std::abs(truth.msy_nm[i]), std::abs(truth.msz_nm[i])});
+  d.moment_range_nm = std::max({ry, rz, 0.1 * peak});
+  d.level_nm = d.level_share * d.moment_range_nm;
+  std::string hidden;
+  if (!lim.effect_truth.empty()) {
+    Rng effect_rng(derive_seed(seed, "effect"));
+    hidden = "HIDDEN " + add_hidden_effect(lim.effect_truth, lim.effect_snr, d.level_nm, *model, jam, truth, effect_rng) + "; ";
+  }
+
+  // The families: 1-3 distinct, at least one on the moments (a bridge always has some noise).
+  Rng pick(derive_seed(seed, "families"));
+  std::vector<const Family*> chosen;
+  if (!lim.only_families.empty()) {
+    for (const auto& name : lim.only_families) {
+      const Family* f = find_family(name);
+      if (!f) throw std::invalid_argument("unknown noise family " + name);
+      chosen.push_back(f);
+    }
+  } else {
+    const int k = pick.integer(lim.min_families, lim.max_families);
+    const auto& all = all_families();
+    while (static_cast<int>(chosen.size()) < k) {
+      const Family* f = &all[static_cast<std::size_t>(pick.integer(0, static_cast<int>(all.size()) - 1))];
+      if (std::find(chosen.begin(), chosen.end(), f) == chosen.end()) chosen.push_back(f);
+    }
+  }
+  if (std::none_of(chosen.begin(), chosen.end(), [](const Family* f) { return f->kind == FamilyKind::moment; })) {
+    chosen.push_back(find_family("white"));
+  }
+  std::stable_sort(chosen.begin(), chosen.end(), [](const Family* a, const Family* b) {
+    auto rank = [](FamilyKind k) { return k == FamilyKind::input ? 0 : k == FamilyKind::moment ? 1 : 2; };
+    return rank(a->kind) < rank(b->kind);
+  });
+  // The moment level split among the moment families (their RMS add in quadrature to level_nm).
+  std::vector<double> weight(chosen.size(), 0.0);
+  double wsum = 0.0;
+  for (std::size_t j = 0; j < chosen.size(); ++j) {
+    if (chosen[j]->kind == FamilyKind::moment) wsum += (weight[j] = pick.uniform(0.2, 1.0));
+  }
+
+  Channels logged = truth;
+  NoiseContext ctx;
+  ctx.truth = &truth;
+  ctx.fs_hz = d.fs_hz;
+  ctx.moment_range_nm = d.moment_range_nm;
+  ctx.torque_span_nm = std::max(spread(truth.torque_nm), 0.1 * pl.torque_max_nm);
+  ctx.jam_rad = jam;
+  std::string fams;
+  for (std::size_t j = 0; j < chosen.size(); ++j) {
+    ctx.level_nm = chosen[j]->kind == FamilyKind::moment ? d.level_nm * std::sqrt(weight[j] / wsum) : d.level_nm;
+    Rng frng(derive_seed(seed, std::string("family:") + chosen[j]->name));
+    const std::string params = chosen[j]->apply(ctx, frng, logged);
+    d.families.push_back(chosen[j]->name);
+    fams += (fams.empty() ? "" : "; ") + std::string(chosen[j]->name) + "(" + params + ")";
+  }
+
+  Rng style_rng(derive_seed(seed, "style"));
+  const CsvStyle style = style_rng.chance(lim.style_share) ? draw_style(style_rng) : CsvStyle{};
+  d.csv = write_csv(logged, style, {}, derive_seed(seed, "extra"));
+  d.description = format("seed %016llx: %zu rows at %g Hz (%.4g s), %s, %s, level %.2f%% of %.4g kN·m = %.3g kN·m, units %s: ",
+                         static_cast<unsigned long long>(seed), d.rows, d.fs_hz, d.rows / d.fs_hz, d.model.description.c_str(),
+                         prog.description.c_str(), 100 * d.level_share, d.moment_range_nm / 1e3, d.level_nm / 1e3,
+                         style.describe().c_str()) +
+                  hidden + fams;
+  if (lim.keep_channels) {
+    d.truth = std::move(truth);
+    d.logged = std::move(logged);
+  }
+  return d;
+}
+
+}  // namespace gc::zoo
