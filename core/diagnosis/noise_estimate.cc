@@ -9,6 +9,7 @@ namespace {
 constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of most noise we meet
 constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean square says little
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
+constexpr std::size_t kLongestSpike = 2;  ///< rows a spike spans at most: longer stretches are structure
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -138,8 +139,21 @@ std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, dou
       if (std::abs(deviation(i)) > k * scale) flagged[static_cast<std::size_t>(i)] = true;
     }
   }
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < flagged.size(); ++i) if (flagged[i]) out.push_back(i);
+  // A spike is isolated: flagged samples within kLongestSpike rows of each other form one stretch,
+  // and a stretch longer than kLongestSpike is structure, kept for the physics (a lightly damped
+  // resonance ringing after each torque step lost 14 rows in a row as "outliers"; one that
+  // alternates in sign each sample has every other sample flagged against the running median).
+  std::vector<std::size_t> flagged_positions, out;
+  for (std::size_t i = 0; i < flagged.size(); ++i) if (flagged[i]) flagged_positions.push_back(i);
+  for (std::size_t start = 0; start < flagged_positions.size();) {
+    std::size_t end = start + 1;
+    while (end < flagged_positions.size() && flagged_positions[end] - flagged_positions[end - 1] <= kLongestSpike) ++end;
+    if (flagged_positions[end - 1] - flagged_positions[start] < kLongestSpike) {
+      out.insert(out.end(), flagged_positions.begin() + static_cast<std::ptrdiff_t>(start),
+                 flagged_positions.begin() + static_cast<std::ptrdiff_t>(end));
+    }
+    start = end;
+  }
   return out;
 }
 
