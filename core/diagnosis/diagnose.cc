@@ -682,7 +682,12 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
     require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
   }
-  const std::vector<std::size_t> ordered = time_ordered(observations);
+  const DataQuality quality = check_data_quality(observations, settings.data_quality);
+  out.data_quality = quality.findings;
+  std::vector<std::size_t> ordered = time_ordered(observations);
+  std::erase_if(ordered, [&](std::size_t r) {
+    return std::binary_search(quality.excluded_rows.begin(), quality.excluded_rows.end(), r);
+  });
   const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
   out.excluded_rows = first.failed_rows;
   out.exclusion_reason = first.first_failure;
@@ -704,10 +709,15 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       blocked_folds(search.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
                     settings.cross_validation.fold_seed),
       test_block_rows(estimate_noise(residual), rows.size(), search.size(), settings));
+  if (auto spikes = spike_finding(out.outlier_rows, observations, settings.outlier_deviations)) {
+    out.data_quality.push_back(std::move(*spikes));
+  }
+  out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
+  out.summary = data_quality_text(out.data_quality);
   if (!out.outlier_rows.empty()) {
-    out.summary = std::to_string(out.outlier_rows.size()) + " of " + std::to_string(out.rows) +
-                  " samples excluded as outliers (more than " + short_number(settings.outlier_deviations) +
-                  " robust deviations from the running median of their neighbours).";
+    out.summary += (out.summary.empty() ? "" : "\n") + std::to_string(out.outlier_rows.size()) + " of " +
+                   std::to_string(out.rows) + " samples excluded as outliers (more than " +
+                   short_number(settings.outlier_deviations) + " robust deviations from the running median of their neighbours).";
   }
   CouplingModel current = model;
   std::set<std::string> partly;  // effects added by a round that said they explain only partly
