@@ -55,9 +55,11 @@ DataQuality check_data_quality(std::span<const RecordedSample> observations, con
   const std::vector<std::size_t> ordered = rows_in_time_order(observations);
   for (const RecordedChannel& channel : recorded_channels(observations)) {
     // A set point or a noise-free channel holds values by design: its repeats are no artefact.
-    if (!changes_every_sample(channel, observations)) continue;
-    channel_artefacts(channel, settings, out.findings);
-    add(out.findings, coarse_quantisation(channel, settings));
+    const bool noisy = changes_every_sample(channel, observations);
+    if (noisy) channel_artefacts(channel, settings, out.findings);
+    // A sensor's grid shows on a measured channel whatever its ties; an input on a coarse grid
+    // cannot be told from set points.
+    if (noisy || channel.measured) add(out.findings, coarse_quantisation(channel, settings));
   }
   add(out.findings, negative_torque(observations, ordered));
   add(out.findings, time_gaps(observations, ordered, settings));

@@ -9,6 +9,7 @@
 #include "core/diagnosis/delay_estimate.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
+#include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression.h"
@@ -616,6 +617,25 @@ std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen:
   return outliers;
 }
 
+/// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
+/// its rows leave `rows` and `residual` and join the data-quality findings.
+void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                          Eigen::MatrixX2d& residual) {
+  std::vector<std::size_t> flipped;
+  for (DataQualityFinding& f : moment_polarity_flips(observations, rows, residual)) {
+    f.spans = row_spans(f.rows, observations);
+    f.detail += ": " + spans_text(f.spans);
+    flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
+    out.data_quality.push_back(std::move(f));
+  }
+  if (flipped.empty()) return;
+  std::sort(flipped.begin(), flipped.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(flipped.begin(), flipped.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+}
+
 /// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
 /// when the claim is a formula, those a fresh formula can take over (the claim becomes that formula).
 /// Refinements of the given model's effects are refined again later, never removed.
@@ -695,6 +715,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
   // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
+  exclude_moment_flips(out, observations, rows, residual);
   out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
