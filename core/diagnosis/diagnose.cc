@@ -623,8 +623,6 @@ void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observ
                           Eigen::MatrixX2d& residual) {
   std::vector<std::size_t> flipped;
   for (DataQualityFinding& f : moment_polarity_flips(observations, rows, residual)) {
-    f.spans = row_spans(f.rows, observations);
-    f.detail += ": " + spans_text(f.spans);
     flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
     out.data_quality.push_back(std::move(f));
   }

@@ -85,6 +85,8 @@ std::vector<DataQualityFinding> moment_polarity_flips(std::span<const RecordedSa
         : "the measured " + name + " turns to the model's with the opposite sign on " + count + ", from t = " +
               engineering_text(observations[rows[*k]].input.time_s, "s") +
               " (a swapped bridge lead); split the recording there and read the rest with --negate " + name + "; excluded";
+    finding.spans = row_spans(finding.rows, observations);
+    finding.detail += ": " + spans_text(finding.spans);
     findings.push_back(std::move(finding));
   }
   return findings;
