@@ -68,6 +68,15 @@ void print_signature(const v1::RoundRecord& round, std::FILE* out) {
   table.print(out);
 }
 
+/// Before the physics: each artefact with its channel, what it means and its rows.
+void print_data_quality(const v1::DiagnosisResult& result, std::FILE* out) {
+  if (result.data_quality_size() == 0) return;
+  fmt::print(out, "\nData quality (before the physics):\n");
+  for (const v1::DataQualityFinding& f : result.data_quality()) {
+    fmt::print(out, "  - {} {}: {}\n", f.channel(), f.kind(), f.detail());
+  }
+}
+
 }  // namespace
 
 void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) {
@@ -80,6 +89,7 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
   }
   if (result.refused_rows() > 0) fmt::print(out, "  first refusal: {}\n", result.exclusion_reason());
   if (result.outlier_rows() > 0) fmt::print(out, "  {} rows excluded as outliers (spikes)\n", result.outlier_rows());
+  print_data_quality(result, out);
   for (int i = 0; i < result.rounds_size(); ++i) {
     const v1::RoundRecord& round = result.rounds(i);
     fmt::print(out, "\nRound {}: RMSE {:.2f} kN·m, noise {:.2f} kN·m (M_sy' {:.2f}, M_sz' {:.2f}; lag-1 autocorrelation {:.2f}, {:.2f})\n",
@@ -90,8 +100,9 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
     fmt::print(out, "\n{}\n", round.verdict());
   }
   for (const std::string& add : result.add_flags()) {
+    // The model as the user named it: a file's path pastes where its name would not.
     fmt::print(out, "\nTo validate with it: gearcoupling validate --data {} --model {} --add {}\n",
-               result.recording(), result.model(), add);
+               result.recording(), result.model_source().empty() ? result.model() : result.model_source(), add);
   }
   if (!result.written_model().empty()) fmt::print(out, "\nModel with the effects found: {}\n", result.written_model());
   print_input_notes(result.warnings(), result.ignored_columns(), out);

@@ -32,8 +32,9 @@ std::string effect_spec_text(const Effect& effect) {
   std::string text = effect.name();
   const std::vector<ParameterSpec>& parameters = effect.info().parameters;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
-    text += (i == 0 ? "=" : ",") + parameters[i].name + "=";
-    append_number(text, effect.values()[i]);
+    // Six significant digits: what a fit determines and enough to reproduce a validation; the
+    // shortest round trip (17) differs between CPUs in its last digits.
+    text += (i == 0 ? "=" : ",") + parameters[i].name + "=" + fmt::format("{:.6g}", effect.values()[i]);
   }
   return text;
 }

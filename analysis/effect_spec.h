@@ -16,8 +16,9 @@ namespace gc::analysis {
 /// its bounds.
 std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec);
 
-/// The spec parse_effect_spec reads back to `effect`: "name" or "name=p=v,..." with every
-/// parameter in SI, shortest round-trip numbers (what diagnose prints for --add).
+/// The spec parse_effect_spec reads back to `effect` to 6 significant digits: "name" or
+/// "name=p=v,..." with every parameter in SI (what diagnose prints for --add). Six digits are
+/// what a fit determines and reproduce a validation; all 17 differ between CPUs in the last ones.
 std::string effect_spec_text(const Effect& effect);
 
 }  // namespace gc::analysis

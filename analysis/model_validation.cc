@@ -23,6 +23,11 @@ AddedEffect added_effect(std::string_view spec, const codec::ModelFile& model) {
                       effect->name(), had, effect_spec_text(*effect))};
 }
 
+double model_reference_torque(const codec::ModelFile& model, double fallback) {
+  const std::shared_ptr<const Effect> friction = model.model.effect("friction");
+  return friction ? friction->value("reference_torque_nm") : fallback;
+}
+
 std::unique_ptr<ModelValidation> validate_model(const std::filesystem::path& path,
                                                 const codec::ModelFile& model,
                                                 std::string_view added_effect,

@@ -34,6 +34,10 @@ struct ModelValidation {
   gearcoupling::v1::ValidationResult result;
 };
 
+/// T_ref of the errors in % when the user gives none: the model's own, its friction's
+/// reference_torque_nm (a small coupling's 300 kN·m), else `fallback` (the library's 1.5 MN·m).
+double model_reference_torque(const codec::ModelFile& model, double fallback);
+
 /// Runs `model` (and, when `added_effect` is not empty, the model with that effect added, named
 /// as added_effect labels it) through the recording at `path`. Errors as parse_effect_spec and
 /// run_validation; the caller decides about require_compared_samples (it may print the notes first).

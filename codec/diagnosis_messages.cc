@@ -54,6 +54,30 @@ v1::InputSignatureRecord to_message(const InputSignature& s) {
   return r;
 }
 
+void fill(const RowSpan& span, v1::RowSpanRecord& out) {
+  out.set_first_row(count_field(span.first_row, "first_row"));
+  out.set_last_row(count_field(span.last_row, "last_row"));
+  out.set_t_start_s(span.t_start_s);
+  out.set_t_end_s(span.t_end_s);
+}
+
+v1::DataQualityFinding to_message(const DataQualityFinding& f) {
+  v1::DataQualityFinding r;
+  r.set_kind(gc::to_string(f.kind));
+  r.set_channel(f.channel);
+  if (!f.spans.empty()) {
+    r.set_first_row(count_field(f.spans.front().first_row, "first_row"));
+    r.set_last_row(count_field(f.spans.back().last_row, "last_row"));
+    r.set_t_start_s(f.spans.front().t_start_s);
+    r.set_t_end_s(f.spans.back().t_end_s);
+  }
+  r.set_rows(count_field(f.rows.size(), "rows"));
+  r.set_excluded(f.excluded);
+  r.set_detail(f.detail);
+  for (const RowSpan& span : f.spans) fill(span, *r.add_spans());
+  return r;
+}
+
 v1::RoundRecord to_message(const DiagnosisRound& round) {
   v1::RoundRecord r;
   for (const std::string& e : round.model_effects) r.add_model_effects(e);
@@ -102,6 +126,12 @@ v1::DiagnosisResult to_message(const Diagnosis& diagnosis) {
   for (const DiagnosisRound& round : diagnosis.rounds) *r.add_rounds() = to_message(round);
   r.set_summary(diagnosis.summary);
   r.set_outlier_rows(count_field(diagnosis.outlier_rows.size(), "outlier_rows"));
+  for (const DataQualityFinding& f : diagnosis.data_quality) *r.add_data_quality() = to_message(f);
+  for (const ExcludedRange& range : diagnosis.excluded_ranges) {
+    v1::ExcludedRangeRecord& record = *r.add_excluded_ranges();
+    fill(range.span, *record.mutable_span());
+    record.set_reason(range.reason);
+  }
   return r;
 }
 

@@ -58,6 +58,7 @@ int run_diagnose(const Flags& flags, const Calculator&, std::FILE* out) {
       diagnose(model.model, recording.samples, thread_parallel_for(jobs_from(flags)));
   gearcoupling::v1::DiagnosisResult result =
       analysis::diagnosis_result(diagnosis, flags.text("data"), model.name, check, recording);
+  result.set_model_source(flags.text("model"));
   if (!flags.text("write-model").empty()) {
     write_model(flags.text("write-model"), model, diagnosis);
     result.set_written_model(flags.text("write-model"));

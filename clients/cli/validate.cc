@@ -32,7 +32,7 @@ std::vector<FlagSpec> validate_flags() {
       columns_flag(),
       negate_flag(),
       force_scale_flag(),
-      {"reference-torque-nm", "N·m", "T_ref: errors are also given in % of it", "1.5e6", false,
+      {"reference-torque-nm", "N·m", "T_ref: errors are also given in % of it (default: the model's friction T_ref, else 1.5e6)", "1.5e6", false,
        '\0', {"reference-torque"}},
       {"html", "FILE", "also write a self-contained HTML report with plots", ""},
       {"add", "EFFECT[=p=v,...]",
@@ -47,8 +47,11 @@ std::vector<FlagSpec> validate_flags() {
 
 int run_validate(const Flags& flags, const Calculator&, std::FILE* out) {
   const codec::ModelFile model = load_model_flag(flags);
+  const double reference_torque_nm = flags.given("reference-torque-nm")
+                                         ? flags.number("reference-torque-nm")
+                                         : analysis::model_reference_torque(model, flags.number("reference-torque-nm"));
   const auto validation = analysis::validate_model(
-      flags.text("data"), model, flags.text("add"), flags.number("reference-torque-nm"),
+      flags.text("data"), model, flags.text("add"), reference_torque_nm,
       {jobs_from(flags), 1u << 15, column_renames(flags), negated_quantities(flags)});
   if (!validation->note.empty()) fmt::print(stderr, "gearcoupling validate: note: {}\n", validation->note);
   const v1::ValidationResult& result = validation->result;

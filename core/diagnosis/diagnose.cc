@@ -9,6 +9,7 @@
 #include "core/diagnosis/delay_estimate.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
+#include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/signature_held_out.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/effects/effect_registry.h"
@@ -655,6 +656,23 @@ std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen:
   return outliers;
 }
 
+/// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
+/// its rows leave `rows` and `residual` and join the data-quality findings.
+void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                          Eigen::MatrixX2d& residual) {
+  std::vector<std::size_t> flipped;
+  for (DataQualityFinding& f : moment_polarity_flips(observations, rows, residual)) {
+    flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
+    out.data_quality.push_back(std::move(f));
+  }
+  if (flipped.empty()) return;
+  std::sort(flipped.begin(), flipped.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(flipped.begin(), flipped.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+}
+
 /// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
 /// when the claim is a formula, those a fresh formula can take over (the claim becomes that formula).
 /// Refinements of the given model's effects are refined again later, never removed.
@@ -728,7 +746,12 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
     require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
   }
-  const std::vector<std::size_t> ordered = time_ordered(observations);
+  const DataQuality quality = check_data_quality(observations, settings.data_quality);
+  out.data_quality = quality.findings;
+  std::vector<std::size_t> ordered = time_ordered(observations);
+  std::erase_if(ordered, [&](std::size_t r) {
+    return std::binary_search(quality.excluded_rows.begin(), quality.excluded_rows.end(), r);
+  });
   const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
   out.excluded_rows = first.failed_rows;
   out.exclusion_reason = first.first_failure;
@@ -736,6 +759,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
   // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
+  exclude_moment_flips(out, observations, rows, residual);
   out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
@@ -750,10 +774,15 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       blocked_folds(search.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
                     settings.cross_validation.fold_seed),
       test_block_rows(estimate_noise(residual), rows.size(), search.size(), settings));
+  if (auto spikes = spike_finding(out.outlier_rows, observations, settings.outlier_deviations)) {
+    out.data_quality.push_back(std::move(*spikes));
+  }
+  out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
+  out.summary = data_quality_text(out.data_quality);
   if (!out.outlier_rows.empty()) {
-    out.summary = std::to_string(out.outlier_rows.size()) + " of " + std::to_string(out.rows) +
-                  " samples excluded as outliers (more than " + short_number(settings.outlier_deviations) +
-                  " robust deviations from the running median of their neighbours).";
+    out.summary += (out.summary.empty() ? "" : "\n") + std::to_string(out.outlier_rows.size()) + " of " +
+                   std::to_string(out.rows) + " samples excluded as outliers (more than " +
+                   short_number(settings.outlier_deviations) + " robust deviations from the running median of their neighbours).";
   }
   CouplingModel current = model;
   std::set<std::string> partly;  // effects added by a round that said they explain only partly

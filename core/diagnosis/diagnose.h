@@ -20,6 +20,7 @@
 #include "core/coupling_model.h"
 #include "core/effects/effect_registry.h"
 #include "core/diagnosis/candidate_score.h"
+#include "core/diagnosis/data_quality.h"
 #include "core/diagnosis/formula_search.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/recorded_sample.h"
@@ -45,6 +46,8 @@ struct DiagnosisSettings {
   /// Physics still goes first where the formula's lead is a second mechanism the effect leaves.
   double formula_over_effect_t = 3.0;
   double formula_over_effect_gain = 1.0;
+  /// The data-quality stage before the physics (data_quality.h).
+  DataQualitySettings data_quality;
   /// Samples more than this many robust deviations from their running median are outliers,
   /// excluded and counted (core/diagnosis/noise_estimate.h).
   double outlier_deviations = 7.0;
@@ -148,6 +151,11 @@ struct Diagnosis {
   std::vector<std::size_t> excluded_rows; ///< rows the base model cannot predict
   std::string exclusion_reason;           ///< the model's message for the first of them
   std::vector<std::size_t> outlier_rows;  ///< rows excluded as outliers (spikes)
+  /// Instrument artefacts found before the physics (data_quality.h), spikes last; the physics is
+  /// diagnosed on the rows none of them excludes.
+  std::vector<DataQualityFinding> data_quality;
+  /// Every row left out (artefacts, refusals, spikes) as stretches with their reason.
+  std::vector<ExcludedRange> excluded_ranges;
   std::size_t search_rows = 0;
   std::size_t refit_rows = 0;
   std::string summary;                    ///< the verdicts, one line per round

@@ -192,11 +192,20 @@ EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& resul
   return fit;
 }
 
-std::string hold_note(const EffectProblem& problem, const Unidentifiable& u) {
-  if (u.partner < 0) return "no influence on these rows at the fitted values; held";
+std::string hold_note(const EffectProblem& problem, const Unidentifiable& u, bool refinement) {
+  if (u.partner < 0) return refinement ? "no influence on these rows; held at the model's value" : "no influence on these rows at the fitted values; held";
   const std::string& partner = problem.box.info().parameters[static_cast<std::size_t>(u.partner)].name;
   return "not separable from " + partner + " on this data (Jacobian columns correlated, |r| = " +
-         std::to_string(u.correlation).substr(0, 6) + "); held at its default";
+         std::to_string(u.correlation).substr(0, 6) + "); held at " + (refinement ? "the model's value" : "its default");
+}
+
+/// Where a parameter the data cannot determine is held (unit box): a refinement keeps the model's
+/// own value (a small coupling's T_ref of 120 kN·m, not the library's 1.5 MN·m, which the
+/// refined effect would carry into --add and --write-model), an addition takes the default; a
+/// parameter of no influence in an addition keeps its fitted value.
+double held_unit_value(const EffectProblem& problem, const Unidentifiable& u, const Effect* current) {
+  if (current) return problem.box.to_unit(u.parameter, current->values()[static_cast<std::size_t>(u.parameter)]);
+  return u.partner >= 0 ? problem.box.defaults()(u.parameter) : problem.full(u.parameter);
 }
 
 /// A parameter that ends on the edge of the plausible box, where the box is not yet the physical
@@ -284,8 +293,8 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
     const auto u = find_unidentifiable(full_jacobian(problem, best->jacobian), problem.free);
     if (!u) break;
     problem.free[static_cast<std::size_t>(u->parameter)] = false;
-    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u);
-    if (u->partner >= 0) problem.full(u->parameter) = problem.box.defaults()(u->parameter);
+    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u, current != nullptr);
+    problem.full(u->parameter) = held_unit_value(problem, *u, current);
     if (std::count(problem.free.begin(), problem.free.end(), true) == 0) break;
     best = problem.solve_and_polish(problem.full, settings.least_squares);
     evaluations += best->evaluations;

@@ -9,6 +9,8 @@ namespace {
 constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of most noise we meet
 constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean square says little
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
+constexpr std::size_t kLongestSpike = 2;  ///< samples in a spike at most, and the rows that keep spikes apart
+constexpr double kNeighbourShare = 0.5;  ///< of the threshold: a neighbour this far out makes a flagged sample part of structure
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -100,6 +102,28 @@ ChannelNoise channel_noise(const Eigen::VectorXd& r, bool as_noise) {
   return {std::sqrt(std::max(best.sigma2, 0.0)), best.phi, 1.0};
 }
 
+/// The flagged positions that are isolated: flagged samples within kLongestSpike rows of each other
+/// form a group, and a group of at most kLongestSpike samples with no other large deviation within
+/// kLongestSpike rows is a spike. Anything else is structure, kept for the physics: a lightly damped
+/// resonance ringing after each torque step lost 14 rows in a row as "outliers"; one that alternates
+/// in sign has every other sample flagged against the running median, and the peaks of its decaying
+/// tail stand alone above the threshold with their neighbours just below it.
+std::vector<std::size_t> isolated(const std::vector<bool>& flagged, const std::vector<bool>& large) {
+  std::vector<std::size_t> positions, out;
+  for (std::size_t i = 0; i < flagged.size(); ++i) if (flagged[i]) positions.push_back(i);
+  for (std::size_t start = 0; start < positions.size();) {
+    std::size_t end = start + 1;
+    while (end < positions.size() && positions[end] - positions[end - 1] <= kLongestSpike) ++end;
+    const std::size_t from = positions[start] >= kLongestSpike ? positions[start] - kLongestSpike : 0;
+    const std::size_t to = std::min(flagged.size(), positions[end - 1] + kLongestSpike + 1);
+    bool alone = end - start <= kLongestSpike;
+    for (std::size_t i = from; i < to && alone; ++i) alone = flagged[i] || !large[i];
+    if (alone) out.insert(out.end(), positions.begin() + static_cast<std::ptrdiff_t>(start), positions.begin() + static_cast<std::ptrdiff_t>(end));
+    start = end;
+  }
+  return out;
+}
+
 }  // namespace
 
 double NoiseEstimate::variance_inflation() const {
@@ -120,9 +144,10 @@ NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise) {
 
 std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, double k) {
   const Eigen::Index n = residual.rows();
-  std::vector<bool> flagged(static_cast<std::size_t>(n), false);
   if (n < 2 * kMedianHalf + 1) return {};
-  for (int c = 0; c < 2; ++c) {
+  std::vector<std::size_t> out;
+  for (int c = 0; c < 2; ++c) {  // isolation is judged on the channel that spiked
+    std::vector<bool> flagged(static_cast<std::size_t>(n), false), large(static_cast<std::size_t>(n), false);
     Eigen::VectorXd deviation(n);
     for (Eigen::Index i = 0; i < n; ++i) {
       const Eigen::Index from = std::max<Eigen::Index>(0, i - kMedianHalf);
@@ -135,11 +160,14 @@ std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, dou
     const double scale = 1.4826 * median(magnitudes);
     if (scale <= 0.0) continue;
     for (Eigen::Index i = 0; i < n; ++i) {
-      if (std::abs(deviation(i)) > k * scale) flagged[static_cast<std::size_t>(i)] = true;
+      flagged[static_cast<std::size_t>(i)] = std::abs(deviation(i)) > k * scale;
+      large[static_cast<std::size_t>(i)] = std::abs(deviation(i)) > kNeighbourShare * k * scale;
     }
+    const std::vector<std::size_t> spikes = isolated(flagged, large);
+    out.insert(out.end(), spikes.begin(), spikes.end());
   }
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < flagged.size(); ++i) if (flagged[i]) out.push_back(i);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

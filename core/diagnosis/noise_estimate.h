@@ -16,7 +16,10 @@
 //
 // Outliers: samples that stand out of the running median of their 7 neighbours in time by more than
 // 7 times the robust scale of such deviations. A running median keeps steps (an effect that flips
-// with the direction of travel) and follows smooth structure, so only isolated spikes qualify.
+// with the direction of travel) and follows smooth structure; and only isolated spikes qualify:
+// flagged samples within 2 rows of each other form a group, and a group of more than 2, or one with
+// a deviation of half the threshold within 2 rows, is structure (a resonance ringing after a torque
+// step), never outliers.
 #pragma once
 
 #include <cmath>
@@ -53,7 +56,8 @@ struct NoiseEstimate {
 NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise = false);
 
 /// Positions (into the rows of `residual`, in time order) of samples more than `k` robust
-/// deviations from the running median of their neighbours, on either channel.
+/// deviations from the running median of their neighbours, on either channel, that are isolated: at most 2 flagged within 2 rows of each other, and no
+/// deviation of half the threshold within 2 rows of them.
 std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, double k = 7.0);
 
 /// Both channels' mean square over the rows [N·m²].

@@ -1,6 +1,7 @@
 // diagnose and validate --add run as a user runs them, on the bundled recordings
 // (data/recordings/make_recordings.sh): find the hidden effect, write the model with it, and
 // watch the error fall to the noise.
+#include <algorithm>
 #include <cstdio>
 #include <numbers>
 
@@ -217,6 +218,115 @@ TEST(DiagnoseCli, ProposesTheFormulaForTheBundledLoadingFrictionAndItValidatesAt
       {"validate", "--data", recording, "--model", "paper", "--add", "expression=travel_sign_along_w=1"});
   EXPECT_EQ(unknown_term.exit_code, 2);
   EXPECT_NE(unknown_term.err.find("effects.expression.travel_sign_along_w"), std::string::npos) << unknown_term.err;
+}
+
+}  // namespace
+}  // namespace gc::cli::testing
+
+namespace gc::cli::testing {
+namespace {
+
+/// `text` written to a file in the test's temporary directory; its path.
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  EXPECT_TRUE(out);
+  std::fputs(text.c_str(), out);
+  std::fclose(out);
+  return path;
+}
+
+/// The bundled hidden-eccentricity recording with the torque negated from data row `from` on.
+std::string torque_negated_from(std::size_t from) {
+  std::FILE* in = std::fopen(kHidden.c_str(), "r");
+  EXPECT_TRUE(in);
+  std::string text;
+  char line[4096];
+  for (std::size_t n = 0; std::fgets(line, sizeof line, in); ++n) {
+    std::string row = line;
+    const std::size_t comma = row.find(',');
+    if (n >= from + 1) row.insert(comma + 1, "-");  // torque is the second column
+    text += row;
+  }
+  std::fclose(in);
+  return write_temp("negative_torque.csv", text);
+}
+
+TEST(DiagnoseCli, ATorqueTurningNegativePartwayIsCountedAndAdvisedNotCalledNoise) {
+  const std::string path = torque_negated_from(600);
+  const auto result = parse<gearcoupling::v1::DiagnosisResult>(
+      run_gearcoupling({"diagnose", "--data", path, "--model", "paper", "--json"}));
+  EXPECT_EQ(result.refused_rows(), 400u);
+  bool found = false;
+  for (const auto& f : result.data_quality()) {
+    if (f.kind() != "polarity_flip" || f.channel() != "torque") continue;
+    found = true;
+    EXPECT_EQ(f.rows(), 400u);
+    EXPECT_EQ(f.first_row(), 600u);
+    EXPECT_EQ(f.last_row(), 999u);
+    EXPECT_TRUE(f.excluded());
+    EXPECT_NE(f.detail().find("400 of 1000 rows"), std::string::npos) << f.detail();
+    EXPECT_NE(f.detail().find("--negate torque"), std::string::npos) << f.detail();
+  }
+  EXPECT_TRUE(found);
+  ASSERT_EQ(result.excluded_ranges_size(), 1);
+  EXPECT_EQ(result.excluded_ranges(0).span().first_row(), 600u);
+  EXPECT_EQ(result.excluded_ranges(0).span().last_row(), 999u);
+  EXPECT_NE(result.excluded_ranges(0).reason().find("polarity_flip torque"), std::string::npos);
+  const ProcessResult text = run_gearcoupling({"diagnose", "--data", path, "--model", "paper"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  const std::size_t paragraph = text.out.find("Data quality (before the physics):");
+  ASSERT_NE(paragraph, std::string::npos) << text.out;
+  EXPECT_LT(paragraph, text.out.find("Round 1")) << text.out;
+  EXPECT_NE(text.out.find("torque polarity_flip: the torque is negative on 400 of 1000 rows"), std::string::npos) << text.out;
+}
+
+TEST(DiagnoseCli, ToValidateLineNamesTheModelFileGivenWithSixDigitValues) {
+  std::FILE* in = std::fopen((std::string(GC_BUNDLED_RECORDINGS_DIR) + "/../models/paper.textproto").c_str(), "r");
+  ASSERT_TRUE(in);
+  std::string model_text;
+  char line[4096];
+  while (std::fgets(line, sizeof line, in)) model_text += line;
+  std::fclose(in);
+  const std::string model = write_temp("case_04.textproto", model_text);
+  const ProcessResult run = run_gearcoupling({"diagnose", "--data", kHidden, "--model", model});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string prefix = "To validate with it: gearcoupling validate --data " + kHidden + " --model " + model + " --add ";
+  const std::size_t at = run.out.find(prefix);
+  ASSERT_NE(at, std::string::npos) << run.out;
+  const std::string add = run.out.substr(at + prefix.size(), run.out.find('\n', at) - at - prefix.size());
+  // Every value (after the last '=' of each comma-separated item) has at most 6 significant digits.
+  for (std::size_t from = 0; from <= add.size();) {
+    const std::size_t comma = std::min(add.find(',', from), add.size());
+    const std::string item = add.substr(from, comma - from);
+    const std::string value = item.substr(item.rfind('=') + 1);
+    std::size_t digits = 0;
+    bool leading = true;
+    for (char c : value.substr(0, value.find_first_of("eE"))) {
+      if (c < '0' || c > '9') continue;
+      if (c != '0') leading = false;
+      if (!leading) ++digits;
+    }
+    EXPECT_LE(digits, 6u) << value << " in " << add;
+    from = comma + 1;
+  }
+  // Pasted as printed, it runs.
+  const ProcessResult pasted = run_gearcoupling({"validate", "--data", kHidden, "--model", model, "--add", add});
+  EXPECT_EQ(pasted.exit_code, 0) << pasted.err;
+}
+
+TEST(ValidateCli, ReferenceTorqueIsTheModelFilesFrictionUnlessGiven) {
+  const std::string model = write_temp(
+      "small_tref.textproto",
+      "name: \"small_tref\"\ncoupling: \"nrel_upwind\"\n"
+      "effects { name: \"friction\" parameters { name: \"mu0\" value: 0.1 } parameters { name: \"reference_torque_nm\" value: 3e5 } }\n"
+      "effects { name: \"pressure_angle_rotation\" }\neffects { name: \"self_weight\" }\n");
+  const auto defaulted = parse<gearcoupling::v1::ValidationResult>(
+      run_gearcoupling({"validate", "--data", kHidden, "--model", model, "--json"}));
+  EXPECT_DOUBLE_EQ(defaulted.reference_torque_nm(), 3e5);
+  const auto given = parse<gearcoupling::v1::ValidationResult>(
+      run_gearcoupling({"validate", "--data", kHidden, "--model", model, "--json", "--reference-torque-nm", "2e6"}));
+  EXPECT_DOUBLE_EQ(given.reference_torque_nm(), 2e6);
 }
 
 }  // namespace
