@@ -35,6 +35,7 @@ CouplingModel::CouplingModel(const CouplingDefinition& coupling,
       }
     }
     times_inputs_ = times_inputs_ || effects_[i]->times_inputs();
+    reads_history_ = reads_history_ || effects_[i]->reads_history();
   }
 }
 
@@ -48,16 +49,22 @@ InputTiming CouplingModel::input_timing(const MeasurementSample& sample) const {
   return sum;
 }
 
+ModelPrediction CouplingModel::with_history(ModelPrediction prediction, const InputHistory& history) const {
+  if (!reads_history_) return prediction;
+  for (const auto& effect : effects_) effect->adjust_outputs_in_history(history, prediction.moments);
+  return prediction;
+}
+
 ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
-  if (!times_inputs_) return predict(recording[i].input);
+  if (!times_inputs_) return with_history(predict(recording[i].input), {recording, i});
   const InputTiming timing = input_timing(recording[i].input);
-  return predict(timing.none() ? recording[i].input : timed_input(recording, i, timing));
+  return with_history(predict(timing.none() ? recording[i].input : timed_input(recording, i, timing)), {recording, i});
 }
 
 ModelPrediction CouplingModel::predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const {
-  if (!times_inputs_) return predict(sequence[i]);
+  if (!times_inputs_) return with_history(predict(sequence[i]), {sequence, i});
   const InputTiming timing = input_timing(sequence[i]);
-  return predict(timing.none() ? sequence[i] : timed_input(sequence, i, timing));
+  return with_history(predict(timing.none() ? sequence[i] : timed_input(sequence, i, timing)), {sequence, i});
 }
 
 bool CouplingModel::has_effect(const std::string& name) const {

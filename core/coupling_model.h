@@ -50,7 +50,9 @@ class CouplingModel {
 
   /// Sample i of a recording or an input sequence (time order): predict() on its inputs as the
   /// moment channels see them, taken from the sequence at the time the effects say
-  /// (core/input_timing.h, e.g. moment_delay); predict(sequence[i]) for a model without such effects.
+  /// (core/input_timing.h, e.g. moment_delay), then the outputs that depend on the inputs before
+  /// sample i (Effect::adjust_outputs_in_history, e.g. a formula's ringing terms);
+  /// predict(sequence[i]) for a model without such effects.
   ModelPrediction predict_at(std::span<const RecordedSample> recording, std::size_t i) const;
   ModelPrediction predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const;
   /// The sum of the effects' input timings at this sample.
@@ -64,6 +66,10 @@ class CouplingModel {
   double restoring_torque_nm_;
   double self_weight_moment_nm_;
   bool times_inputs_ = false;  ///< some effect times the inputs (predict_at looks them up)
+  bool reads_history_ = false;  ///< some effect's outputs depend on the inputs before the sample
+
+  /// The effects' adjust_outputs_in_history on `prediction`.
+  ModelPrediction with_history(ModelPrediction prediction, const InputHistory& history) const;
 };
 
 }  // namespace gc

@@ -739,6 +739,11 @@ const CandidateScore& DiagnosisRound::chosen() const { return formula_chosen ? *
 
 Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  if (settings.formula_settings.teeth == 0) {  // the tooth-mesh orders of the model's coupling
+    DiagnosisSettings own = settings;
+    own.formula_settings.teeth = model.geometry().teeth();
+    return diagnose(model, observations, parallel, own);
+  }
   Diagnosis out;
   out.rows = observations.size();
   // A NaN would poison every fit silently: refuse it here, naming the row.

@@ -6,6 +6,8 @@
 #include "core/diagnosis/change_point.h"
 #include "core/diagnosis/cycle_period.h"
 #include "core/diagnosis/noise_estimate.h"
+#include "core/diagnosis/ringing_estimate.h"
+#include "core/diagnosis/time_step.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
 #include "core/model_error.h"
@@ -315,23 +317,66 @@ TermDesign fast_terms(TermDesign design) {
   return out;
 }
 
-/// The columns of `offered` on `rows` (as term_design), without those the rows cannot evaluate or
-/// on which a term is zero throughout.
+/// The Nyquist frequency of `rows` [Hz]: half their typical sampling rate (infinite for one row).
+double nyquist_hz(std::span<const RecordedSample> observations, std::span<const std::size_t> rows) {
+  Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
+  const double dt = typical_time_step(t);
+  return dt > 0.0 ? 0.5 / dt : INFINITY;
+}
+
+/// Whether `term` oscillates below the Nyquist frequency on every row: an order, a cycle or a mode
+/// above it aliases onto a slower wave, which would be claimed under the wrong name (a tooth-mesh
+/// ripple at 20 Hz sampled at 25 Hz looks like a 5 Hz cycle).
+bool resolved(const ExpressionTerm& term, std::span<const RecordedSample> observations,
+              std::span<const std::size_t> rows, double nyquist) {
+  for (std::size_t r : rows) if (term.frequency_hz(observations[r].input) >= nyquist) return false;
+  return true;
+}
+
+/// The column of a term of the history (ExpressionTerm::reads_history) on `rows`: its transient over
+/// the whole recording in its own order (as CouplingModel::predict_at sees it), at those rows.
+Eigen::VectorXd history_column(const ExpressionTerm& term, std::span<const RecordedSample> observations,
+                               std::span<const std::size_t> rows) {
+  std::vector<double> times, torques;
+  for (const RecordedSample& o : observations) {
+    times.push_back(o.input.time_s);
+    torques.push_back(o.input.torque_nm);
+  }
+  const std::vector<double> r = ringing_sequence(times, torques, term.ringing);
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  const Eigen::Vector2d channel = term.history_channel();
+  Eigen::VectorXd column(2 * n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    column(k) = channel.x() * r[rows[static_cast<std::size_t>(k)]];
+    column(n + k) = channel.y() * r[rows[static_cast<std::size_t>(k)]];
+  }
+  return column;
+}
+
+/// The columns of `offered` on `rows` (as term_design), without those the rows cannot evaluate,
+/// those above the rows' Nyquist frequency, and those zero throughout.
 TermDesign design_of(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                      const Eigen::MatrixX2d& residual, const std::vector<const ExpressionTerm*>& offered) {
   TermDesign design;
   const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
+  const double nyquist = nyquist_hz(observations, rows);
   std::vector<Eigen::VectorXd> columns;
   for (const ExpressionTerm* t : offered) {
     const ExpressionTerm& term = *t;
+    if (!resolved(term, observations, rows, nyquist)) continue;
     Eigen::VectorXd column(2 * n);
     bool complete = true;
-    for (Eigen::Index k = 0; k < n && complete; ++k) {
-      const RecordedSample& o = observations[rows[static_cast<std::size_t>(k)]];
-      const SensorMoments model{o.measured.y_nm - residual(k, 0), o.measured.z_nm - residual(k, 1)};
-      const std::optional<Eigen::Vector2d> v = term.value(o.input, model);
-      complete = v.has_value();
-      if (complete) { column(k) = v->x(); column(n + k) = v->y(); }
+    if (term.reads_history()) {
+      column = history_column(term, observations, rows);
+    } else {
+      for (Eigen::Index k = 0; k < n && complete; ++k) {
+        const RecordedSample& o = observations[rows[static_cast<std::size_t>(k)]];
+        const SensorMoments model{o.measured.y_nm - residual(k, 0), o.measured.z_nm - residual(k, 1)};
+        const std::optional<Eigen::Vector2d> v = term.value(o.input, model);
+        complete = v.has_value();
+        if (complete) { column(k) = v->x(); column(n + k) = v->y(); }
+      }
     }
     if (!complete || column.norm() == 0.0) continue;
     design.terms.push_back(term.name);
@@ -381,6 +426,9 @@ std::vector<std::string> time_terms_for(std::span<const RecordedSample> observat
   if (const std::optional<double> period = dominant_cycle_period(observations, rows, residual)) terms = cycle_term_names(*period);
   if (const std::optional<double> step = dominant_step_time(observations, rows, residual)) {
     for (std::string& name : step_term_names(*step)) terms.push_back(std::move(name));
+  }
+  if (const std::optional<RingingMode> mode = dominant_ringing(observations, rows, residual)) {
+    for (std::string& name : ringing_term_names(*mode)) terms.push_back(std::move(name));
   }
   return terms;
 }
@@ -560,8 +608,9 @@ std::optional<CandidateScore> formula_candidate(std::span<const RecordedSample> 
   // Fast terms only: each channel's level over the rows is its zero drift's, for no term to take
   // (FormulaSettings::fast_terms_only).
   const Eigen::MatrixX2d residual = settings.fast_terms_only ? without_levels(given) : given;
-  TermDesign design = term_design(observations, rows, given,
-                                  settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual));
+  std::vector<std::string> extra = settings.time_terms ? *settings.time_terms : time_terms_for(observations, rows, residual);
+  for (std::string& name : mesh_term_names(settings.teeth)) extra.push_back(std::move(name));
+  TermDesign design = term_design(observations, rows, given, extra);
   if (settings.fast_terms_only) design = fast_terms(std::move(design));
   if (design.terms.empty()) return std::nullopt;
   if (settings.fast_terms_only) remove_channel_levels(design.columns);

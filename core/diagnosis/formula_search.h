@@ -39,6 +39,11 @@ struct FormulaSettings {
   /// rows dense enough to see them (time_terms_for). Unset: found on the rows the formula is
   /// searched on.
   std::optional<std::vector<std::string>> time_terms;
+  /// The coupling's tooth count N (CouplingDefinition::teeth): the tooth-mesh order N and its
+  /// sidebands N +- 1, N +- 2 are offered beside the catalogue (mesh_term_names), on rows whose
+  /// Nyquist frequency is above them (100 teeth at 12 rpm: 20 Hz, so 50 Hz rows and faster).
+  /// 0: diagnose takes the model's coupling's (formula_candidate alone offers none); negative: none.
+  int teeth = 0;
   /// Offer only terms that vary faster than a slow drift: no t, t^2, t^3, steps, temperature,
   /// cycles of 10 s and longer, or any term whose column carries a level over the rows (more than
   /// 5 % of its squares in its mean on each channel: a constant, torque on one channel; a zero
@@ -52,7 +57,9 @@ struct FormulaSettings {
   bool fast_terms_only = false;
 };
 
-/// The time_cycle and step terms of `residual` on `rows` (in time order).
+/// The time_cycle, step and ringing terms of `residual` on `rows` (in time order): the dominant cycle
+/// (cycle_period.h), change in mean (change_point.h) and mode of the rig (ringing_estimate.h), each
+/// where it stands out of the noise.
 std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                         const Eigen::MatrixX2d& residual);
 

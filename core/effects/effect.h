@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/coupling_definition.h"
+#include "core/input_history.h"
 #include "core/input_timing.h"
 #include "core/measurement_sample.h"
 #include "core/operating_point.h"
@@ -122,6 +123,12 @@ class Effect {
   virtual void adjust_outputs(const MeasurementSample& /*sample*/,
                               const ModelContext& /*context*/, const ModelState& /*state*/,
                               SensorMoments& /*moments*/) const {}
+  /// Per sample of a sequence, after every effect's adjust_outputs, on the moments at the sensors,
+  /// for an output that depends on the inputs before the sample (a mode of the rig ringing after a
+  /// change of the load): predict_at calls it, predict() of a sample alone (at steady state) does not.
+  virtual void adjust_outputs_in_history(const InputHistory& /*history*/, SensorMoments& /*moments*/) const {}
+  /// True when adjust_outputs_in_history can change the moments.
+  virtual bool reads_history() const { return false; }
   /// When the moment channels see the inputs of this sample (core/input_timing.h): a model
   /// predicting a recording takes the inputs from the recording at that time.
   virtual InputTiming input_timing(const MeasurementSample& /*sample*/) const { return {}; }

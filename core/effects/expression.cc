@@ -24,7 +24,9 @@ EffectInfo make_info(const std::vector<std::string>& terms) {
       for (const ExpressionTerm& t : expression_terms()) known += (known.empty() ? "" : ", ") + t.name;
       throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + name,
                          "unknown term; the terms are: " + known +
-                             ", and time_cycle_<P>s_<sin|cos>_on_<y|z> for a period P of 2 to 1000000 whole seconds");
+                             ", time_cycle_<P>s_<sin|cos>_on_<y|z> for a period P of 0.02 to 1000000 s, step_at_<t>s_on_<y|z>, "
+                             "[torque_]mesh_order_<N>[_plus_<j>|_minus_<j>]_<sin_on_y|...|backward_sin> for a coupling "
+                             "of N teeth (j = 1, 2), and ringing_<f_n>Hz_zeta<zeta>_on_<y|z>");
     }
     info.parameters.push_back({term->name, term->coefficient_unit, term->formula, -term->bound, term->bound, 0.0, 0.0, {}});
   }
@@ -66,6 +68,21 @@ class Expression final : public Effect {
       moments.y_nm += values()[k] * v->x();
       moments.z_nm += values()[k] * v->y();
     }
+  }
+
+  // A ringing term's transient, from the torque before the sample (its value() at a sample alone is
+  // the steady state, zero).
+  void adjust_outputs_in_history(const InputHistory& history, SensorMoments& moments) const override {
+    for (std::size_t k = 0; k < terms_.size(); ++k) {
+      if (!terms_[k]->reads_history()) continue;
+      const Eigen::Vector2d v = terms_[k]->history_value(history);
+      moments.y_nm += values()[k] * v.x();
+      moments.z_nm += values()[k] * v.y();
+    }
+  }
+
+  bool reads_history() const override {
+    return std::any_of(terms_.begin(), terms_.end(), [](const ExpressionTerm* t) { return t->reads_history(); });
   }
 
  private:

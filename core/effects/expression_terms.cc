@@ -130,7 +130,8 @@ constexpr int kGainYY = 0, kGainZZ = 1, kCrossZY = 2, kCrossYZ = 3, kSinY = 4, k
 constexpr int kForwardCos = 8, kForwardSin = 9, kBackwardCos = 10, kBackwardSin = 11;
 // The time_cycle terms: scalar kCycle, frame the same four (sin/cos on y/z) as the revolution's;
 // the shaft orders: scalar kOrder, the same frames; the steps: scalar kStep, frame on_y or on_z.
-constexpr int kCycle = -2, kOrder = -3, kStep = -4;
+// The ringing terms: scalar kRinging, frame kSinY (on M_sy') or kSinZ (on M_sz').
+constexpr int kCycle = -2, kOrder = -3, kStep = -4, kRinging = -5;
 constexpr double kShortestCycleS = 0.02, kLongestCycleS = 1e6;  // 50 Hz (a 100 Hz DAQ's Nyquist) to 11 days
 constexpr double kSlowCycleS = 10.0;  // from here on a cycle is a slow drift of the zero, below an interference
 constexpr double kLatestStepS = 1e9;  // the recording reader's time range
@@ -151,16 +152,16 @@ Eigen::Vector2d direction(int frame, const MeasurementSample& s, const SensorMom
   }
 }
 
-/// The four terms (sin and cos on each channel) of shaft order k, its amplitude scaled as
-/// `modulation` says: "order_2_sin_on_y", "torque_order_2_sin_on_y", "speed_squared_revolution_...".
-void add_order_terms(std::vector<ExpressionTerm>& terms, int k, const std::string& mechanisms,
-                     ExpressionTerm::Modulation modulation) {
+/// The eight terms of shaft order k (sin and cos on each channel, forward and backward whirls),
+/// named "<order_name>_sin_on_y" ..., their amplitude scaled as `modulation` says (a "torque_" or
+/// "speed_squared_" prefix).
+std::vector<ExpressionTerm> order_terms(int k, const std::string& order_name, const std::string& mechanisms,
+                                        ExpressionTerm::Modulation modulation) {
   using M = ExpressionTerm::Modulation;
   const std::string prefix = modulation == M::torque ? "torque_" : modulation == M::speed_squared ? "speed_squared_" : "";
   const std::string factor = modulation == M::torque ? "T " : modulation == M::speed_squared ? "n^2 " : "";
   const std::string unit = modulation == M::torque ? "N·m/N·m" : modulation == M::speed_squared ? "N·m/rpm²" : "N·m";
   const double bound = modulation == M::torque ? 1.0 : modulation == M::speed_squared ? 1e5 : 1e7;
-  const std::string order = k == 1 ? "revolution" : "order_" + std::to_string(k);
   const std::string angle = k == 1 ? "phi_rot" : std::to_string(k) + " phi_rot";
   const std::string grows = modulation == M::torque ? ", growing with torque" : "";
   const std::string c = "cos(" + angle + ")", s = "sin(" + angle + ")";
@@ -173,16 +174,27 @@ void add_order_terms(std::vector<ExpressionTerm>& terms, int k, const std::strin
       {"_forward_sin", kForwardSin, "(-" + s + ", " + c + ")"},
       {"_backward_cos", kBackwardCos, "(" + c + ", -" + s + ")"},
       {"_backward_sin", kBackwardSin, "(" + s + ", " + c + ")"}};
+  std::vector<ExpressionTerm> terms;
   for (const auto& [suffix, frame, formula] : parts) {
     const std::string where =
         frame >= kBackwardCos ? "; a moment vector turning against the shaft: a fixed load that the rotor's "
                                 "out-of-roundness modulates, or a phase counted against the turn"
         : frame >= kForwardCos ? "; a moment vector turning with the shaft: a part of the rotor"
                                : "; on one channel";
-    ExpressionTerm term{prefix + order + suffix, factor + formula, unit, bound, mechanisms + grows + where, kOrder, frame};
+    ExpressionTerm term{prefix + order_name + suffix, factor + formula, unit, bound, mechanisms + grows + where,
+                        kOrder, frame};
     term.order = k;
     term.modulation = modulation;
     terms.push_back(std::move(term));
+  }
+  return terms;
+}
+
+/// The terms of shaft order k in the catalogue: "revolution_..." for k = 1, "order_<k>_..." above.
+void add_order_terms(std::vector<ExpressionTerm>& terms, int k, const std::string& mechanisms,
+                     ExpressionTerm::Modulation modulation) {
+  for (ExpressionTerm& t : order_terms(k, k == 1 ? "revolution" : "order_" + std::to_string(k), mechanisms, modulation)) {
+    terms.push_back(std::move(t));
   }
 }
 
@@ -330,6 +342,92 @@ std::optional<ExpressionTerm> parse_step_term(std::string_view name) {
   return std::nullopt;
 }
 
+constexpr std::string_view kMeshPrefix = "mesh_order_";
+constexpr int kMostTeeth = 10000;
+
+/// The name of the mesh order of `teeth` teeth shifted by `sideband` orders: "mesh_order_56",
+/// "mesh_order_56_plus_1", "mesh_order_56_minus_2".
+std::string mesh_order_name(int teeth, int sideband) {
+  const std::string mesh = std::string(kMeshPrefix) + std::to_string(teeth);
+  if (sideband == 0) return mesh;
+  return mesh + (sideband > 0 ? "_plus_" : "_minus_") + std::to_string(std::abs(sideband));
+}
+
+/// What a term at the mesh order (sideband 0) or beside it usually means.
+std::string mesh_mechanisms(int teeth, int sideband) {
+  if (sideband == 0) {
+    return "the tooth-mesh order (N = " + std::to_string(teeth) +
+           " teeth, once per tooth pass): tooth-mesh excitation, spacing (pitch) errors between the teeth, or a "
+           "tooth-to-tooth stiffness variation as the teeth take and give up the load";
+  }
+  const std::string times = std::abs(sideband) == 1 ? "once" : "twice";
+  return "a sideband of the tooth-mesh order (N " + std::string(sideband > 0 ? "+ " : "- ") +
+         std::to_string(std::abs(sideband)) + " = " + std::to_string(teeth + sideband) + "): the mesh modulated " + times +
+         " per revolution, by a runout or eccentricity of the hub or sleeve (an oval one at 2) that loads the teeth "
+         "unevenly around the turn";
+}
+
+/// The mesh term `name` stands for, or nullopt: "[torque_]mesh_order_<N>[_plus_<j>|_minus_<j>]_<part>".
+std::optional<ExpressionTerm> parse_mesh_term(std::string_view name) {
+  using M = ExpressionTerm::Modulation;
+  const bool scaled = name.substr(0, 7) == "torque_";
+  std::string_view rest = scaled ? name.substr(7) : name;
+  if (rest.substr(0, kMeshPrefix.size()) != kMeshPrefix) return std::nullopt;
+  rest.remove_prefix(kMeshPrefix.size());
+  int teeth = 0;
+  const auto [end, error] = std::from_chars(rest.data(), rest.data() + rest.size(), teeth);
+  if (error != std::errc() || teeth < 1 + kMeshSidebands || teeth > kMostTeeth) return std::nullopt;
+  for (int sideband = -kMeshSidebands; sideband <= kMeshSidebands; ++sideband) {
+    for (ExpressionTerm& term : order_terms(teeth + sideband, mesh_order_name(teeth, sideband),
+                                            mesh_mechanisms(teeth, sideband), scaled ? M::torque : M::none)) {
+      if (term.name == name) return std::move(term);
+    }
+  }
+  return std::nullopt;
+}
+
+constexpr std::string_view kRingingPrefix = "ringing_";
+constexpr double kHighestRingingHz = 1e4;
+
+ExpressionTerm ringing_term(const RingingMode& mode, int frame) {
+  const std::string f = number_text(mode.natural_frequency_hz), zeta = number_text(mode.damping_ratio);
+  const bool y = frame == kSinY;
+  ExpressionTerm term{std::string(kRingingPrefix) + f + "Hz_zeta" + zeta + (y ? "_on_y" : "_on_z"),
+                      "(h * T - T) on " + std::string(y ? "M_sy'" : "M_sz'") + ", h the second-order response of f_n = " +
+                          f + " Hz, zeta = " + zeta,
+                      "N·m/N·m", 1.0,
+                      "the rig ringing after a change of the load, at " + f + " Hz with a damping ratio of " + zeta +
+                          ": a structural resonance of the rig excited by load changes, a stiff-shaft mode, or the "
+                          "dynamometer's torsional mode; filter the moment channels below it, or model the rig's "
+                          "dynamics; on one channel",
+                      kRinging, frame};
+  term.ringing = mode;
+  return term;
+}
+
+/// The ringing term `name` stands for, or nullopt: "ringing_<f_n>Hz_zeta<zeta>_on_<y|z>".
+std::optional<ExpressionTerm> parse_ringing_term(std::string_view name) {
+  if (name.substr(0, kRingingPrefix.size()) != kRingingPrefix) return std::nullopt;
+  name.remove_prefix(kRingingPrefix.size());
+  std::string_view rest;
+  const std::optional<double> f = leading_number(name, rest);
+  if (!f || !(*f > 0.0) || *f > kHighestRingingHz || rest.substr(0, 7) != "Hz_zeta") return std::nullopt;
+  rest.remove_prefix(7);
+  std::string_view suffix;
+  const std::optional<double> zeta = leading_number(rest, suffix);
+  if (!zeta || !(*zeta > 0.0) || !(*zeta < 1.0)) return std::nullopt;
+  if (suffix == "_on_y") return ringing_term({*f, *zeta}, kSinY);
+  if (suffix == "_on_z") return ringing_term({*f, *zeta}, kSinZ);
+  return std::nullopt;
+}
+
+/// `value` rounded to 3 significant digits: a mode's frequency and damping are known to a few %.
+double three_digits(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return std::stod(buffer);
+}
+
 }  // namespace
 
 std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sample, const SensorMoments& model) const {
@@ -339,6 +437,7 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
     return *s * direction(frame, sample, model);
   }
   if (scalar == kCycle) return harmonic(frame, 2.0 * std::numbers::pi * sample.time_s / period_s);
+  if (scalar == kRinging) return Eigen::Vector2d::Zero();
   if (scalar == kStep) {
     const double on = sample.time_s >= step_time_s ? 1.0 : 0.0;
     return frame == kSinY ? Eigen::Vector2d(on, 0.0) : Eigen::Vector2d(0.0, on);
@@ -362,6 +461,23 @@ std::optional<Eigen::Vector2d> ExpressionTerm::value(const MeasurementSample& sa
   return wave;
 }
 
+Eigen::Vector2d ExpressionTerm::history_value(const InputHistory& history) const {
+  if (!reads_history()) return Eigen::Vector2d::Zero();
+  return torque_ringing_at(history, ringing) * history_channel();
+}
+
+Eigen::Vector2d ExpressionTerm::history_channel() const {
+  if (!reads_history()) return Eigen::Vector2d::Zero();
+  return frame == kSinY ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0);
+}
+
+double ExpressionTerm::frequency_hz(const MeasurementSample& sample) const {
+  if (scalar == kCycle) return 1.0 / period_s;
+  if (scalar == kRinging) return ringing.natural_frequency_hz;
+  if (scalar == kOrder && sample.speed_rpm) return order * std::abs(*sample.speed_rpm) / 60.0;
+  return 0.0;
+}
+
 const std::vector<ExpressionTerm>& expression_terms() {
   static const std::vector<ExpressionTerm> terms = make_terms();
   return terms;
@@ -369,14 +485,17 @@ const std::vector<ExpressionTerm>& expression_terms() {
 
 const ExpressionTerm* find_expression_term(std::string_view name) {
   for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return &t;
-  std::optional<ExpressionTerm> cycle = parse_cycle_term(name);
-  if (!cycle) cycle = parse_step_term(name);
-  if (!cycle) return nullptr;
+  // Terms made for a value in their name: a period, a time, a tooth count, a mode.
+  std::optional<ExpressionTerm> term = parse_cycle_term(name);
+  if (!term) term = parse_step_term(name);
+  if (!term) term = parse_mesh_term(name);
+  if (!term) term = parse_ringing_term(name);
+  if (!term) return nullptr;
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<const ExpressionTerm>, std::less<>> made;
   std::lock_guard lock(mutex);
-  auto& slot = made[cycle->name];
-  if (!slot) slot = std::make_unique<const ExpressionTerm>(std::move(*cycle));
+  auto& slot = made[term->name];
+  if (!slot) slot = std::make_unique<const ExpressionTerm>(std::move(*term));
   return slot.get();
 }
 
@@ -390,6 +509,25 @@ std::vector<std::string> cycle_term_names(double period_s) {
 std::vector<std::string> step_term_names(double time_s) {
   const double t = std::stod(number_text(std::clamp(time_s, -kLatestStepS, kLatestStepS)));
   return {step_term(t, kSinY).name, step_term(t, kSinZ).name};
+}
+
+std::vector<std::string> mesh_term_names(int teeth) {
+  std::vector<std::string> names;
+  if (teeth < 1 + kMeshSidebands || teeth > kMostTeeth) return names;
+  for (const ExpressionTerm::Modulation m : {ExpressionTerm::Modulation::none, ExpressionTerm::Modulation::torque}) {
+    for (int sideband = -kMeshSidebands; sideband <= kMeshSidebands; ++sideband) {
+      for (const ExpressionTerm& t : order_terms(teeth + sideband, mesh_order_name(teeth, sideband), "", m)) {
+        names.push_back(t.name);
+      }
+    }
+  }
+  return names;
+}
+
+std::vector<std::string> ringing_term_names(const RingingMode& mode) {
+  const RingingMode written{three_digits(std::clamp(mode.natural_frequency_hz, 1e-3, kHighestRingingHz)),
+                            three_digits(std::clamp(mode.damping_ratio, 1e-3, 0.99))};
+  return {ringing_term(written, kSinY).name, ringing_term(written, kSinZ).name};
 }
 
 }  // namespace gc
