@@ -328,10 +328,22 @@ double nyquist_hz(std::span<const RecordedSample> observations, std::span<const 
 /// Whether `term` oscillates below the Nyquist frequency on every row: an order, a cycle or a mode
 /// above it aliases onto a slower wave, which would be claimed under the wrong name (a tooth-mesh
 /// ripple at 20 Hz sampled at 25 Hz looks like a 5 Hz cycle).
+/// Also whether a periodic term (an order, a cycle) turns at least kLeastCycles times over the rows:
+/// fewer, and it is a slow curve that a drift or a wandering noise fits as well (twice per
+/// revolution over 2.6 s at 10 rpm is less than one cycle, and took a random walk's wander for
+/// "an oval sleeve"). A ringing mode decays after each step and is judged by its own test.
+constexpr double kLeastCycles = 4.0;
+
 bool resolved(const ExpressionTerm& term, std::span<const RecordedSample> observations,
               std::span<const std::size_t> rows, double nyquist) {
-  for (std::size_t r : rows) if (term.frequency_hz(observations[r].input) >= nyquist) return false;
-  return true;
+  double cycles = 0.0;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const double f = term.frequency_hz(observations[rows[k]].input);
+    if (f >= nyquist) return false;
+    if (k > 0) cycles += f * (observations[rows[k]].input.time_s - observations[rows[k - 1]].input.time_s);
+  }
+  const bool periodic = term.period_s > 0.0 || term.order > 0;
+  return !periodic || cycles >= kLeastCycles;
 }
 
 /// The column of a term of the history (ExpressionTerm::reads_history) on `rows`: its transient over
