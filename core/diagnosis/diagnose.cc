@@ -11,6 +11,7 @@
 #include "core/diagnosis/noise_estimate.h"
 #include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/signature_held_out.h"
+#include "core/diagnosis/slow_wander.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/diagnosis/whole_fifths.h"
 #include "core/effects/effect_registry.h"
@@ -401,13 +402,15 @@ std::size_t test_rows_per_block(const Folds& folds) {
                           : 2;
 }
 
-/// Whether the candidate, fitted on four contiguous fifths of the search rows and judged on the
+/// Whether the candidate's correction stands out of the wander it leaves when it is slow
+/// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
 /// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
 /// a swap (CandidateScore::replaces) refits what earlier rounds claimed and is not tested again.
 bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::span<const RecordedSample> observations,
                     const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base, const Folds& fifths,
                     const ParallelFor& parallel, const DiagnosisSettings& settings) {
   if (!c.fit || !c.fit->effect || !c.replaces.empty() || !c.fit->effect->members().empty()) return true;
+  if (!stands_out_of_wander(base - c.held_out_residual, c.held_out_residual)) return false;
   const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
   if (!registration) return true;
   const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
@@ -439,7 +442,8 @@ void demote_what_does_not_carry(std::vector<CandidateScore>& ranking, const Coup
         effect_carries(front, model, observations, search, base, fifths, parallel, settings)) {
       return;
     }
-    front.failure = "does not carry to a fifth of the recording it was not fitted on";
+    front.failure = "as slow as the noise's wander and not out of it, or does not carry to a fifth of the recording "
+                    "it was not fitted on";
     std::rotate(ranking.begin(), ranking.begin() + 1, ranking.end());
   }
 }

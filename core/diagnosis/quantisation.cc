@@ -10,6 +10,8 @@ namespace {
 
 constexpr double kWholeShare = 0.9;   ///< of the gaps that must be whole multiples of the step
 constexpr double kStepTolerance = 0.02;  ///< of a step: the printed values' rounding
+constexpr double kLeastLevels = 8.0;     ///< steps a channel's range spans before it is called a grid
+constexpr double kMostStepShare = 4.0;   ///< of the noise: a coarser "grid" is set points
 
 bool whole_multiples(const std::vector<double>& gaps, double step) {
   std::size_t whole = 0;
@@ -44,6 +46,13 @@ std::optional<DataQualityFinding> coarse_quantisation(const RecordedChannel& cha
   const std::optional<double> step = quantisation_step(channel.values);
   const double sigma = difference_sigma(channel.values);
   if (!step || !(sigma > 0.0) || *step < settings.coarse_step_share * sigma) return std::nullopt;
+  // A grid spans many levels; a few set points held without noise (moments 10 kN·m apart at three
+  // torques) are levels, not an ADC's steps.
+  const auto [low, high] = std::minmax_element(channel.values.begin(), channel.values.end());
+  if (*high - *low < kLeastLevels * *step) return std::nullopt;
+  // A step many times the noise is set points held without noise (a moment of -0.1 T at each torque
+  // of a staircase), not a converter's grid, which the noise dithers across a few steps.
+  if (*step > kMostStepShare * sigma) return std::nullopt;
   const double rounding = *step / std::sqrt(12.0);
   DataQualityFinding finding{DataQualityKind::quantisation, channel.name, {}, {}, false, ""};
   finding.detail = "values on a grid of " + engineering_text(*step, channel.unit) + " (the ADC step), " +
