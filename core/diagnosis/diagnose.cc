@@ -7,15 +7,18 @@
 
 #include "core/diagnosis/claim_review.h"
 #include "core/diagnosis/delay_estimate.h"
+#include "core/diagnosis/mains_pickup.h"
 #include "core/diagnosis/model_residuals.h"
 #include "core/diagnosis/noise_estimate.h"
 #include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/signature_held_out.h"
 #include "core/diagnosis/slow_wander.h"
 #include "core/diagnosis/verdict_text.h"
+#include "core/diagnosis/time_step.h"
 #include "core/diagnosis/whole_fifths.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression.h"
+#include "core/effects/expression_terms.h"
 #include "core/effects/joint_effect.h"
 #include "core/model_error.h"
 
@@ -395,6 +398,28 @@ bool effect_explains_part(const CandidateScore& effect, const CandidateScore& fo
 std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
                             const DiagnosisSettings& settings);
 
+/// Removes from `time_terms` a cycle at the mains frequency (mains_pickup.h), direct or aliased by
+/// the rows' sample rate, and returns what the verdict says of it ("" when none).
+std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
+                                  const std::vector<std::size_t>& rows) {
+  if (rows.size() < 2) return "";
+  Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
+  const double step = typical_time_step(t);
+  const double duration = t(t.size() - 1) - t(0);
+  if (!(step > 0.0) || !(duration > 0.0)) return "";
+  std::string text;
+  std::erase_if(time_terms, [&](const std::string& name) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (!term || !(term->period_s > 0.0)) return false;
+    const double f = 1.0 / term->period_s;
+    const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
+    if (mains && text.empty()) text = mains_pickup_text(f, *mains);
+    return mains.has_value();
+  });
+  return text;
+}
+
 /// The paired tests' block length of `folds` [rows].
 std::size_t test_rows_per_block(const Folds& folds) {
   return folds.blocks > 0 ? (folds.block_of.size() + static_cast<std::size_t>(folds.blocks) - 1) /
@@ -472,6 +497,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   // interference that no input shows hides from the signature, and from a variogram, which takes
   // a cycle of a few samples for correlated noise.
   round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows));
+  round.mains_pickup = take_out_mains_cycles(round.time_terms, observations, signature_rows);
   round.systematic = is_systematic(all_ms, round.noise.mean_square(), rows.size(), round.noise, round.signature) ||
                      !round.time_terms.empty();
   // Where no input shows structure, the residual's own scale, correlation and tails are the noise's

@@ -141,6 +141,8 @@ struct DiagnosisRound {
   std::string verdict;                     ///< plain language
   /// The time_cycle and step terms the formula stage is offered this round, found on the refit rows.
   std::vector<std::string> time_terms;
+  /// A cycle at the mains frequency found and not offered (mains_pickup.h): what the verdict says.
+  std::string mains_pickup;
 };
 
 struct Diagnosis {

@@ -142,7 +142,14 @@ std::string fitted_parameters_text(const EffectFit& fit) {
   return text;
 }
 
+std::string round_verdict_body(int number, const DiagnosisRound& round);
+
 std::string round_verdict(int number, const DiagnosisRound& round) {
+  const std::string body = round_verdict_body(number, round);
+  return round.mains_pickup.empty() ? body : body + " Besides: " + round.mains_pickup + ".";
+}
+
+std::string round_verdict_body(int number, const DiagnosisRound& round) {
   std::string model;
   for (const std::string& e : round.model_effects) model += (model.empty() ? "" : ", ") + e;
   const std::string head = "Round " + std::to_string(number) + " (model: " + (model.empty() ? "no effects" : model) + "): ";

@@ -1,0 +1,21 @@
+// A cycle at the mains frequency is the instrument's, not the coupling's: the bridges and their
+// cables pick up 50 or 60 Hz (and its harmonics) from the test cell's drives, and a DAQ that samples
+// slower than that sees it aliased to a lower frequency. Reported as a data-quality finding, never
+// offered to the physics: a noise zoo's mains pickup with a wandering frequency was claimed as a
+// "time cycle of 0.0200218 s" with two shaft-order terms beside it.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace gc {
+
+/// The mains frequency (50 or 60 Hz, or its 2nd or 3rd harmonic) that a cycle of `frequency_hz`
+/// seen at `sample_rate_hz` is, directly or aliased, within `resolution_hz` (about 1 / the
+/// recording's duration) plus 0.5 % [Hz]; nullopt when none.
+std::optional<double> mains_frequency(double frequency_hz, double sample_rate_hz, double resolution_hz);
+
+/// "a cycle at 50.0 Hz (mains pickup ...)" for the verdict.
+std::string mains_pickup_text(double cycle_hz, double mains_hz);
+
+}  // namespace gc
