@@ -94,7 +94,7 @@ TEST_F(LiveTest, ASwapNamingAFileIsRefusedUnreadAndTheMonitorServesOnAlsoWhenRes
     publish_stream(attacked, samples, 50, 5000.0, 100 + 50 * restart);
     const auto health = health_.wait_for(
         "attacked", [](const HealthView& h) { return h.taken == 50 && !h.last_model_refusal.empty(); }, 10s);
-    ASSERT_TRUE(health.has_value()) << read_file(log);
+    ASSERT_TRUE(health && health->taken == 50) << read_file(log);
     EXPECT_EQ(health->last_model_refusal, refusals.front());
     EXPECT_TRUE(monitor->running()) << read_file(log);
   }
@@ -128,7 +128,8 @@ TEST_F(LiveTest, AHundredHostileSwapsLeaveTheMonitorWithinItsCeiling) {
   const std::string paper = read_file(GC_SOURCE_DIR "/data/models/paper.textproto");
   // Warm: one of each kind before the first figure.
   swaps.publish("hostile", expression_model("warm", 100000, 64));
-  ASSERT_TRUE(health_.wait_for("hostile", [](const HealthView& h) { return h.model_name == "warm"; }, 10s));
+  const auto warm = health_.wait_for("hostile", [](const HealthView& h) { return h.model_name == "warm"; }, 10s);
+  ASSERT_TRUE(warm && warm->model_name == "warm") << read_file(log);
   const long before_kb = resident_kb(monitor->pid());
 
   for (int i = 0; i < 100; ++i) {
@@ -158,11 +159,12 @@ TEST_F(LiveTest, AHundredHostileSwapsLeaveTheMonitorWithinItsCeiling) {
       }
       default: {
         const std::string name = "paper" + marker;
-        swaps.publish("hostile", "name: \"" + name + "\"\n" + paper.substr(paper.find("coupling:")));
+        swaps.publish("hostile", "name: \"" + name + "\"\n" + paper.substr(paper.find("\ncoupling:") + 1));
         taken_swap = [name](const HealthView& h) { return h.model_name == name; };
       }
     }
-    ASSERT_TRUE(health_.wait_for("hostile", taken_swap, 10s).has_value()) << "swap " << i << "\n" << read_file(log);
+    const auto health = health_.wait_for("hostile", taken_swap, 10s);
+    ASSERT_TRUE(health && taken_swap(*health)) << "swap " << i << "\n" << read_file(log);
   }
   ASSERT_TRUE(monitor->running());
   const long after_kb = resident_kb(monitor->pid());
