@@ -2,6 +2,7 @@
 
 
 #include "codec/model_file.h"
+#include "codec/untrusted_model_text.h"
 #include "core/model_error.h"
 
 namespace gc::live {
@@ -17,8 +18,8 @@ CellModel from_file(codec::ModelFile file) {
 
 CellModel parse_cell_model(std::string_view text, std::string_view source_name,
                            const std::filesystem::path& catalog_dir) {
-  // No base directory: a coupling_file relative to nothing cannot be found, and says so.
-  codec::ModelFile file = codec::parse_model_text(text, source_name, catalog_dir, "/nonexistent");
+  // A swap's text comes from the network: bounded, and it names no file of this host.
+  codec::ModelFile file = codec::parse_untrusted_model_text(text, source_name, catalog_dir);
   return from_file(std::move(file));
 }
 

@@ -20,9 +20,10 @@ struct CellModel {
   std::chrono::system_clock::time_point since;   ///< when it came into force
 };
 
-/// Parses a model file's text (couplings from `catalog_dir`, coupling files refused: a swap
-/// names its coupling by catalogue name). Throws gc::InvalidInput naming the field and
-/// `source_name` for anything `validate --model` refuses.
+/// Parses a model swap's text (codec::parse_untrusted_model_text: couplings from `catalog_dir`,
+/// `coupling_file` refused without a look at the path, every size bounded). Throws
+/// gc::InvalidInput naming the field and `source_name` for anything `validate --model` refuses
+/// and anything beyond codec::ModelTextLimits.
 CellModel parse_cell_model(std::string_view text, std::string_view source_name,
                            const std::filesystem::path& catalog_dir);
 

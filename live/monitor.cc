@@ -54,6 +54,9 @@ std::size_t min_diagnosis_samples() {
   return 4 * static_cast<std::size_t>(cv.folds) * static_cast<std::size_t>(cv.blocks_per_fold);
 }
 
+/// What the audit trail keeps of a swap writer's claims (by=, source=) [bytes].
+constexpr std::size_t kMaxClaimBytes = 128;
+
 std::string hex16(std::uint64_t value) { return fmt::format("{:016x}", value); }
 
 /// The value of `key` in a swap writer's USER_DATA "by=...;source=...", "" when absent.
@@ -75,6 +78,9 @@ SwapOrigin swap_origin(dds_entity_t reader, dds_instance_handle_t publication) {
   SwapOrigin origin{user_data_value(info.user_data, "by"), user_data_value(info.user_data, "source"),
                     info.writer, ""};
   if (origin.by.empty()) origin.by = info.participant.empty() ? "unknown" : "participant " + info.participant;
+  // The writer's own claims, of any length and bytes: bounded and printable in the trail.
+  origin.by = printable(origin.by, kMaxClaimBytes);
+  origin.source = printable(origin.source, kMaxClaimBytes);
   return origin;
 }
 
@@ -217,23 +223,12 @@ Monitor::Cell* Monitor::cell(const std::string& test_cell) {
 }
 
 void Monitor::refuse_cell(const std::string& test_cell, std::size_t samples) {
-  refused_batches_ += 1;
-  refused_samples_ += samples;
-  // Once, then a summary at most once a minute: a burst of names must not flood the log.
-  const auto now = Clock::now();
-  if (refused_batches_ == 1) {
-    spdlog::warn("test cell {} refused: {} test cells are followed, the most --max-cells allows "
-                 "(a place frees when a cell is disposed after --dispose-s without samples); "
-                 "further refusals are summarised at most once a minute",
-                 test_cell, options_.max_cells);
-  } else if (now - refusals_logged_at_ >= std::chrono::minutes(1)) {
-    spdlog::warn("{} measurement batches ({} samples) of test cells beyond --max-cells {} refused "
-                 "so far, the latest of {}",
-                 refused_batches_, refused_samples_, options_.max_cells, test_cell);
-  } else {
-    return;
-  }
-  refusals_logged_at_ = now;
+  refusals_.refuse(Refusal::batch_beyond_max_cells,
+                   fmt::format("measurement batch of test cell {} refused: {} test cells are "
+                               "followed, the most --max-cells allows (a place frees when a cell "
+                               "is disposed after --dispose-s without samples)",
+                               test_cell, options_.max_cells),
+                   samples);
 }
 
 void Monitor::remember_writer(dds_entity_t reader, dds_instance_handle_t publication) {
@@ -263,17 +258,15 @@ std::vector<std::string> Monitor::partitions_of(dds_entity_t reader, dds_instanc
 }
 
 bool Monitor::from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
-                                 const std::string& test_cell, const char* what) {
+                                 const std::string& test_cell, Refusal kind, const char* what) {
   const std::vector<std::string> partitions = partitions_of(reader, publication);
   if (partitions_speak_for(partitions, test_cell)) return true;
   std::string shown;
   for (const std::string& p : partitions) shown += (shown.empty() ? "" : ", ") + p;
-  // The first 10, then every 1000th: a writer speaking for another cell must not flood the log.
-  if (refused_foreign_++ < 10 || refused_foreign_ % 1000 == 0) {
-    spdlog::warn("{} for test cell {} refused ({} so far): its writer publishes in partition(s) "
-                 "[{}], not {}{} (a test cell's data comes only from its own partition)",
-                 what, test_cell, refused_foreign_, shown, kCellPartitionPrefix, test_cell);
-  }
+  refusals_.refuse(kind, fmt::format("{} for test cell {} refused: its writer publishes in "
+                                     "partition(s) [{}], not {}{} (a test cell's data comes only "
+                                     "from its own partition)",
+                                     what, test_cell, shown, kCellPartitionPrefix, test_cell));
   return false;
 }
 
@@ -321,15 +314,17 @@ void Monitor::take_models() {
       try {
         require_test_cell_name(test_cell);
       } catch (const InvalidInput& error) {
-        spdlog::warn("model swap refused: {}", error.what());
+        refusals_.refuse(Refusal::swap_bad_name, std::string("model swap refused: ") + error.what());
         continue;
       }
       if (!from_own_partition(model_reader_.get(), swaps.info(i).publication_handle, test_cell,
-                              "model swap")) {
+                              Refusal::swap_foreign, "model swap")) {
         continue;
       }
       if (!make_room(decimations_, test_cell) || !make_room(models_, test_cell) ||
           !make_room(model_refusals_, test_cell)) {
+        refusals_.refuse(Refusal::swap_no_room,
+                         "model swap for test cell " + test_cell + " refused: no room to keep it");
         continue;
       }
       if (swap.residual_decimation > 0) decimations_[test_cell] = swap.residual_decimation;
@@ -355,15 +350,28 @@ void Monitor::take_models() {
           audit_swap(test_cell, cell, model, text, origin, written_ns);
         }
         if (cell != nullptr) cell->monitor.swap_model(std::move(model));
-      } catch (const ModelError& error) {
-        spdlog::warn("test cell {}: model swap refused: {}", test_cell, error.what());
-        if (existing != cells_.end()) {
-          existing->second->monitor.refuse_model(error.what());
-        } else {
-          model_refusals_[test_cell] = error.what();   // told when the test cell appears
-        }
+      } catch (const std::exception& error) {
+        // Whatever the text did (a ModelError, or worse: memory), the model in force stays and
+        // the monitor serves on; a restart into the same swap refuses it the same way.
+        refuse_model(test_cell, error);
       }
     }
+  }
+}
+
+void Monitor::refuse_model(const std::string& test_cell, const std::exception& error) {
+  const bool model_error = dynamic_cast<const ModelError*>(&error) != nullptr;
+  // Bounded and printable: it is shown on every dashboard (CellHealth.last_model_refusal).
+  const std::string reason =
+      printable(model_error ? error.what() : std::string("model swap for ") + test_cell +
+                                                 ": could not be loaded (" + error.what() + ")",
+                kMaxRefusalBytes);
+  refusals_.refuse(Refusal::swap_bad_model, "test cell " + test_cell + ": model swap refused: " + reason);
+  const auto existing = cells_.find(test_cell);
+  if (existing != cells_.end()) {
+    existing->second->monitor.refuse_model(reason);
+  } else {
+    model_refusals_[test_cell] = reason;   // told when the test cell appears
   }
 }
 
@@ -378,12 +386,22 @@ void Monitor::take_measurements() {
       try {
         require_test_cell_name(test_cell);
       } catch (const InvalidInput& error) {
-        spdlog::warn("measurement batch of {} samples refused: {}", batch.samples._length,
-                     error.what());
+        refusals_.refuse(Refusal::batch_bad_name,
+                         fmt::format("measurement batch of {} samples refused: {}",
+                                     batch.samples._length, error.what()),
+                         batch.samples._length);
+        continue;
+      }
+      if (batch.samples._length > kMaxBatchSamples) {
+        refusals_.refuse(Refusal::batch_oversized,
+                         fmt::format("measurement batch for test cell {} refused: {} samples, "
+                                     "allowed 0 to {} a batch",
+                                     test_cell, batch.samples._length, kMaxBatchSamples),
+                         batch.samples._length);
         continue;
       }
       if (!from_own_partition(measurement_reader_.get(), batches.info(i).publication_handle,
-                              test_cell, "measurement batch")) {
+                              test_cell, Refusal::batch_foreign, "measurement batch")) {
         continue;
       }
       Cell* followed = cell(test_cell);
@@ -450,13 +468,17 @@ void Monitor::publish_health() {
     if (worker_) learn(it->first, *it->second, health, stale);
     ++it;
   }
+  refusals_.flush();
   write_monitor_status(monitor_writer_.get(), monitor_id_, counters(), audit_);
 }
 
 MonitorCounters Monitor::counters() const {
-  return {cells_.size(), options_.max_cells, refused_batches_, refused_samples_, refused_foreign_,
-          proposals_published_, proposals_withdrawn_, diagnoses_run_, diagnoses_dropped_,
-          worker_ ? worker_->running() : std::string()};
+  MonitorCounters c{cells_.size(), options_.max_cells, refused_batches(),
+                    refusals_.samples(Refusal::batch_beyond_max_cells), refused_foreign(),
+                    proposals_published_, proposals_withdrawn_, diagnoses_run_, diagnoses_dropped_,
+                    worker_ ? worker_->running() : std::string(), {}};
+  for (std::size_t k = 0; k < kRefusalKinds; ++k) c.refusals[k] = refusals_.count(static_cast<Refusal>(k));
+  return c;
 }
 
 void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport& health,

@@ -16,6 +16,7 @@
 #include "live/cell_monitor.h"
 #include "live/diagnosis_worker.h"
 #include "live/monitor_status_wire.h"
+#include "live/refusal_log.h"
 #include "live/swap_audit.h"
 #include "protocol/dds_entity.h"
 
@@ -61,7 +62,7 @@ struct MonitorOptions {
   std::uint32_t decimation = 1;   ///< residuals: one per this many evaluated samples
   /// Test cells followed at once, besides those named in cell_models (always followed). A
   /// batch of a new test cell beyond it is refused and counted (refused_batches()), logged the
-  /// first time and then at most once a minute; a cell's place is free again once disposed
+  /// first time and then summarised at most once a second (RefusalLog); a cell's place is free again once disposed
   /// (dispose_s). A cell costs 41 kB resident (its CellMonitor: two health windows, the model
   /// in force and the one before; Cyclone's instances; docs/dashboard.md, "Bounds"), so 64, a
   /// test hall, keep the monitor within 3 MB whatever names arrive; plus, for a cell that
@@ -90,10 +91,12 @@ class Monitor {
 
   std::uint64_t monitor_id() const { return monitor_id_; }
   /// Measurement batches refused because max_cells test cells were followed.
-  std::uint64_t refused_batches() const { return refused_batches_; }
+  std::uint64_t refused_batches() const { return refusals_.count(Refusal::batch_beyond_max_cells); }
   /// Measurement batches and model swaps refused because their writer's partition is another
   /// test cell's (a cell identity speaking for a cell it is not granted).
-  std::uint64_t refused_foreign() const { return refused_foreign_; }
+  std::uint64_t refused_foreign() const {
+    return refusals_.count(Refusal::batch_foreign) + refusals_.count(Refusal::swap_foreign);
+  }
 
  private:
   struct Cell;
@@ -116,9 +119,10 @@ class Monitor {
   Cell* cell(const std::string& test_cell);
   void refuse_cell(const std::string& test_cell, std::size_t samples);
   /// Whether the writer of a sample of `reader` (its publication_handle) may speak for
-  /// `test_cell` (partitions_speak_for); logs and counts a refusal (`what`: "measurement batch").
+  /// `test_cell` (partitions_speak_for); logs and counts a refusal of `kind` (`what`:
+  /// "measurement batch").
   bool from_own_partition(dds_entity_t reader, dds_instance_handle_t publication,
-                          const std::string& test_cell, const char* what);
+                          const std::string& test_cell, Refusal kind, const char* what);
   /// The partitions of the writer of a sample of `reader` (learnt at its match, else asked now);
   /// empty when it is gone.
   std::vector<std::string> partitions_of(dds_entity_t reader, dds_instance_handle_t publication);
@@ -131,6 +135,10 @@ class Monitor {
   template <typename Map>
   bool make_room(Map& kept, const std::string& test_cell);
   CellModel model_for(const std::string& test_cell);
+  /// A swap for `test_cell` that did not load: counted, logged (rate-limited), and its reason
+  /// (printable, at most kMaxRefusalBytes) told in the cell's health; the model in force stays.
+  void refuse_model(const std::string& test_cell, const std::exception& error);
+  static constexpr std::size_t kMaxRefusalBytes = 512;
   /// The model of a swap's text, parsed once (throws InvalidInput as parse_cell_model).
   CellModel parsed_model(const std::string& text, const std::string& test_cell);
 
@@ -154,15 +162,13 @@ class Monitor {
   protocol::Entity waitset_;
   protocol::Entity outcomes_ready_;   // guard condition: the worker finished a job
   std::atomic<bool> stopping_{false};
-  std::uint64_t refused_batches_ = 0, refused_samples_ = 0, dropped_swaps_ = 0;
-  std::uint64_t refused_batches_logged_ = 0;
-  std::uint64_t refused_foreign_ = 0;
+  RefusalLog refusals_;   // every refusal counted by kind, the log rate-limited
+  std::uint64_t dropped_swaps_ = 0;
   /// Writers' partitions by publication handle (never reused by Cyclone): learnt when a writer
   /// matches (remember_writer, in Cyclone's thread), so one DDS query per writer; emptied at
   /// 4096 entries (then asked again while the writer is matched).
   std::mutex writer_partitions_mutex_;
   std::map<dds_instance_handle_t, std::vector<std::string>> writer_partitions_;
-  std::chrono::steady_clock::time_point refusals_logged_at_{};
   std::uint64_t proposals_published_ = 0, proposals_withdrawn_ = 0;
   std::uint64_t diagnoses_run_ = 0, diagnoses_dropped_ = 0;
   std::uint64_t next_generation_ = 1;

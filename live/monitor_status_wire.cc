@@ -1,5 +1,6 @@
 #include "live/monitor_status_wire.h"
 
+#include <cstdio>
 #include <vector>
 
 #include "gearcoupling.h"
@@ -21,6 +22,13 @@ gearcoupling_SwapRecord swap_wire(const SwapEntry& e) {
 
 void write_monitor_status(dds_entity_t writer, std::uint64_t monitor_id,
                           const MonitorCounters& c, const SwapAudit& audit) {
+  std::vector<gearcoupling_RefusalCount> refusals;
+  for (std::size_t k = 0; k < kRefusalKinds; ++k) {
+    gearcoupling_RefusalCount count{};
+    std::snprintf(count.kind, sizeof count.kind, "%s", refusal_kind(static_cast<Refusal>(k)));
+    count.count = c.refusals[k];
+    refusals.push_back(count);
+  }
   std::vector<gearcoupling_SwapRecord> swaps;
   for (const SwapEntry& e : audit.entries()) swaps.push_back(swap_wire(e));
   gearcoupling_MonitorStatus out{};
@@ -39,6 +47,9 @@ void write_monitor_status(dds_entity_t writer, std::uint64_t monitor_id,
   out.recent_swaps._buffer = swaps.data();
   out.recent_swaps._length = out.recent_swaps._maximum = static_cast<std::uint32_t>(swaps.size());
   out.recent_swaps._release = false;
+  out.refusals._buffer = refusals.data();
+  out.refusals._length = out.refusals._maximum = static_cast<std::uint32_t>(refusals.size());
+  out.refusals._release = false;
   protocol::check_dds(dds_write(writer, &out), "dds_write(monitor status)");
 }
 

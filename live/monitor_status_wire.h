@@ -4,9 +4,11 @@
 
 #include <dds/dds.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 
+#include "live/refusal_log.h"
 #include "live/swap_audit.h"
 
 namespace gc::live {
@@ -17,6 +19,7 @@ struct MonitorCounters {
   std::uint64_t proposals_published = 0, proposals_withdrawn = 0;
   std::uint64_t diagnoses_run = 0, diagnoses_dropped = 0;
   std::string diagnosing;   ///< the test cell being diagnosed now, "" when none
+  std::array<std::uint64_t, kRefusalKinds> refusals{};   ///< by Refusal
 };
 
 void write_monitor_status(dds_entity_t writer, std::uint64_t monitor_id,

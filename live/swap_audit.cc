@@ -14,9 +14,12 @@ const char* after_state_text(const SwapEntry& entry) {
 
 SwapAudit::SwapAudit() = default;
 
-SwapAudit::SwapAudit(const std::filesystem::path& state_dir) {
+SwapAudit::SwapAudit(const std::filesystem::path& state_dir)
+    : SwapAudit(state_dir, SwapAuditFile::kRotateBytes) {}
+
+SwapAudit::SwapAudit(const std::filesystem::path& state_dir, std::uintmax_t rotate_bytes) {
   if (state_dir.empty()) return;
-  file_ = std::make_unique<SwapAuditFile>(state_dir);
+  file_ = std::make_unique<SwapAuditFile>(state_dir, rotate_bytes);
   for (SwapEntry& entry : file_->load(kKept)) entries_.push_back(std::move(entry));
 }
 
@@ -33,8 +36,9 @@ void SwapAudit::add(SwapEntry entry) {
   // The final lines of the swaps it ends are flushed by the swap line's fdatasync: one a swap.
   if (SwapEntry* previous = latest(entry.test_cell)) freeze(*previous, false);
   if (entries_.size() == kKept) {
-    freeze(entries_.front(), false);
-    entries_.pop_front();
+    const std::size_t leaving = fair_evictee(entries_);
+    freeze(entries_[leaving], false);
+    entries_.erase(entries_.begin() + static_cast<std::ptrdiff_t>(leaving));
   }
   if (file_ && file_->append_swap(entry)) carry_followed_swaps();   // the others still followed
   entries_.push_back(std::move(entry));

@@ -1,11 +1,12 @@
 // The monitor's audit trail of model swaps: who put which model in force for which test cell,
-// when, from which proposal or file, and the error before and after. The latest kKept are kept
-// in memory (every swap is also logged) and published in the monitor's status
+// when, from which proposal or file, and the error before and after. kKept are kept in memory
+// (the latest, but each cell's latest before another cell's older ones: fair_evictee) (every swap is also logged) and published in the monitor's status
 // (live/monitor_status_wire.h); with a state directory every swap, and the after-figures it is
 // followed by, are also appended to a file there and the trail is loaded from it at start, so a
 // restart does not forget it (live/swap_audit_file.h).
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -48,6 +49,21 @@ struct SwapEntry {
 /// a kill: the figures are the last written, not complete): SwapRecord.after_state.
 const char* after_state_text(const SwapEntry& entry);
 
+/// Which of `entries` (oldest first, not empty) leaves a full trail: the oldest swap of the test
+/// cell with the most swaps in it, so that one cell's swaps, however many, never push another
+/// cell's latest out of the trail (issue 38) while it holds fewer cells than entries.
+template <typename Entries>
+std::size_t fair_evictee(const Entries& entries) {
+  std::map<std::string, std::size_t> counts;
+  for (const auto& e : entries) ++counts[e.test_cell];
+  std::size_t most = 0;
+  for (const auto& [cell, count] : counts) most = std::max(most, count);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (counts[entries[i].test_cell] == most) return i;
+  }
+  return 0;
+}
+
 class SwapAuditFile;
 
 class SwapAudit {
@@ -68,6 +84,8 @@ class SwapAudit {
   /// swaps are loaded from it (a damaged line logged and skipped). Throws InvalidInput naming
   /// "--state-dir" when the directory does not exist or its file cannot be opened.
   explicit SwapAudit(const std::filesystem::path& state_dir);
+  /// The same with the file rotated at `rotate_bytes` (SwapAuditFile::kRotateBytes but in tests).
+  SwapAudit(const std::filesystem::path& state_dir, std::uintmax_t rotate_bytes);
   ~SwapAudit();
 
   /// Records a swap for `test_cell` (and appends it to the file); the cell's earlier swap, if

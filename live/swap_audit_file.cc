@@ -32,16 +32,21 @@ std::uint64_t fnv1a64(const std::string& text) {
   return hash;
 }
 
-/// Percent-encodes what would split or end a line; "-" is the empty text.
+/// Percent-encodes what would split or end a line; "-" is the empty text. At most
+/// kMaxFieldBytes: a longer text is cut and ends in "...", so no name makes a line long.
 std::string encode(const std::string& text) {
   if (text.empty()) return "-";
+  constexpr std::size_t most = SwapAuditFile::kMaxFieldBytes;
   std::string out;
-  for (unsigned char byte : text) {
-    if (byte <= 0x20 || byte == '%' || byte == 0x7f || (byte == '-' && text.size() == 1)) {
-      out += fmt::format("%{:02X}", byte);
-    } else {
-      out += static_cast<char>(byte);
-    }
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char byte = static_cast<unsigned char>(text[i]);
+    const std::string piece =
+        byte <= 0x20 || byte == '%' || byte == 0x7f || (byte == '-' && text.size() == 1)
+            ? fmt::format("%{:02X}", byte)
+            : std::string(1, static_cast<char>(byte));
+    const bool last = i + 1 == text.size();
+    if (out.size() + piece.size() + (last ? 0 : 3) > most) return out + "...";
+    out += piece;
   }
   return out;
 }
@@ -216,6 +221,64 @@ void sync_directory(const std::filesystem::path& dir) {
   ::close(fd);
 }
 
+/// A loaded swap as the lines that load it back: its swap line (with its after-figures), and a
+/// `final` after line unless it was cut off by a kill (then it loads as interrupted again).
+std::string record_lines(const SwapEntry& e) {
+  std::string lines = audit_line(swap_record_payload(e));
+  if (!e.after_interrupted) lines += audit_line(after_record_payload(e, AfterState::final));
+  return lines;
+}
+
+/// What a rotation keeps (SwapAuditFile's top comment): per test cell its latest kKeptPerCell,
+/// cells with the most recent swap first, as long as they fit `budget` bytes; then the most
+/// recent others that fit. Oldest first.
+struct Retained {
+  std::vector<const SwapEntry*> entries;
+  std::size_t cells_kept = 0, cells_dropped = 0;
+};
+
+Retained retained(const std::vector<SwapEntry>& swaps, std::uintmax_t budget) {
+  std::map<std::string, std::vector<const SwapEntry*>> by_cell;
+  for (const SwapEntry& e : swaps) by_cell[e.test_cell].push_back(&e);
+  std::vector<std::vector<const SwapEntry*>*> cells;
+  for (auto& [cell, entries] : by_cell) {
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const SwapEntry* a, const SwapEntry* b) { return a->at < b->at; });
+    cells.push_back(&entries);
+  }
+  std::stable_sort(cells.begin(), cells.end(), [](const auto* a, const auto* b) {
+    return a->back()->at > b->back()->at;
+  });
+  Retained kept;
+  std::uintmax_t used = 0;
+  std::vector<const SwapEntry*> rest;
+  for (const auto* cell : cells) {
+    const std::size_t first = cell->size() > SwapAuditFile::kKeptPerCell
+                                  ? cell->size() - SwapAuditFile::kKeptPerCell : 0;
+    std::uintmax_t bytes = 0;
+    for (std::size_t i = first; i < cell->size(); ++i) bytes += record_lines(*(*cell)[i]).size();
+    if (used + bytes > budget) {
+      ++kept.cells_dropped;
+      continue;
+    }
+    used += bytes;
+    ++kept.cells_kept;
+    kept.entries.insert(kept.entries.end(), cell->begin() + static_cast<std::ptrdiff_t>(first), cell->end());
+    rest.insert(rest.end(), cell->begin(), cell->begin() + static_cast<std::ptrdiff_t>(first));
+  }
+  std::stable_sort(rest.begin(), rest.end(),
+                   [](const SwapEntry* a, const SwapEntry* b) { return a->at > b->at; });
+  for (const SwapEntry* e : rest) {
+    const std::size_t bytes = record_lines(*e).size();
+    if (used + bytes > budget) break;
+    used += bytes;
+    kept.entries.push_back(e);
+  }
+  std::stable_sort(kept.entries.begin(), kept.entries.end(),
+                   [](const SwapEntry* a, const SwapEntry* b) { return a->at < b->at; });
+  return kept;
+}
+
 }  // namespace
 
 std::string swap_record_payload(const SwapEntry& e) {
@@ -237,8 +300,8 @@ std::string audit_line(const std::string& payload) {
   return fmt::format("v1 {:016x} {}\n", fnv1a64(payload), payload);
 }
 
-SwapAuditFile::SwapAuditFile(std::filesystem::path state_dir)
-    : dir_(std::move(state_dir)), path_(dir_ / kFileName) {
+SwapAuditFile::SwapAuditFile(std::filesystem::path state_dir, std::uintmax_t rotate_bytes)
+    : dir_(std::move(state_dir)), path_(dir_ / kFileName), rotate_bytes_(rotate_bytes) {
   std::error_code error;
   if (!std::filesystem::is_directory(dir_, error)) {
     throw InvalidInput("--state-dir", "'" + dir_.string() + "' is not a directory (the monitor "
@@ -275,7 +338,8 @@ std::vector<SwapEntry> SwapAuditFile::load(std::size_t keep) {
   // first written in is dropped.
   std::stable_sort(swaps.begin(), swaps.end(),
                    [](const SwapEntry& a, const SwapEntry& b) { return a.at < b.at; });
-  if (swaps.size() > keep) swaps.erase(swaps.begin(), swaps.end() - static_cast<std::ptrdiff_t>(keep));
+  // As the trail in memory drops them: a cell of many swaps gives up its oldest first.
+  while (swaps.size() > keep) swaps.erase(swaps.begin() + static_cast<std::ptrdiff_t>(fair_evictee(swaps)));
   spdlog::info("swap audit {}: {} swaps loaded", path_.string(), swaps.size());
   return std::move(swaps);
 }
@@ -292,7 +356,7 @@ void SwapAuditFile::carry(const std::vector<const SwapEntry*>& followed) {
   std::string lines;
   for (const SwapEntry* entry : followed) {
     const std::string line = audit_line(swap_record_payload(*entry));
-    if (size_ + lines.size() + line.size() > kRotateBytes / 2) {
+    if (size_ + lines.size() + line.size() > rotate_bytes_ / 2) {
       spdlog::error("swap audit {}: swap {:016x} of test cell {} not carried into the new file "
                     "(its records are too long); it leaves the trail with the rotated file",
                     path_.string(), entry->id, entry->test_cell);
@@ -307,7 +371,11 @@ void SwapAuditFile::rotate() {
   ::close(fd_);
   fd_ = -1;
   std::error_code error;
-  std::filesystem::rename(path_, dir_ / kRotatedName, error);
+  if (compact_into_rotated()) {
+    std::filesystem::remove(path_, error);   // all it held worth keeping is in .1 now
+  } else {
+    std::filesystem::rename(path_, dir_ / kRotatedName, error);
+  }
   if (error) spdlog::error("swap audit {}: not rotated: {}", path_.string(), error.message());
   try {
     open_for_append();
@@ -316,9 +384,49 @@ void SwapAuditFile::rotate() {
   }
 }
 
+bool SwapAuditFile::compact_into_rotated() {
+  Loaded loaded;
+  load_file(dir_ / kRotatedName, loaded, false);
+  load_file(path_, loaded, false);
+  const auto kept = retained(loaded.swaps, rotate_bytes_);
+  std::string text;
+  for (const SwapEntry* e : kept.entries) text += record_lines(*e);
+  if (kept.cells_dropped > 0) {
+    spdlog::error("swap audit {}: rotation kept the latest {} swaps of {} test cells, not the {} "
+                  "test cells swapped longest ago: their records do not fit {} bytes",
+                  path_.string(), kKeptPerCell, kept.cells_kept, kept.cells_dropped, rotate_bytes_);
+  }
+  // Written aside and renamed over the old .1: a kill leaves the old one or the new one whole.
+  const std::filesystem::path aside = dir_ / (std::string(kRotatedName) + ".new");
+  const int fd = ::open(aside.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0640);
+  if (fd < 0) {
+    spdlog::error("swap audit {}: cannot compact ({}): rotated whole", aside.string(), std::strerror(errno));
+    return false;
+  }
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    written += static_cast<std::size_t>(n);
+  }
+  const bool whole = written == text.size() && ::fdatasync(fd) == 0;
+  ::close(fd);
+  std::error_code error;
+  if (whole) std::filesystem::rename(aside, dir_ / kRotatedName, error);
+  if (!whole || error) {
+    spdlog::error("swap audit {}: cannot compact ({}): rotated whole", aside.string(),
+                  error ? error.message() : std::string(std::strerror(errno)));
+    std::filesystem::remove(aside, error);
+    return false;
+  }
+  sync_directory(dir_);
+  return true;
+}
+
 bool SwapAuditFile::append(const std::string& payload, bool flush) {
   const std::string line = audit_line(payload);
-  const bool rotated = size_ > 0 && size_ + line.size() > kRotateBytes;
+  const bool rotated = size_ > 0 && size_ + line.size() > rotate_bytes_;
   if (rotated) rotate();
   write_out(line, flush, payload);
   return rotated;

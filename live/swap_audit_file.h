@@ -20,12 +20,19 @@
 // its figures are the last written and it is marked SwapEntry::after_interrupted. (An `after`
 // line without STATE is an older monitor's, which wrote one only at the end: final.)
 //
-// Bounded: when a record would take the file beyond kRotateBytes, it is renamed
-// swap_audit.log.1 (the previous .1 dropped) and a new one started; at most 2 kRotateBytes on
-// disk, about 8,000 swaps (fewer while test cells are followed: a followed cell's after lines
-// take about 11 kB a day). The swaps still followed are written again at the head of the new
-// file (carry()): a `swap` line whose ID is already loaded replaces that entry, so a model in
-// force for months keeps its record.
+// Bounded, and fair between test cells (issue 38, finding 3): every text field of a line is
+// cut to kMaxFieldBytes once encoded, so a line is at most kMaxLineBytes (2 KiB) whatever the
+// names. When a record would take the file beyond the rotation bound (kRotateBytes, 1 MiB), the
+// records of swap_audit.log.1 and swap_audit.log are compacted into a new swap_audit.log.1 of at
+// most the bound: first the latest kKeptPerCell (8) swaps of every test cell, cells with the most
+// recent swap first, then, in the room left, the most recent other swaps; a new file is started.
+// So the two files stay within 2 kRotateBytes (2 MiB), and one cell's swaps, however many or
+// long, never push another cell's latest 8 out: that holds for every test cell while 8 lines of
+// each fit the bound, at least 64 cells (1 MiB / (8 x 2 KiB)), about 400 cells with names of
+// ordinary length (lines of 300 bytes). Beyond that the cells swapped longest ago go whole, and
+// the rotation logs it. The swaps still followed are written again at the head of the new file
+// (carry()): a `swap` line whose ID is already loaded replaces that entry, so a model in force
+// for months keeps its record.
 #pragma once
 
 #include <cstdint>
@@ -45,15 +52,23 @@ class SwapAuditFile {
   /// 1 MiB: 4,000 swaps of 250 bytes each, years of a test hall's approvals, read in
   /// milliseconds at start.
   static constexpr std::uintmax_t kRotateBytes = 1u << 20;
+  /// A text field of a line (by, source, model names, ...) once percent-encoded, at most; and
+  /// so a whole line.
+  static constexpr std::size_t kMaxFieldBytes = 240;
+  static constexpr std::size_t kMaxLineBytes = 2048;
+  /// Swaps of each test cell a rotation keeps at least (the latest).
+  static constexpr std::size_t kKeptPerCell = 8;
 
   /// Opens (creates, 0640) `state_dir`/swap_audit.log for appending. Throws InvalidInput
   /// naming "--state-dir" when the directory does not exist or the file cannot be opened.
-  explicit SwapAuditFile(std::filesystem::path state_dir);
+  /// `rotate_bytes`: kRotateBytes but in tests.
+  explicit SwapAuditFile(std::filesystem::path state_dir, std::uintmax_t rotate_bytes = kRotateBytes);
   ~SwapAuditFile();
   SwapAuditFile(const SwapAuditFile&) = delete;
   SwapAuditFile& operator=(const SwapAuditFile&) = delete;
 
-  /// The latest `keep` swaps of swap_audit.log.1 then swap_audit.log, oldest first (by AT), each
+  /// `keep` swaps of swap_audit.log.1 then swap_audit.log (the latest, a cell of many giving up
+  /// its oldest first: fair_evictee), oldest first (by AT), each
   /// with its latest after-figures and frozen (the monitor that followed them is gone), marked
   /// after_interrupted when no `final` after line closed it. A line that
   /// does not parse is logged as an error (file, line, why) and skipped; a torn last line (no
@@ -79,14 +94,19 @@ class SwapAuditFile {
   void write_out(const std::string& lines, bool flush, const std::string& what);
   void open_for_append();
   void rotate();
+  /// The compacted records of both files into swap_audit.log.1 (see the top); false when it
+  /// could not be written (then the old file is renamed whole, as before).
+  bool compact_into_rotated();
 
   std::filesystem::path dir_, path_;
+  std::uintmax_t rotate_bytes_;
   int fd_ = -1;
   std::uintmax_t size_ = 0;
 };
 
-/// One line's payload (what follows HASH) for a swap, or for its after-figures. Exposed for the
-/// tests, which write damaged files.
+/// One line's payload (what follows HASH) for a swap, or for its after-figures; each text field
+/// at most kMaxFieldBytes encoded (cut, with "..." at its end). Exposed for the tests, which
+/// write damaged files.
 std::string swap_record_payload(const SwapEntry& entry);
 std::string after_record_payload(const SwapEntry& entry, AfterState state);
 /// `v1 HASH payload` for `payload`.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "clients/cli/model_flags.h"
+#include "codec/untrusted_model_text.h"
 #include "clients/cli/subcommand.h"
 #include "clients/status/cell_board.h"
 #include "clients/status/monitor_board.h"
@@ -79,7 +80,10 @@ SwapText file_text(const Flags& flags) {
   // Checked here first, so a typo is an error at once rather than a refusal in the health.
   const codec::ModelFile model = load_model_flag(flags);
   const std::filesystem::path path = model_flag_path(flags);
-  return {model.name, read_text(path), "file " + path.string()};
+  std::string text = read_text(path);
+  // And as the monitor will check it (no coupling_file, sizes bounded), naming the file.
+  codec::parse_untrusted_model_text(text, path.filename().string(), flags.text("catalogue"));
+  return {model.name, std::move(text), "file " + path.string()};
 }
 
 int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {

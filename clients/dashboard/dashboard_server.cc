@@ -13,7 +13,8 @@
 #include "codec/result_json.h"
 #include "dashboard_page_html.h"  // kDashboardPageHtml, generated from dashboard_page.html
 
-#include <httplib.h>  // last: its <resolv.h> defines `_res`, which Eigen's headers use
+// last: httplib's <resolv.h> defines `_res`, which Eigen's headers use
+#include "clients/dashboard/guarded_http_server.h"
 
 namespace gc::dashboard {
 namespace {
@@ -24,6 +25,8 @@ constexpr std::chrono::milliseconds kKeepAlive{2000};
 /// What a browser beyond max_streams is told to wait before it tries again [s]; EventSource
 /// reconnects by itself, after its own delay (about 3 s) when it ignores the header.
 constexpr const char* kRetryAfterSeconds = "10";
+/// Connections the kernel queues before they are accepted (SOMAXCONN's default, 4096, caps it).
+constexpr int kListenBacklog = 1024;
 
 client::ClientOptions query_client_options(const DashboardOptions& options) {
   client::ClientOptions client;
@@ -57,7 +60,9 @@ DashboardServer::DashboardServer(DashboardOptions options)
       applier_(participant_.get(), learning_, options_.operator_cells),
       query_(query_client_options(options_)),
       hub_(options_.queue_capacity, options_.max_streams, options_.queue_bytes),
-      http_(std::make_unique<httplib::Server>()) {
+      hosts_(options_.listen_host, options_.allow_hosts),
+      guard_(options_.connections),
+      http_(std::make_unique<GuardedHttpServer>(guard_)) {
   const std::size_t threads = options_.max_streams + kThreadsBesideStreams;
   http_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   // One request per connection. httplib serves a connection on one thread until it closes, so a
@@ -66,12 +71,15 @@ DashboardServer::DashboardServer(DashboardOptions options)
   // connection per request costs a dashboard (a page of three requests, a scrape every few
   // seconds) nothing measurable.
   http_->set_keep_alive_max_count(1);
+  // The only body is /api/apply's few parameters: a larger one is refused (413), not read.
+  http_->set_payload_max_length(64 * 1024);
   add_routes();
   port_ = options_.listen_port == 0 ? http_->bind_to_any_port(options_.listen_host)
                                     : (http_->bind_to_port(options_.listen_host,
                                                           options_.listen_port)
                                            ? options_.listen_port
                                            : -1);
+  if (port_ >= 0) static_cast<GuardedHttpServer&>(*http_).widen_backlog(kListenBacklog);
   if (port_ < 0) {
     throw std::runtime_error(fmt::format("--listen {}:{}: cannot listen there (in use, or not an "
                                          "address of this host)",
@@ -93,7 +101,29 @@ void DashboardServer::stop() {
   http_->stop();
 }
 
+bool DashboardServer::refuse_foreign_host(const httplib::Request& request, httplib::Response& response) {
+  const std::string host = request.get_header_value("Host");
+  const bool has_origin = request.has_header("Origin");
+  const std::string origin = request.get_header_value("Origin");
+  if (hosts_.host_allowed(host) && (!has_origin || hosts_.origin_allowed(origin))) return false;
+  guard_.count_foreign_host();
+  response.status = 403;
+  response.set_content(
+      fmt::format("{{\"error\": \"{} is not a name of this dashboard: it answers to {} "
+                  "(--allow-host adds names)\"}}",
+                  hosts_.host_allowed(host) ? "Origin" : "Host", hosts_.describe()),
+      "application/json");
+  return true;
+}
+
 void DashboardServer::add_routes() {
+  // Every route: a page of another site re-pointed at this address (DNS rebinding) names its own
+  // host; it gets nothing, neither the state nor an apply.
+  http_->set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+    GuardedHttpServer::header_read();
+    return refuse_foreign_host(request, response) ? httplib::Server::HandlerResponse::Handled
+                                                  : httplib::Server::HandlerResponse::Unhandled;
+  });
   http_->Get("/", [](const httplib::Request&, httplib::Response& response) {
     response.set_content(std::string(kDashboardPageHtml), "text/html; charset=utf-8");
   });
@@ -207,6 +237,16 @@ std::string DashboardServer::metrics() {
                                        std::pair{"refused", queries.refused},
                                        std::pair{"failed", queries.failed}}) {
     own.sample("gearcoupling_dashboard_queries_total", {{"outcome", outcome}},
+               static_cast<double>(count));
+  }
+  own.family("gearcoupling_dashboard_http_refused_total", "counter",
+             "HTTP connections and requests refused: foreign_host (a Host or Origin not of this "
+             "dashboard, --allow-host), peer_limit (a peer already sending the most requests at "
+             "once), timeout (a request not sent within its deadline).");
+  for (const auto& [reason, count] : {std::pair{"foreign_host", guard_.refused_foreign_host()},
+                                      std::pair{"peer_limit", guard_.refused_peer_limit()},
+                                      std::pair{"timeout", guard_.timeouts()}}) {
+    own.sample("gearcoupling_dashboard_http_refused_total", {{"reason", reason}},
                static_cast<double>(count));
   }
   own.family("gearcoupling_dashboard_updates_total", "counter",

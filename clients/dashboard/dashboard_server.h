@@ -13,7 +13,9 @@
 #include <thread>
 #include <vector>
 
+#include "clients/dashboard/connection_guard.h"
 #include "clients/dashboard/event_hub.h"
+#include "clients/dashboard/host_allow_list.h"
 #include "clients/dashboard/proposal_apply.h"
 #include "clients/dashboard/query_panel.h"
 #include "clients/status/cell_board.h"
@@ -23,6 +25,7 @@
 
 namespace httplib {
 class Server;
+struct Request;
 struct Response;
 }
 
@@ -54,6 +57,12 @@ struct DashboardOptions {
   /// "apply"); empty: read-only. Under DDS Security its identity must be an operator granted
   /// them (clients/dashboard/proposal_apply.h).
   std::vector<std::string> operator_cells;
+  /// Host names (besides localhost, the listen address and IP addresses) that requests may
+  /// name in Host and Origin; any other is refused 403 (DNS rebinding: host_allow_list.h).
+  std::vector<std::string> allow_hosts;
+  /// Deadlines and the per-peer count of connections still sending their request
+  /// (connection_guard.h).
+  ConnectionLimits connections;
 };
 
 class DashboardServer {
@@ -77,6 +86,8 @@ class DashboardServer {
 
  private:
   void add_routes();
+  /// 403 for a Host or Origin not of this dashboard (allow_hosts): before any route runs.
+  bool refuse_foreign_host(const httplib::Request& request, httplib::Response& response);
   /// Answers an event stream beyond max_streams: 503, Retry-After, the connection closed.
   void refuse_stream(httplib::Response& response);
   void publish_loop();
@@ -94,6 +105,8 @@ class DashboardServer {
   ProposalApplier applier_;
   QueryPanel query_;
   EventHub hub_;
+  HostAllowList hosts_;
+  ConnectionGuard guard_;
   // Behind a pointer: httplib.h includes <resolv.h>, whose `_res` macro breaks Eigen's headers
   // in any file that includes both.
   std::unique_ptr<httplib::Server> http_;

@@ -90,6 +90,16 @@ int main(int argc, char** argv) {
                  "apply button); under DDS Security its identity must be an operator granted them. "
                  "Default: none, read-only")
       ->delimiter(',');
+  app.add_option("--allow-host", options.allow_hosts,
+                 "host names the dashboard answers to in Host and Origin, besides localhost, the "
+                 "--listen address and IP addresses (the names users type, e.g. "
+                 "dyno-hall.example); any other is refused 403, which stops DNS rebinding")
+      ->delimiter(',');
+  app.add_option("--max-pending-per-peer", options.connections.max_reading_per_peer,
+                 "connections one peer (IP address) may have sending their request at once; "
+                 "beyond it 429 (each has 5 s for its whole request)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{64}))
+      ->capture_default_str();
   app.add_option("--client-id-prefix", client_id_prefix,
                  std::string("for the query panel, ") + gc::calculators::kClientIdPrefixHelp);
   try {

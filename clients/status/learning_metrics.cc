@@ -2,6 +2,9 @@
 
 #include "clients/status/prometheus_text.h"
 
+#include <map>
+#include <string>
+
 namespace gc::status {
 
 namespace {
@@ -41,6 +44,18 @@ std::string learning_metrics_text(const std::vector<Monitor>& monitors) {
     text.family(counter.name, "counter", counter.help);
     for (const Monitor& m : monitors) {
       text.sample(counter.name, {{"monitor", m.monitor_id()}}, static_cast<double>((m.*counter.value)()));
+    }
+  }
+  text.family("gearcoupling_monitor_refusals_total", "counter",
+              "Everything a monitor refused, by kind: measurement batches (bad name, oversized, "
+              "another cell's partition, beyond --max-cells) and model swaps (bad name, another "
+              "cell's partition, no room, a model that does not load).");
+  for (const Monitor& m : monitors) {
+    // Sorted by kind (a protobuf map has no order): the same text for the same counts.
+    const std::map<std::string, std::uint64_t> kinds(m.refusals().begin(), m.refusals().end());
+    for (const auto& [kind, count] : kinds) {
+      text.sample("gearcoupling_monitor_refusals_total", {{"monitor", m.monitor_id()}, {"kind", kind}},
+                  static_cast<double>(count));
     }
   }
   return text.text();

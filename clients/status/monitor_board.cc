@@ -70,6 +70,9 @@ v1::MonitorRecord record_of(const gearcoupling_MonitorStatus& in) {
   out.set_diagnoses_dropped(in.diagnoses_dropped);
   out.set_swaps(in.swaps);
   out.set_diagnosing(sample_text(in.diagnosing));
+  for (std::uint32_t i = 0; i < in.refusals._length; ++i) {
+    (*out.mutable_refusals())[sample_text(in.refusals._buffer[i].kind)] = in.refusals._buffer[i].count;
+  }
   for (std::uint32_t i = 0; i < in.recent_swaps._length; ++i) {
     const gearcoupling_SwapRecord& s = in.recent_swaps._buffer[i];
     v1::SwapAuditRecord& r = *out.add_recent_swaps();

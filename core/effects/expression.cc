@@ -11,14 +11,16 @@
 namespace gc {
 namespace {
 
-EffectInfo make_info(const std::vector<std::string>& terms) {
+/// The EffectInfo over `terms`, each found by `find` (interned or owned).
+template <typename Find>
+EffectInfo make_info(const std::vector<std::string>& terms, Find find) {
   EffectInfo info{kExpressionEffect,
                   "A formula for what the library's effects do not explain: a sum of terms built from the "
                   "model's inputs and outputs (docs/diagnosis.md), found by diagnose or written by hand.",
                   "none: a discrepancy term (Kennedy and O'Hagan's model discrepancy)",
                   {}};
   for (const std::string& name : terms) {
-    const ExpressionTerm* term = find_expression_term(name);
+    const ExpressionTerm* term = find(name);
     if (!term) {
       std::string known;
       for (const ExpressionTerm& t : expression_terms()) known += (known.empty() ? "" : ", ") + t.name;
@@ -50,10 +52,27 @@ std::vector<std::string> in_catalogue_order(const std::vector<std::string>& term
   return ordered;
 }
 
-class Expression final : public Effect {
+/// What an expression made from a model's values owns: its EffectInfo and the terms made on
+/// use (time_cycle, step), freed with it. A base before Effect, so it is made first.
+struct OwnedTerms {
+  std::vector<std::unique_ptr<const ExpressionTerm>> made;
+  std::unique_ptr<const EffectInfo> info;
+};
+
+class Expression final : private OwnedTerms, public Effect {
  public:
+  /// Over interned terms and info (fits: expression_registration).
   Expression(const EffectInfo& info, const ParameterValues& values) : Effect(info, values) {
     for (const ParameterSpec& p : info.parameters) terms_.push_back(find_expression_term(p.name));
+  }
+  /// Owning its info and terms (a model's: make_expression).
+  Expression(OwnedTerms owned, const ParameterValues& values)
+      : OwnedTerms(std::move(owned)), Effect(*OwnedTerms::info, values) {
+    for (const ParameterSpec& p : OwnedTerms::info->parameters) {
+      for (const auto& term : made) {
+        if (term->name == p.name) terms_.push_back(term.get());
+      }
+    }
   }
 
   void adjust_outputs(const MeasurementSample& sample, const ModelContext&, const ModelState&,
@@ -97,7 +116,7 @@ const EffectInfo& expression_info(const std::vector<std::string>& terms) {
   const std::vector<std::string> key = in_catalogue_order(terms);
   std::lock_guard lock(mutex);
   auto& slot = interned[key];
-  if (!slot) slot = std::make_unique<const EffectInfo>(make_info(key));
+  if (!slot) slot = std::make_unique<const EffectInfo>(make_info(key, find_expression_term));
   return *slot;
 }
 
@@ -110,11 +129,30 @@ std::shared_ptr<const Effect> make_expression(const ParameterValues& coefficient
     require_finite(std::string("effects.") + kExpressionEffect + "." + name, value);
     terms.push_back(name);
   }
-  return std::make_shared<const Expression>(expression_info(terms), coefficients);
+  // Not interned: a model's expression owns what it needs, so a model from the network (a live
+  // swap of terms no one used before) leaves nothing behind when it goes.
+  OwnedTerms owned;
+  const EffectInfo info = make_info(in_catalogue_order(terms), [&owned](const std::string& name) -> const ExpressionTerm* {
+    std::optional<ExpressionTerm> term = make_expression_term(name);
+    if (!term) return nullptr;
+    owned.made.push_back(std::make_unique<const ExpressionTerm>(std::move(*term)));
+    return owned.made.back().get();
+  });
+  owned.info = std::make_unique<const EffectInfo>(info);
+  return std::make_shared<const Expression>(std::move(owned), coefficients);
 }
 
 EffectRegistration expression_registration(const std::vector<std::string>& terms) {
-  return {&expression_info(terms), [](const ParameterValues& values) { return make_expression(values); }};
+  // Fits keep the interned info (they may point at it), as the diagnosis' term sets are few.
+  return {&expression_info(terms), [](const ParameterValues& values) -> std::shared_ptr<const Effect> {
+            if (values.empty()) return make_expression(values);   // its error
+            std::vector<std::string> names;
+            for (const auto& [name, value] : values) {
+              require_finite(std::string("effects.") + kExpressionEffect + "." + name, value);
+              names.push_back(name);
+            }
+            return std::make_shared<const Expression>(expression_info(names), values);
+          }};
 }
 
 }  // namespace gc

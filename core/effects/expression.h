@@ -20,12 +20,15 @@ inline constexpr const char* kExpressionEffect = "expression";
 /// term set gives the same object for the life of the process, so fits may point at it.
 const EffectInfo& expression_info(const std::vector<std::string>& terms);
 
-/// The expression with these coefficients. Throws InvalidInput naming "effects.expression.<term>"
+/// The expression with these coefficients, owning its EffectInfo and the terms it made (not
+/// interned: a model's expression leaves nothing behind when the model goes, issue 38). Throws
+/// InvalidInput naming "effects.expression.<term>"
 /// for an unknown term (listing the catalogue) or a coefficient that is not finite or beyond its
 /// bound, and "effects.expression" for no term at all.
 std::shared_ptr<const Effect> make_expression(const ParameterValues& coefficients);
 
-/// Registration for fitting an expression over these terms (values: their coefficients).
+/// Registration for fitting an expression over these terms (values: their coefficients); what it
+/// makes points at the interned expression_info of its values' terms.
 EffectRegistration expression_registration(const std::vector<std::string>& terms);
 
 }  // namespace gc

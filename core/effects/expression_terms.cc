@@ -499,6 +499,13 @@ const ExpressionTerm* find_expression_term(std::string_view name) {
   return slot.get();
 }
 
+std::optional<ExpressionTerm> make_expression_term(std::string_view name) {
+  for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return t;
+  std::optional<ExpressionTerm> made = parse_cycle_term(name);
+  if (!made) made = parse_step_term(name);
+  return made;
+}
+
 std::vector<std::string> cycle_term_names(double period_s) {
   const double p = std::stod(number_text(std::clamp(period_s, kShortestCycleS, kLongestCycleS)));
   std::vector<std::string> names;

@@ -67,6 +67,12 @@ const std::vector<ExpressionTerm>& expression_terms();
 /// first use and lives as long as the process.
 const ExpressionTerm* find_expression_term(std::string_view name);
 
+/// The term `name` as find_expression_term finds it, but a made-on-use one (time_cycle, step)
+/// as a new object of the caller's, not interned: what a model holds for as long as it lives,
+/// so that models from the network (live swaps) leave nothing behind (issue 38). nullopt for an
+/// unknown name; a catalogue term is copied.
+std::optional<ExpressionTerm> make_expression_term(std::string_view name);
+
 /// The four time_cycle terms (sin and cos on each channel) of `period_s`, written with 6
 /// significant digits: the phase of a cycle must hold over the whole recording (a 0.4 Hz
 /// interference over 10,000 s needs the period to 1e-5 of itself).

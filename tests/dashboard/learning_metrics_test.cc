@@ -22,6 +22,8 @@ gearcoupling::v1::MonitorRecord monitor() {
   m.set_swaps(2);
   m.set_refused_cell_batches(7);
   m.set_refused_foreign(11);
+  (*m.mutable_refusals())["swap_bad_model"] = 4;
+  (*m.mutable_refusals())["batch_bad_name"] = 3000;
   return m;
 }
 
@@ -38,6 +40,14 @@ TEST(LearningMetrics, EachCounterOnItsOwnLinePerMonitor) {
   EXPECT_TRUE(has_line(text, "gearcoupling_monitor_swaps_total{monitor=\"00000000000000ab\"} 2"));
   EXPECT_TRUE(has_line(text, "gearcoupling_monitor_cell_batches_refused_total{monitor=\"00000000000000ab\"} 7"));
   EXPECT_TRUE(has_line(text, "gearcoupling_monitor_foreign_refused_total{monitor=\"00000000000000ab\"} 11"));
+  // Issue 38: every refusal by kind, kinds in order.
+  const std::string bad_name =
+      "gearcoupling_monitor_refusals_total{monitor=\"00000000000000ab\",kind=\"batch_bad_name\"} 3000";
+  const std::string bad_model =
+      "gearcoupling_monitor_refusals_total{monitor=\"00000000000000ab\",kind=\"swap_bad_model\"} 4";
+  EXPECT_TRUE(has_line(text, bad_name)) << text;
+  EXPECT_TRUE(has_line(text, bad_model)) << text;
+  EXPECT_LT(text.find(bad_name), text.find(bad_model));
 }
 
 TEST(LearningMetrics, NothingWithoutAMonitor) { EXPECT_EQ(learning_metrics_text({}), ""); }

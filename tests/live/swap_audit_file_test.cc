@@ -6,10 +6,12 @@
 // tested against the real monitor (robustness_test.cc).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "core/model_error.h"
 #include "live/swap_audit.h"
@@ -197,23 +199,23 @@ TEST(SwapAuditFile, AFinalAfterLineMarksTheFollowingCompleteAndAnOlderMonitorsLi
   EXPECT_STREQ(after_state_text(loaded.entries()[1]), "final");
 }
 
-// A swap followed while 60 others of another cell (40 kB each) rotate the file twice: the file
-// it was first written in is dropped, yet it loads first (the oldest), with its figures, because
-// each rotation carried it into the new file.
+// A swap followed while 400 others of another cell rotate the file (at 32 kB here) again and
+// again: the file it was first written in is gone, yet it loads first (the oldest), with its
+// figures, because each rotation kept it (the latest of its cell) and carried it into the new file.
 TEST(SwapAuditFile, ASwapStillFollowedIsCarriedAcrossRotations) {
   const auto dir = new_state_dir("audit_carried");
-  const std::string long_by(40'000, 'x');
+  constexpr std::uintmax_t kBound = 32 * 1024;
   {
-    SwapAudit audit(dir);
+    SwapAudit audit(dir, kBound);
     SwapEntry followed = swap_of("dyno1", 1, "alice@bench");
     followed.model_after = "dyno1_eccentric";
     audit.add(followed);
     audit.follow("dyno1", health_of("dyno1_eccentric", 1900.0, 2000.0, 500), std::chrono::steady_clock::now());
-    for (std::uint64_t i = 2; i <= 61; ++i) audit.add(swap_of("dyno2", i, long_by));
+    for (std::uint64_t i = 2; i <= 401; ++i) audit.add(swap_of("dyno2", i, "bob@bench"));
   }
   std::size_t files = 0;
   for (const auto& file : std::filesystem::directory_iterator(dir)) {
-    EXPECT_LE(file.file_size(), SwapAuditFile::kRotateBytes) << file.path();
+    EXPECT_LE(file.file_size(), kBound) << file.path();
     ++files;
   }
   EXPECT_EQ(files, 2u);
@@ -225,8 +227,8 @@ TEST(SwapAuditFile, ASwapStillFollowedIsCarriedAcrossRotations) {
   EXPECT_EQ(got.after_rmse_nm[1], 2000.0);
   EXPECT_TRUE(got.after_interrupted);
   EXPECT_EQ(loaded.entries()[1].id, loaded.entries()[2].id - 1);
-  EXPECT_GT(loaded.entries()[1].id, 2u);   // the first swaps of dyno2 went with the dropped file
-  EXPECT_EQ(loaded.entries().back().id, 61u);
+  EXPECT_GT(loaded.entries()[1].id, 2u);   // the first swaps of dyno2 went with the rotations
+  EXPECT_EQ(loaded.entries().back().id, 401u);
 }
 
 TEST(SwapAuditFile, LoadsTheLatestKeptSwaps) {
@@ -241,29 +243,111 @@ TEST(SwapAuditFile, LoadsTheLatestKeptSwaps) {
   EXPECT_EQ(loaded.entries().back().id, SwapAudit::kKept + 6);
 }
 
-// 130 swaps of 20 kB each (a long "by") are 2.6 MB: rotated twice, at most two files of at most
-// kRotateBytes stay, and the latest kKept swaps load from them in order.
+// 600 swaps of one cell (lines of about 300 bytes) against a bound of 64 kB: rotated, at most
+// two files of at most the bound stay, and the latest kKept swaps load from them in order.
 TEST(SwapAuditFile, RotatesAtItsBoundAndLoadsAcrossTheTwoFiles) {
   const auto dir = new_state_dir("audit_rotation");
-  const std::string long_by(20'000, 'x');
+  constexpr std::uintmax_t kBound = 64 * 1024;
   {
-    SwapAudit audit(dir);
-    for (std::uint64_t i = 1; i <= 130; ++i) audit.add(swap_of("dyno1", i, long_by));
+    SwapAudit audit(dir, kBound);
+    for (std::uint64_t i = 1; i <= 600; ++i) audit.add(swap_of("dyno1", i, "bob"));
   }
   std::uintmax_t total = 0;
   std::size_t files = 0;
   for (const auto& file : std::filesystem::directory_iterator(dir)) {
-    EXPECT_LE(file.file_size(), SwapAuditFile::kRotateBytes) << file.path();
+    EXPECT_LE(file.file_size(), kBound) << file.path();
     total += file.file_size();
     ++files;
   }
   EXPECT_EQ(files, 2u);
-  EXPECT_LE(total, 2 * SwapAuditFile::kRotateBytes);
+  EXPECT_LE(total, 2 * kBound);
   SwapAudit loaded(dir);
   ASSERT_EQ(loaded.entries().size(), SwapAudit::kKept);
   for (std::size_t i = 0; i < loaded.entries().size(); ++i) {
-    EXPECT_EQ(loaded.entries()[i].id, 130 - SwapAudit::kKept + 1 + i);
+    EXPECT_EQ(loaded.entries()[i].id, 600 - SwapAudit::kKept + 1 + i);
   }
+}
+
+/// Every swap of `cell` on disk, oldest first: what the files hold, whatever kKept loads.
+std::vector<std::uint64_t> ids_on_disk(const std::filesystem::path& dir, const std::string& cell) {
+  std::vector<std::uint64_t> ids;
+  SwapAuditFile file(dir);
+  for (const SwapEntry& e : file.load(1'000'000)) {
+    if (e.test_cell == cell) ids.push_back(e.id);
+  }
+  return ids;
+}
+
+// Issue 38, finding 3: two swaps of cell d with 1.1 MB names (model, by, source) rotated the
+// file twice, deleting 4 of cell c's 5 earlier swaps, and left a swap_audit.log.1 of 2.26 MB.
+// Now every text field is cut (a line is at most kMaxLineBytes) and nothing of c is lost.
+TEST(SwapAuditFile, LongNamesNeitherPushAnotherCellsSwapsOutNorTakeTheFilesBeyondTheirBound) {
+  const auto dir = new_state_dir("audit_long_names");
+  const std::string huge(1'100'000, 'n');
+  {
+    SwapAudit audit(dir);
+    for (std::uint64_t i = 1; i <= 5; ++i) audit.add(swap_of("c", i, "alice@bench"));
+    for (std::uint64_t i = 6; i <= 7; ++i) {
+      SwapEntry e = swap_of("d", i, huge);
+      e.source = huge;
+      e.model_after = huge;
+      audit.add(e);
+    }
+  }
+  std::uintmax_t total = 0;
+  for (const auto& file : std::filesystem::directory_iterator(dir)) {
+    EXPECT_LE(file.file_size(), SwapAuditFile::kRotateBytes) << file.path();
+    total += file.file_size();
+  }
+  EXPECT_LE(total, 2 * SwapAuditFile::kRotateBytes);
+  std::ifstream in(dir / "swap_audit.log");
+  for (std::string line; std::getline(in, line);) EXPECT_LE(line.size() + 1, SwapAuditFile::kMaxLineBytes);
+  EXPECT_EQ(ids_on_disk(dir, "c"), (std::vector<std::uint64_t>{1, 2, 3, 4, 5}));
+  const std::vector<std::uint64_t> d = ids_on_disk(dir, "d");
+  ASSERT_EQ(d.size(), 2u);
+  SwapAudit loaded(dir);
+  EXPECT_EQ(loaded.entries().back().model_after.substr(0, 3), "nnn");
+  EXPECT_LE(loaded.entries().back().model_after.size(), SwapAuditFile::kMaxFieldBytes);
+}
+
+// Issue 38, finding 3: one cell's swaps, however many, never push another cell's latest
+// kKeptPerCell swaps off the disk: 1,000 swaps of cell d (about ten rotations at a bound of 32 kB)
+// after 5 of cell c and 20 of cell e leave c's 5 and e's latest 8, and the files within 2 bounds.
+TEST(SwapAuditFile, ARotationKeepsEachCellsLatestSwapsWhateverAnotherCellSwaps) {
+  const auto dir = new_state_dir("audit_per_cell");
+  constexpr std::uintmax_t kBound = 32 * 1024;
+  {
+    SwapAudit audit(dir, kBound);
+    std::uint64_t id = 1;
+    for (int i = 0; i < 5; ++i) audit.add(swap_of("c", id++, "alice@bench"));
+    for (int i = 0; i < 20; ++i) audit.add(swap_of("e", id++, "carol@bench"));
+    for (int i = 0; i < 1000; ++i) audit.add(swap_of("d", id++, "mallory@elsewhere"));
+    // The trail the status shows (kKept swaps) keeps c's and e's too: d gives up its oldest.
+    const auto of = [&](const std::string& cell) {
+      return std::count_if(audit.entries().begin(), audit.entries().end(),
+                           [&](const SwapEntry& e) { return e.test_cell == cell; });
+    };
+    EXPECT_EQ(of("c"), 5);
+    EXPECT_EQ(of("e"), 20);
+    EXPECT_EQ(audit.entries().back().id, 1025u);
+  }
+  SwapAudit loaded(dir);   // and so does the trail a restarted monitor loads
+  EXPECT_EQ(std::count_if(loaded.entries().begin(), loaded.entries().end(),
+                          [](const SwapEntry& e) { return e.test_cell == "c"; }), 5);
+  std::uintmax_t total = 0;
+  for (const auto& file : std::filesystem::directory_iterator(dir)) {
+    EXPECT_LE(file.file_size(), kBound) << file.path();
+    total += file.file_size();
+  }
+  EXPECT_LE(total, 2 * kBound);
+  EXPECT_EQ(ids_on_disk(dir, "c"), (std::vector<std::uint64_t>{1, 2, 3, 4, 5}));
+  const std::vector<std::uint64_t> e = ids_on_disk(dir, "e");
+  ASSERT_GE(e.size(), SwapAuditFile::kKeptPerCell);
+  EXPECT_EQ(e.back(), 25u);
+  EXPECT_EQ(e[e.size() - SwapAuditFile::kKeptPerCell], 25u - SwapAuditFile::kKeptPerCell + 1);
+  const std::vector<std::uint64_t> d = ids_on_disk(dir, "d");
+  ASSERT_GE(d.size(), SwapAuditFile::kKeptPerCell);
+  EXPECT_EQ(d.back(), 1025u);
 }
 
 TEST(SwapAuditFile, ADirectoryThatIsNotThereIsRefusedNamingTheFlag) {

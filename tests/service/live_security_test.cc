@@ -41,6 +41,7 @@ constexpr int kCellDomain = 223;
 constexpr int kDashboardDomain = 224;
 constexpr int kOperatorDomain = 225;
 constexpr int kMonitorDomain = 226;
+constexpr int kCellDDomain = 222;
 
 constexpr const char* kRecording = GC_SOURCE_DIR "/data/recordings/hidden_eccentricity_torque_ramp.csv";
 constexpr std::uint64_t kRecordingSamples = 1000;  // rows of that recording
@@ -364,6 +365,92 @@ TEST_F(LiveRoles, ACellCannotPublishAnotherCellsMeasurementsNorAnOperatorSwapAnU
       },
       std::chrono::steady_clock::now() + 30s))
       << cli::testing::read_file(cell_->dir() + "/monitor.log");
+}
+
+// Issue 38, finding 1, under DDS Security: operator-o, granted test cell c only, swapped c to a
+// model whose coupling_file was /dev/zero; the monitor read it, died of std::bad_alloc, and with
+// it the monitoring of every cell (d too), at each restart while the swap's writer lived. Now
+// the swap is refused unread, c keeps its model and says why, and d is followed on.
+TEST_F(LiveRoles, AnOperatorsSwapNamingAFileIsRefusedUnreadAndEveryOtherCellStaysFollowed) {
+  const auto monitor = start_monitor();
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  status::CellBoard health(dashboard.get(), health_only());
+  const test::LocalDomain c_domain(kCellDomain, cell_->uri("cell-c"));
+  const test::LocalDomain d_domain(kCellDDomain, cell_->uri("cell-d"));
+  const Entity cell_c = c_domain.participant();
+  const Entity cell_d = d_domain.participant();
+  const protocol::Qos qos = live::measurement_writer_qos();
+  const Entity c_topic = live::make_measurement_topic(cell_c.get());
+  const Entity c_publisher = live::make_cell_publisher(cell_c.get(), "c");
+  const Entity c_writer(protocol::check_dds(
+      dds_create_writer(c_publisher.get(), c_topic.get(), qos.get(), nullptr), "writer c"));
+  const Entity d_topic = live::make_measurement_topic(cell_d.get());
+  const Entity d_publisher = live::make_cell_publisher(cell_d.get(), "d");
+  const Entity d_writer(protocol::check_dds(
+      dds_create_writer(d_publisher.get(), d_topic.get(), qos.get(), nullptr), "writer d"));
+  ASSERT_TRUE(live::wait_for_readers(c_writer.get(), 1, 30s));
+  ASSERT_TRUE(live::wait_for_readers(d_writer.get(), 1, 30s));
+  write_one_sample(c_writer.get(), "c", 1);
+  write_one_sample(d_writer.get(), "d", 1);
+  ASSERT_TRUE(health.wait_for("c", [](const status::HealthView&) { return true; }, 30s).has_value())
+      << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  ASSERT_TRUE(health.wait_for("d", [](const status::HealthView& h) { return h.taken == 1; }, 30s).has_value());
+
+  const test::LocalDomain operator_domain(kOperatorDomain, cell_->uri("operator-o"));
+  const Entity op = operator_domain.participant();
+  live::ModelSwapPublisher swaps(op.get(), {"c"});
+  ASSERT_TRUE(swaps.wait_for_readers(1, 30s));
+  swaps.publish("c", "name: \"zero\"\ncoupling_file: \"/dev/zero\"\n");
+  const auto refused = health.wait_for(
+      "c", [](const status::HealthView& h) { return !h.last_model_refusal.empty(); }, 30s);
+  ASSERT_TRUE(refused.has_value()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_NE(refused->last_model_refusal.find("model.coupling_file"), std::string::npos)
+      << refused->last_model_refusal;
+  EXPECT_EQ(refused->model_name, "paper");
+  // d, another cell (another identity), is followed on: a new run of it is taken.
+  write_one_sample(d_writer.get(), "d", 2);
+  EXPECT_TRUE(health.wait_for("d", [](const status::HealthView& h) { return h.taken == 2; }, 30s).has_value())
+      << cli::testing::read_file(cell_->dir() + "/monitor.log");
+  EXPECT_TRUE(monitor->running()) << cli::testing::read_file(cell_->dir() + "/monitor.log");
+}
+
+// Issue 38, finding 7, under DDS Security: cell-c's own writer, in its own partition, sends
+// 2,000 batches whose test-cell name has odd bytes: the monitor logged a line for each. Now it
+// logs the first and at most a summary a second, and counts them all (MonitorStatus.refusals).
+TEST_F(LiveRoles, ACellIdentitysFloodOfBadlyNamedBatchesIsCountedAndBarelyLogged) {
+  const auto monitor = start_monitor();
+  const test::LocalDomain dashboard_domain(kDashboardDomain, cell_->uri("dashboard-main"));
+  const Entity dashboard = dashboard_domain.participant();
+  status::MonitorBoard monitors(dashboard.get(), 64);
+  const test::LocalDomain c_domain(kCellDomain, cell_->uri("cell-c"));
+  const Entity cell_c = c_domain.participant();
+  const protocol::Qos qos = live::measurement_writer_qos();
+  const Entity topic = live::make_measurement_topic(cell_c.get());
+  const Entity publisher = live::make_cell_publisher(cell_c.get(), "c");
+  const Entity writer(protocol::check_dds(
+      dds_create_writer(publisher.get(), topic.get(), qos.get(), nullptr), "writer c"));
+  ASSERT_TRUE(live::wait_for_readers(writer.get(), 1, 30s));
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 2000; ++i) write_one_sample(writer.get(), "\x01\x7f odd\xff", 5);
+  std::uint64_t counted = 0;
+  protocol::wait_until(
+      [&] {
+        for (const auto& m : monitors.monitors()) {
+          const auto found = m.refusals().find("batch_bad_name");
+          if (found != m.refusals().end()) counted = found->second;
+        }
+        return counted == 2000;
+      },
+      std::chrono::steady_clock::now() + 30s);
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(counted, 2000u);
+  const std::string log = cli::testing::read_file(cell_->dir() + "/monitor.log");
+  std::size_t lines = 0;
+  for (std::size_t at = log.find("batch_bad_name"); at != std::string::npos; at = log.find("batch_bad_name", at + 1)) ++lines;
+  EXPECT_GE(lines, 1u);
+  EXPECT_LE(lines, 2u + static_cast<std::size_t>(elapsed_s)) << log.substr(0, 2000);
+  EXPECT_TRUE(monitor->running());
 }
 
 // Issue 23, finding 5, for the monitor: a cell identity revoked while the monitor runs is cut off
