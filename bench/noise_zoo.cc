@@ -6,10 +6,17 @@
 //   gc_noise_zoo --gearcoupling build/clients/cli/gearcoupling --draws 40 --seed 1 [--jobs 2]
 //                [--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b]
 //                [--diagnose-threads T] [--effect-truth NAME --snr X]
+//   gc_noise_zoo --gearcoupling PATH --power [--effects a,b] [--snrs 0.75,1.5,3] [--draws N]
+//                [--deadline-min M] ...
 //
 // Power mode (--effect-truth torque_gain|misalignment_offset|twice_per_rev|weight --snr X): the
 // same draws with a hidden effect of X times the noise level (tests/diagnosis/zoo/hidden_effects.h);
 // the share of draws whose first claim names it.
+//
+// Power table (--power): every hidden effect (or --effects) at every SNR (--snrs, default
+// 0.75,1.5,3), draws 0..N-1 of the master seed each (the same noise draws for every effect), in
+// the order draw, SNR, effect, so a run stopped by --deadline-min (no task started after M minutes)
+// keeps its counts even; a markdown table of the share named first with a 95 % Wilson interval.
 //
 // A draw's seed is derived from the master seed and its index (gc::zoo::draw_seed), so
 // `--seed S --only K` reruns draw K alone. The default master seed comes from the clock, printed.
@@ -33,6 +40,7 @@
 #include "tests/diagnosis/zoo/families.h"
 #include "tests/diagnosis/zoo/harness.h"
 #include "tests/diagnosis/zoo/hidden_effects.h"
+#include "tests/diagnosis/zoo/text.h"
 #include <regex>
 #include "tests/diagnosis/zoo/zoo.h"
 
@@ -43,6 +51,7 @@ using namespace gc::zoo;
 struct Options {
   std::string gearcoupling;
   std::size_t draws = 40;
+  bool draws_given = false;
   std::uint64_t seed = 0;
   bool seed_given = false;
   int jobs = 2;
@@ -53,12 +62,26 @@ struct Options {
   std::vector<std::string> families;
   std::string effect_truth;
   double snr = 1.0;
+  bool power = false;
+  std::vector<std::string> effects;
+  std::vector<double> snrs = {0.75, 1.5, 3.0};
+  double deadline_min = 0.0;  // 0: none
 };
+
+std::vector<std::string> split(const std::string& v) {
+  std::vector<std::string> out;
+  for (std::size_t p = 0; p != std::string::npos;) {
+    const std::size_t q = v.find(',', p);
+    out.push_back(v.substr(p, q == std::string::npos ? q : q - p));
+    p = q == std::string::npos ? q : q + 1;
+  }
+  return out;
+}
 
 [[noreturn]] void usage(const char* why) {
   std::fprintf(stderr,
                "gc_noise_zoo: %s\nusage: gc_noise_zoo --gearcoupling PATH [--draws N] [--seed S] [--jobs J (1-2)] "
-               "[--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b] [--diagnose-threads T]\n",
+               "[--max-rows R] [--min-rows R] [--keep DIR] [--only K] [--families a,b] [--diagnose-threads T] [--effect-truth NAME --snr X] [--power [--effects a,b] [--snrs 0.75,1.5,3] [--deadline-min M]]\n",
                why);
   std::exit(2);
 }
@@ -72,7 +95,7 @@ Options parse(int argc, char** argv) {
       return argv[++i];
     };
     if (a == "--gearcoupling") o.gearcoupling = value();
-    else if (a == "--draws") o.draws = std::stoul(value());
+    else if (a == "--draws") o.draws = std::stoul(value()), o.draws_given = true;
     else if (a == "--seed") o.seed = std::stoull(value(), nullptr, 0), o.seed_given = true;
     else if (a == "--jobs") o.jobs = std::stoi(value());
     else if (a == "--max-rows") o.max_rows = std::stoul(value());
@@ -82,6 +105,12 @@ Options parse(int argc, char** argv) {
     else if (a == "--diagnose-threads") o.diagnose_threads = std::stoi(value());
     else if (a == "--effect-truth") o.effect_truth = value();
     else if (a == "--snr") o.snr = std::stod(value());
+    else if (a == "--power") o.power = true;
+    else if (a == "--effects") o.effects = split(value());
+    else if (a == "--snrs") {
+      o.snrs.clear();
+      for (const auto& x : split(value())) o.snrs.push_back(std::stod(x));
+    } else if (a == "--deadline-min") o.deadline_min = std::stod(value());
     else if (a == "--families") {
       std::string v = value();
       for (std::size_t p = 0; p != std::string::npos;) {
@@ -100,6 +129,13 @@ Options parse(int argc, char** argv) {
     bool known = false;
     for (const auto& n : hidden_effect_names()) known = known || n == o.effect_truth;
     if (!known) usage(("unknown --effect-truth " + o.effect_truth).c_str());
+  }
+  if (o.power && !o.draws_given) o.draws = 10;
+  if (o.power && o.effects.empty()) o.effects = hidden_effect_names();
+  for (const auto& e : o.effects) {
+    bool known = false;
+    for (const auto& n : hidden_effect_names()) known = known || n == e;
+    if (!known) usage(("unknown effect in --effects: " + e).c_str());
   }
   if (o.jobs < 1 || o.jobs > 2) usage("--jobs must be 1 or 2 (the machine is shared)");
   if (o.min_rows < 10 || o.max_rows < o.min_rows) usage("rows: 10 <= --min-rows <= --max-rows");
@@ -120,10 +156,124 @@ double quantile(std::vector<double> v, double q) {
   return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
 }
 
+// 95 % Wilson score interval of k of n.
+std::pair<double, double> wilson(std::size_t k, std::size_t n, double z = 1.959964) {
+  if (n == 0) return {0.0, 1.0};
+  const double p = static_cast<double>(k) / n, nn = static_cast<double>(n), z2 = z * z;
+  const double c = (p + z2 / (2 * nn)) / (1 + z2 / nn);
+  const double h = z * std::sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / (1 + z2 / nn);
+  return {std::max(0.0, c - h), std::min(1.0, c + h)};
+}
+
+int power_table(const Options& o) {
+  struct Task {
+    std::size_t k;
+    double snr;
+    std::string effect;
+    bool done = false, hit = false, claim = false, error = false;
+    std::string first;  // the first claim's first name, "noise" when nothing claimed
+    double wall_s = 0;
+    std::size_t rows = 0;
+  };
+  std::vector<Task> tasks;
+  for (std::size_t k = 0; k < o.draws; ++k)
+    for (double snr : o.snrs)
+      for (const auto& e : o.effects) {
+        Task t;
+        t.k = k, t.snr = snr, t.effect = e;
+        tasks.push_back(t);
+      }
+  const auto root = std::filesystem::temp_directory_path() / ("gc_noise_zoo_power_" + std::to_string(::getpid()));
+  std::printf("noise zoo power table: master seed %llu, %zu effect(s) x %zu SNR(s) x %zu draw(s), jobs %d, rows %zu-%zu%s\n",
+              static_cast<unsigned long long>(o.seed), o.effects.size(), o.snrs.size(), o.draws, o.jobs, o.min_rows, o.max_rows,
+              o.deadline_min > 0 ? format(", deadline %.0f min", o.deadline_min).c_str() : "");
+  std::fflush(stdout);
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<std::size_t> next{0};
+  std::mutex print;
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t j = next++;
+      if (j >= tasks.size()) return;
+      if (o.deadline_min > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > 60.0 * o.deadline_min) {
+        return;
+      }
+      Task& t = tasks[j];
+      DrawLimits lim;
+      lim.max_rows = o.max_rows;
+      lim.min_rows = std::min(o.min_rows, o.max_rows);
+      lim.only_families = o.families;
+      lim.effect_truth = t.effect;
+      lim.effect_snr = t.snr;
+      ZooDraw d = draw(draw_seed(o.seed, t.k), lim);
+      const auto dir = root / ("task_" + std::to_string(j));
+      const auto model = write_choice(d.model, dir);
+      const auto csv = dir / "recording.csv";
+      std::ofstream(csv, std::ios::binary) << d.csv;
+      const DiagnoseOutcome out = run_diagnose(o.gearcoupling, csv, model, o.diagnose_threads);
+      std::filesystem::remove_all(dir);
+      const std::regex re(hidden_effect_pattern(t.effect));
+      t.error = out.error;
+      t.claim = out.claim;
+      t.hit = !out.error && std::any_of(out.first_claim.begin(), out.first_claim.end(),
+                                        [&](const std::string& nm) { return std::regex_search(nm, re); });
+      t.first = out.error ? "error" : out.first_claim.empty() ? (out.claim ? "(claim, unnamed)" : "noise") : out.first_claim.front();
+      t.wall_s = out.wall_s;
+      t.rows = d.rows;
+      t.done = true;
+      std::string names;
+      for (const auto& c : out.first_claim) names += (names.empty() ? "" : ",") + c;
+      std::lock_guard lock(print);
+      std::printf("[k=%zu snr=%.2f %s] %s first=%s outcomes=%s (%zu rows, diagnose %.1f s)%s\n  %s\n", t.k, t.snr, t.effect.c_str(),
+                  t.error ? "ERROR" : t.hit ? "HIT" : "miss", names.empty() ? "-" : names.c_str(), out.outcomes.c_str(), d.rows,
+                  out.wall_s, t.error ? (" " + out.stderr_tail).c_str() : "", d.description.c_str());
+      std::fflush(stdout);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 0; i < o.jobs; ++i) pool.emplace_back(worker);
+  for (auto& th : pool) th.join();
+  std::filesystem::remove_all(root);
+
+  std::printf("\n## Power table: master seed %llu (gc_noise_zoo --power --seed %llu --max-rows %zu --min-rows %zu)\n\n",
+              static_cast<unsigned long long>(o.seed), static_cast<unsigned long long>(o.seed), o.max_rows, o.min_rows);
+  std::printf("| hidden effect | names that count | SNR | draws | named first | share | 95 %% Wilson | any claim | errors | first claim when missed |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& e : o.effects) {
+    std::string counts;
+    for (const auto& info : hidden_effect_table()) if (info.name == e) counts = info.counts;
+    for (double snr : o.snrs) {
+      std::size_t n = 0, hits = 0, claims = 0, errors = 0;
+      std::map<std::string, int> instead;
+      for (const auto& t : tasks) {
+        if (!t.done || t.effect != e || t.snr != snr) continue;
+        if (t.error) { ++errors; continue; }
+        ++n, hits += t.hit, claims += t.claim;
+        if (!t.hit) ++instead[t.first];
+      }
+      std::vector<std::pair<int, std::string>> v;
+      for (const auto& [name, c] : instead) v.push_back({-c, name});
+      std::sort(v.begin(), v.end());
+      std::string miss;
+      for (const auto& [c, name] : v) miss += (miss.empty() ? "" : ", ") + name + " " + std::to_string(-c);
+      const auto [lo, hi] = wilson(hits, n);
+      std::printf("| %s | %s | %.2f | %zu | %zu | %.0f %% | %.0f-%.0f %% | %zu | %zu | %s |\n", e.c_str(), counts.c_str(), snr, n, hits,
+                  n ? 100.0 * hits / n : 0.0, 100 * lo, 100 * hi, claims, errors, miss.empty() ? "-" : miss.c_str());
+    }
+  }
+  std::vector<double> wall;
+  for (const auto& t : tasks) if (t.done) wall.push_back(t.wall_s);
+  std::printf("\ndiagnose wall time: median %.1f s, max %.1f s over %zu runs; %.1f min in all\n", quantile(wall, 0.5),
+              quantile(wall, 1.0), wall.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
+  if (o.power) return power_table(o);
   DrawLimits lim;
   lim.max_rows = o.max_rows;
   lim.min_rows = std::min(o.min_rows, o.max_rows);

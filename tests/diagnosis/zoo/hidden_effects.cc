@@ -1,13 +1,22 @@
 #include "tests/diagnosis/zoo/hidden_effects.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
+#include "core/restoring_torque.h"
+#include "tests/diagnosis/independent/truth_physics.h"
 #include "tests/diagnosis/zoo/text.h"
 
 namespace gc::zoo {
 namespace {
+
+constexpr double kPi = std::numbers::pi;
 
 MeasurementSample sample(const Channels& c, std::size_t i) {
   MeasurementSample s;
@@ -20,24 +29,347 @@ MeasurementSample sample(const Channels& c, std::size_t i) {
   return s;
 }
 
+// One truth in physical form: the sensor moments at row i with the effect's amplitude parameters
+// times lambda (shape parameters fixed), lambda at most lam_max (the physical bounds).
+struct Physical {
+  std::function<SensorMoments(double lam, std::size_t i)> moments;
+  std::function<std::string(double lam)> describe;
+  double lam_max = std::numeric_limits<double>::infinity();
+};
+
+// Solves lambda on a subsample so the physics gives the target RMS, evaluates every row, and
+// touches the change up linearly to the exact target.
+std::string apply_physical(const Physical& p, double target, Channels& truth) {
+  const std::size_t n = truth.rows();
+  const std::size_t stride = std::max<std::size_t>(1, n / 2500);
+  std::vector<double> dy(n, 0.0), dz(n, 0.0);
+  std::size_t fails = 0;
+  auto rms = [&](double lam, std::size_t step, bool keep) {
+    double ss = 0.0;
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; i += step, ++m) {
+      double y = 0.0, z = 0.0;
+      try {
+        const SensorMoments s = p.moments(lam, i);
+        y = s.y_nm - truth.msy_nm[i];
+        z = s.z_nm - truth.msz_nm[i];
+        if (!std::isfinite(y) || !std::isfinite(z)) throw std::runtime_error("not finite");
+      } catch (const std::exception&) {
+        y = z = 0.0;
+        if (keep) ++fails;
+      }
+      if (keep) dy[i] = y, dz[i] = z;
+      ss += y * y + z * z;
+    }
+    return m ? std::sqrt(ss / (2.0 * static_cast<double>(m))) : 0.0;
+  };
+  double lam = std::min(1.0, p.lam_max);
+  for (int it = 0; it < 8; ++it) {
+    const double r = rms(lam, stride, false);
+    if (!(r > 0.0) || std::abs(r / target - 1.0) < 0.02) break;
+    const double next = std::min(p.lam_max, lam * target / r);
+    if (next == lam) break;
+    lam = next;
+  }
+  const double r = rms(lam, 1, true);
+  const double k = r > 0.0 ? target / r : 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    truth.msy_nm[i] += k * dy[i];
+    truth.msz_nm[i] += k * dz[i];
+  }
+  std::string out = p.describe(lam) + format("; lambda %.3g, touch-up x%.3f", lam, k);
+  if (fails) out += format(", %zu rows unsolved (left unchanged)", fails);
+  if (!(r > 0.0)) out += ", INVISIBLE in this programme (nothing added)";
+  return out;
+}
+
+double signed_uniform(Rng& rng, double lo, double hi) { return (rng.chance(0.5) ? 1.0 : -1.0) * rng.uniform(lo, hi); }
+
+// Rebuilt models (coupling or contact options changed), cached by lambda.
+class Rebuilt {
+ public:
+  using Change = std::function<void(double lam, CouplingDefinition&, ContactOptions&)>;
+  Rebuilt(const CouplingModel& base, Change change) : base_(base), change_(std::move(change)) {}
+  const CouplingModel& at(double lam) {
+    auto it = cache_.find(lam);
+    if (it != cache_.end()) return *it->second;
+    CouplingDefinition c = base_.base_coupling();
+    ContactOptions o = base_.options();
+    change_(lam, c, o);
+    return *(cache_[lam] = std::make_shared<CouplingModel>(c, base_.effects(), o));
+  }
+
+ private:
+  const CouplingModel& base_;
+  Change change_;
+  std::map<double, std::shared_ptr<CouplingModel>> cache_;
+};
+
+Physical make_physical(const std::string& name, const CouplingModel& model, double jam, const Channels& truth, Rng& rng) {
+  const double tm = restoring_torque(model.geometry()).torque_nm;
+  const double tscale = tm / 1.36e6;  // torques of the doc's ranges, for this coupling's size
+  const double phi = model.geometry().pressure_angle_rad();
+  const double inf = std::numeric_limits<double>::infinity();
+  Physical p;
+  if (name == "friction") {
+    // Section 6.3: mu rises at low torque and with misalignment: mu0 + a T_ref / T + b zeta / xi.
+    const double mu0 = rng.uniform(0.02, 0.3), a = rng.uniform(0.0, 0.15), b = rng.uniform(0.0, 0.3), tref = 1.5e6 * tscale;
+    p.moments = [&model, mu0, a, b, tref, jam, &truth](double lam, std::size_t i) {
+      return independent::with_contact_change(model, sample(truth, i), [=](OperatingPoint& op, double&) {
+        const double drawn = mu0 + a * tref / op.torque_nm + b * op.misalignment_rad / jam;
+        op.friction_coefficient = std::clamp(0.1 + lam * (drawn - 0.1), 0.0, 0.6);
+      });
+    };
+    p.describe = [=](double lam) {
+      return format("mu = %.4f + %.4f T_ref/T + %.4f zeta/xi (drawn %.3f, %.3f, %.3f), T_ref %.3g MN·m, capped to [0, 0.6]",
+                    0.1 + lam * (mu0 - 0.1), lam * a, lam * b, mu0, a, b, tref / 1e6);
+    };
+    p.lam_max = 3.0;
+  } else if (name == "self_weight") {
+    // Eq 48 by its own statics: the hub and half the shaft, s times the coupling file's weights.
+    const double s = rng.chance(0.5) ? rng.uniform(0.5, 0.9) : rng.uniform(1.1, 2.0);
+    const double w = independent::weight_moment_nm(model.base_coupling());
+    p.moments = [&truth, s, w](double lam, std::size_t i) {
+      return SensorMoments{truth.msy_nm[i] - lam * (s - 1.0) * w, truth.msz_nm[i]};
+    };
+    p.describe = [=](double lam) { return format("weight scale %.3f -> %.3f of %.4g kN·m", s, 1.0 + lam * (s - 1.0), w / 1e3); };
+    p.lam_max = s > 1 ? 4.0 / (s - 1.0) : 1.0 / (1.0 - s);
+  } else if (name == "pressure_angle_rotation") {
+    // Eqs 44-47: the moments turn by s phi T / (T + T_s) instead of the paper's phi.
+    const double s = rng.uniform(0.0, 1.5), ts = rng.chance(0.3) ? 0.0 : rng.uniform(0.0, 1.5e6) * tscale;
+    p.moments = [&model, &truth, s, ts, phi](double lam, std::size_t i) {
+      return independent::with_contact_change(model, sample(truth, i), [=](OperatingPoint& op, double& shift) {
+        shift += lam * (s * phi * op.torque_nm / (op.torque_nm + ts) - phi);
+      });
+    };
+    p.describe = [=](double lam) {
+      return format("shift phi (1 - lambda) + lambda s phi T/(T + T_s), s %.3f, T_s %.3g MN·m (T_s 0: s_eff %.3f)", s, ts / 1e6, 1 + lam * (s - 1));
+    };
+    p.lam_max = s < 1 ? 1.0 / (1.0 - s) : (s > 1 ? 1.0 / (s - 1.0) : 1.0);
+  } else if (name == "assembly_misalignment") {
+    // Section 6.3.1: an unseen misalignment vector, summed with the measured one.
+    const double z0 = rng.uniform(0.05, 0.3) * jam, b0 = rng.uniform(-kPi, kPi);
+    p.moments = [&model, &truth, z0, b0](double lam, std::size_t i) {
+      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * z0, b0)).moments;
+    };
+    p.describe = [=](double lam) { return format("zeta0 %.3f xi at %.2f rad", lam * z0 / jam, b0); };
+    p.lam_max = std::min(0.05, 0.35 * jam) / z0;
+  } else if (name == "eccentricity") {
+    // Eqs 49-53: the hub sags on the sleeve below the centring torque s T_m, along gravity.
+    const double ze = rng.uniform(0.05, 0.3) * jam, s = rng.uniform(0.5, 2.0), k = rng.chance(0.5) ? 1.0 : rng.uniform(1.0, 10.0);
+    const double g = rng.uniform(-kPi, kPi);
+    p.moments = [&model, &truth, ze, s, k, g, tm](double lam, std::size_t i) {
+      const double t = truth.torque_nm[i], th = s * tm;
+      const double fade = t < th ? 1.0 - std::pow(t / th, k) : 0.0;
+      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * ze * fade, g)).moments;
+    };
+    p.describe = [=](double lam) {
+      return format("zeta_e %.3f xi, threshold %.2f T_m (T_m %.3g MN·m), sharpness %.2f, gravity %.2f rad", lam * ze / jam, s, tm / 1e6, k, g);
+    };
+    p.lam_max = std::min(0.01, 0.35 * jam) / ze;
+  } else if (name == "compliance") {
+    // Section 6.1: rim and shaft flexibility in series with the mesh, C_rim = r C: the mesh at
+    // r / (1 + r) of eq 5's stiffness (through E); lambda scales the rim's compliance 1/r.
+    const double r = rng.uniform(1.5, 20.0);
+    auto rebuilt = std::make_shared<Rebuilt>(model, [r](double lam, CouplingDefinition& c, ContactOptions&) {
+      c.youngs_modulus_pa *= 1.0 / (1.0 + lam / r);
+    });
+    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(sample(truth, i)).moments; };
+    p.describe = [=](double lam) { return format("rim stiffness %.3g C: mesh at %.3f of eq 5", r, 1.0 / (1.0 + lam / r)); };
+    p.lam_max = 9.0 * r;
+  } else if (name == "spacing_errors") {
+    // Sections 1, 6.4: an out-of-round sleeve separates the teeth by e more (eq 11's z_o).
+    const double e = rng.uniform(5e-6, 5e-5);
+    auto rebuilt = std::make_shared<Rebuilt>(model, [e](double lam, CouplingDefinition&, ContactOptions& o) {
+      o.spacing_error_m += lam * e;
+    });
+    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(sample(truth, i)).moments; };
+    p.describe = [=](double lam) { return format("spacing error %.3g um", lam * e * 1e6); };
+    p.lam_max = 1e-4 / e;
+  } else if (name == "channel_gain_offset") {
+    // Section 3: the bending bridges' residual calibration: (1 + g) M + o on each channel.
+    const double gy = rng.uniform(-0.1, 0.1), gz = rng.uniform(-0.1, 0.1);
+    const double oy = (rng.chance(0.5) ? 1 : -1) * rng.log_uniform(1e3, 2e5) * tscale;
+    const double oz = (rng.chance(0.5) ? 1 : -1) * rng.log_uniform(1e3, 2e5) * tscale;
+    p.moments = [&truth, gy, gz, oy, oz](double lam, std::size_t i) {
+      return SensorMoments{(1 + lam * gy) * truth.msy_nm[i] + lam * oy, (1 + lam * gz) * truth.msz_nm[i] + lam * oz};
+    };
+    p.describe = [=](double lam) {
+      return format("gains %+.4f %+.4f, offsets %+.4g %+.4g kN·m", lam * gy, lam * gz, lam * oy / 1e3, lam * oz / 1e3);
+    };
+    p.lam_max = std::min(0.5 / std::max(std::abs(gy), std::abs(gz)), 2e6 / std::max(std::abs(oy), std::abs(oz)));
+  } else if (name == "hysteresis") {
+    // Section 6.3: the coupling lags the measured misalignment by `lag` against the direction of
+    // travel of the true misalignment (sticky: a hold keeps the last travel).
+    const double lag = rng.uniform(0.02, 0.1) * jam;
+    auto travel = std::make_shared<std::vector<int>>(truth.rows(), 0);
+    for (std::size_t i = 1; i < truth.rows(); ++i) {
+      const double d = truth.zeta_rad[i] - truth.zeta_rad[i - 1];
+      (*travel)[i] = std::abs(d) > 1e-9 * jam ? (d > 0 ? 1 : -1) : (*travel)[i - 1];
+    }
+    p.moments = [&model, &truth, lag, travel](double lam, std::size_t i) {
+      MeasurementSample s = sample(truth, i);
+      s.misalignment_rad = std::max(0.0, s.misalignment_rad - (*travel)[i] * lam * lag);
+      return model.predict(s).moments;
+    };
+    p.describe = [=](double lam) { return format("lag %.4f xi (%.3g mrad)", lam * lag / jam, lam * lag * 1e3); };
+    p.lam_max = std::min(0.01, 0.2 * jam) / lag;
+  } else if (name == "misalignment_scale") {
+    // Section 3: the displacement sensors' lever arm: the coupling sees (1 + k) zeta.
+    const double k = signed_uniform(rng, 0.03, 0.2);
+    p.moments = [&model, &truth, k](double lam, std::size_t i) {
+      MeasurementSample s = sample(truth, i);
+      s.misalignment_rad *= 1.0 + lam * k;
+      return model.predict(s).moments;
+    };
+    p.describe = [=](double lam) { return format("zeta seen = (1 %+.4f) zeta measured", lam * k); };
+    p.lam_max = 0.5 / std::abs(k);
+  } else if (name == "torque_calibration") {
+    // Section 3: the torque flange's slope and curvature: T carried = T (1 + k + c T / 1 MN·m).
+    const double k = rng.uniform(-0.05, 0.05), c = rng.uniform(-0.05, 0.05);
+    p.moments = [&model, &truth, k, c](double lam, std::size_t i) {
+      MeasurementSample s = sample(truth, i);
+      s.torque_nm *= 1.0 + lam * (k + c * s.torque_nm / 1e6);
+      return model.predict(s).moments;
+    };
+    p.describe = [=](double lam) { return format("slope %+.4f, curvature %+.4f per MN·m", lam * k, lam * c); };
+    p.lam_max = 0.5 / std::max(std::abs(k), std::abs(c));
+  } else if (name == "thermal_misalignment") {
+    // The housing grows with the oil temperature: g (theta - theta_0) added along beta_t.
+    const double g = signed_uniform(rng, 2e-5, 2e-4), th0 = rng.uniform(15.0, 40.0), bt = rng.uniform(-kPi, kPi);
+    double dmax = 0.0;
+    for (double t : truth.temperature_c) dmax = std::max(dmax, std::abs(t - th0));
+    p.moments = [&model, &truth, g, th0, bt](double lam, std::size_t i) {
+      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * g * (truth.temperature_c[i] - th0), bt)).moments;
+    };
+    p.describe = [=](double lam) { return format("growth %.3g rad/degC from %.1f degC at %.2f rad", lam * g, th0, bt); };
+    p.lam_max = std::min(2e-3 / std::abs(g), dmax > 0 ? 0.35 * jam / (std::abs(g) * dmax) : inf);
+  } else if (name == "moment_delay") {
+    // Section 3: the bridges reach the DAQ through another path: M(t - tau) (a skew), and a
+    // demodulator's mean over the last N revolutions (the moments averaged, 60 N / n s).
+    const double tau = signed_uniform(rng, 0.05, 1.0), revs = rng.chance(0.5) ? 0.0 : rng.uniform(0.25, 2.0);
+    const std::size_t n = truth.rows();
+    auto cy = std::make_shared<std::vector<double>>(n, 0.0), cz = std::make_shared<std::vector<double>>(n, 0.0);
+    for (std::size_t i = 1; i < n; ++i) {
+      const double dt = truth.time_s[i] - truth.time_s[i - 1];
+      (*cy)[i] = (*cy)[i - 1] + 0.5 * dt * (truth.msy_nm[i] + truth.msy_nm[i - 1]);
+      (*cz)[i] = (*cz)[i - 1] + 0.5 * dt * (truth.msz_nm[i] + truth.msz_nm[i - 1]);
+    }
+    // Value and running integral of the moments (linear between samples, held beyond the ends).
+    auto at = [&truth, cy, cz, n](double t, bool integral) -> std::pair<double, double> {
+      const auto& ts = truth.time_s;
+      if (t <= ts[0]) {
+        return integral ? std::pair{(t - ts[0]) * truth.msy_nm[0], (t - ts[0]) * truth.msz_nm[0]} : std::pair{truth.msy_nm[0], truth.msz_nm[0]};
+      }
+      if (t >= ts[n - 1]) {
+        const double d = t - ts[n - 1];
+        return integral ? std::pair{(*cy)[n - 1] + d * truth.msy_nm[n - 1], (*cz)[n - 1] + d * truth.msz_nm[n - 1]}
+                        : std::pair{truth.msy_nm[n - 1], truth.msz_nm[n - 1]};
+      }
+      const std::size_t j = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin()) - 1;
+      const double h = ts[j + 1] - ts[j], f = h > 0 ? (t - ts[j]) / h : 0.0;
+      const double y = truth.msy_nm[j] + f * (truth.msy_nm[j + 1] - truth.msy_nm[j]);
+      const double z = truth.msz_nm[j] + f * (truth.msz_nm[j + 1] - truth.msz_nm[j]);
+      if (!integral) return {y, z};
+      const double d = t - ts[j];
+      return {(*cy)[j] + 0.5 * d * (truth.msy_nm[j] + y), (*cz)[j] + 0.5 * d * (truth.msz_nm[j] + z)};
+    };
+    p.moments = [&truth, at, tau, revs](double lam, std::size_t i) {
+      const double b = truth.time_s[i] - lam * tau;
+      const double w = lam * revs * 60.0 / std::max(0.1, truth.speed_rpm[i]);
+      if (w <= 1e-9) {
+        const auto [y, z] = at(b, false);
+        return SensorMoments{y, z};
+      }
+      const auto [yb, zb] = at(b, true);
+      const auto [ya, za] = at(b - w, true);
+      return SensorMoments{(yb - ya) / w, (zb - za) / w};
+    };
+    p.describe = [=](double lam) { return format("skew %.3f s, averaging %.2f revolutions", lam * tau, lam * revs); };
+    p.lam_max = std::min(tau > 0 ? 5.0 / tau : 2.0 / -tau, revs > 0 ? 10.0 / revs : inf);
+  } else if (name == "continuous_quarter_sums") {
+    // Eqs 13, 42-43: a real coupling has no int(qN/4) sawtooth; the truth is the continuous form
+    // (a switch: its change is scaled linearly).
+    auto rebuilt = std::make_shared<Rebuilt>(model, [](double, CouplingDefinition&, ContactOptions& o) { o.continuous_quarter_sums = true; });
+    p.moments = [rebuilt, &truth](double lam, std::size_t i) {
+      const SensorMoments m = rebuilt->at(1.0).predict(sample(truth, i)).moments;
+      return SensorMoments{truth.msy_nm[i] + lam * (m.y_nm - truth.msy_nm[i]), truth.msz_nm[i] + lam * (m.z_nm - truth.msz_nm[i])};
+    };
+    p.describe = [](double) { return std::string("continuous quarter sums (the switch's change, scaled)"); };
+  } else if (name == "speed_drag") {
+    // A formula's physics (`expression`): a seal's viscous drag, proportional to the shaft
+    // speed, read by the bending bridges through their cross-sensitivity, at a fixed angle.
+    const double a = rng.uniform(-kPi, kPi);
+    p.moments = [&truth, a](double lam, std::size_t i) {
+      const double m = lam * 1000.0 * truth.speed_rpm[i];
+      return SensorMoments{truth.msy_nm[i] + m * std::cos(a), truth.msz_nm[i] + m * std::sin(a)};
+    };
+    p.describe = [=](double lam) { return format("%.4g kN·m per rpm at %.2f rad on (M_sy', M_sz')", lam, a); };
+  } else {
+    throw std::invalid_argument("unknown hidden effect " + name);
+  }
+  return p;
+}
+
 }  // namespace
 
+const std::vector<HiddenEffectInfo>& hidden_effect_table() {
+  static const std::vector<HiddenEffectInfo> t = {
+      {"torque_gain", "true torque = 1.01 x logged (linear scaling of the change)", "torque", "any name containing 'torque'"},
+      {"misalignment_offset", "unseen misalignment 0.02 xi at a random direction (linear scaling)", "misalignment", "any name containing 'misalignment'"},
+      {"twice_per_rev", "oval sleeve: A (cos, sin)(2 phi + p)", "order_2|spacing|2x|twice", "order_2*, spacing*, 2x, twice"},
+      {"weight", "M_sy' lower by a constant", "weight", "any name containing 'weight'"},
+      {"friction", "mu = 0.1 + lambda (mu0 + a T_ref/T + b zeta/xi - 0.1); mu0 0.02-0.3, a 0-0.15, b 0-0.3", "^friction$", "friction"},
+      {"self_weight", "M_sy' -= (s - 1) (W_c + w_sh L_s / 2) L_s cos(gamma); s 0.5-0.9 or 1.1-2", "^(self_weight|channel_gain_offset)$", "self_weight, channel_gain_offset (one tilt: the same)"},
+      {"pressure_angle_rotation", "shift s phi T/(T + T_s) for phi; s 0-1.5, T_s 0 (30 %) or 0-1.5 MN·m (x size)", "^pressure_angle_rotation$", "pressure_angle_rotation"},
+      {"assembly_misalignment", "unseen vector zeta0 0.05-0.3 xi at any direction, summed", "^assembly_misalignment$", "assembly_misalignment"},
+      {"eccentricity", "zeta_e (1 - (T/(s T_m))^k) along gravity below s T_m; zeta_e 0.05-0.3 xi, s 0.5-2, k 1 or 1-10, any direction; a torque staircase first", "^eccentricity$", "eccentricity"},
+      {"compliance", "mesh stiffness r/(1 + r) of eq 5 (rim in series, r 1.5-20: 0.6-0.95)", "^compliance$", "compliance"},
+      {"spacing_errors", "eq 11's z_o + e, e 5-50 um", "^spacing_errors$", "spacing_errors"},
+      {"channel_gain_offset", "(1 + g) M + o per channel; g +-0.1, |o| 1-200 kN·m log-uniform (x size)", "^channel_gain_offset$", "channel_gain_offset"},
+      {"hysteresis", "zeta_eff = max(0, zeta - d lag), d the true travel (sticky); lag 0.02-0.1 xi; misalignment sweeps first", "^hysteresis$", "hysteresis"},
+      {"misalignment_scale", "zeta seen = (1 + k) zeta, |k| 0.03-0.2", "^misalignment_scale$", "misalignment_scale"},
+      {"torque_calibration", "T carried = T (1 + k + c T / 1 MN·m), k, c +-0.05", "^torque_calibration$", "torque_calibration"},
+      {"thermal_misalignment", "unseen vector g (theta - theta_0) along beta_t; |g| 2e-5-2e-4 rad/degC, theta_0 15-40 degC", "^thermal_misalignment$", "thermal_misalignment"},
+      {"moment_delay", "moments M(t - tau), then averaged over N revolutions; |tau| 0.05-1 s, N 0 (50 %) or 0.25-2", "^moment_delay$", "moment_delay"},
+      {"continuous_quarter_sums", "the continuous eqs 13, 42-43 instead of int(qN/4) (switch, change scaled)", "^continuous_quarter_sums$", "continuous_quarter_sums"},
+      {"speed_drag", "c n (cos a, sin a) on (M_sy', M_sz'), any a; speed varied in every block", "speed", "any name containing 'speed' (expression's speed terms)"},
+  };
+  return t;
+}
+
 const std::vector<std::string>& hidden_effect_names() {
-  static const std::vector<std::string> names = {"torque_gain", "misalignment_offset", "twice_per_rev", "weight"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& e : hidden_effect_table()) v.push_back(e.name);
+    return v;
+  }();
   return names;
 }
 
 std::string hidden_effect_pattern(const std::string& name) {
-  if (name == "torque_gain") return "torque";
-  if (name == "misalignment_offset") return "misalignment";
-  if (name == "twice_per_rev") return "order_2|spacing|2x|twice";
-  if (name == "weight") return "weight";
+  for (const auto& e : hidden_effect_table()) {
+    if (e.name == name) return e.pattern;
+  }
   throw std::invalid_argument("unknown hidden effect " + name);
+}
+
+ProgrammeNeeds hidden_effect_programme(const std::string& name) {
+  ProgrammeNeeds p;
+  if (name == "eccentricity") p.first_block = 0;
+  if (name == "hysteresis") p.first_block = 1;
+  if (name == "speed_drag") p.vary_speed = true;
+  return p;
 }
 
 std::string add_hidden_effect(const std::string& name, double snr, double level_nm, const CouplingModel& model,
                               double jam_rad, Channels& truth, Rng& rng) {
   const std::size_t n = truth.rows();
+  if (name != "torque_gain" && name != "misalignment_offset" && name != "twice_per_rev" && name != "weight") {
+    const Physical p = make_physical(name, model, jam_rad, truth, rng);
+    const std::string what = apply_physical(p, snr * level_nm, truth);
+    return format("%s (%s) at %.2fx the noise = %.3g kN·m rms", name.c_str(), what.c_str(), snr, snr * level_nm / 1e3);
+  }
   std::vector<double> dy(n, 0.0), dz(n, 0.0);
   std::string what;
   if (name == "torque_gain" || name == "misalignment_offset") {
@@ -57,7 +389,7 @@ std::string add_hidden_effect(const std::string& name, double snr, double level_
       dy[i] = m.y_nm - truth.msy_nm[i];
       dz[i] = m.z_nm - truth.msz_nm[i];
     }
-    what = name == "torque_gain" ? "gain 1 %% trial" : format("offset 2 %% of jam trial at %.2f rad", beta0);
+    what = name == "torque_gain" ? "gain 1 % trial" : format("offset 2 %% of jam trial at %.2f rad", beta0);
   } else if (name == "twice_per_rev") {
     const double p = rng.uniform(0, 2 * std::numbers::pi);
     double phi = 0.0;

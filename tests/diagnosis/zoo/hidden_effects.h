@@ -1,11 +1,21 @@
 // The zoo's power mode: a hidden physical effect under the noise, written here from the physics
-// (not from the effects library), scaled so that its RMS on the moments is `snr` times the noise
-// level. The model diagnose is given lacks it; naming it first is a hit.
+// (the paper's equations and what the effect is in a rig; not from the effects library), scaled
+// so that its RMS on the moments is `snr` times the noise level. The model diagnose is given
+// (the paper's {friction mu0 0.1, pressure_angle_rotation, self_weight}) lacks it; naming it
+// first is a hit.
+//
+// The four first truths (kept as they were):
 //   torque_gain          the torque transducer reads low by a gain: the rig's true torque is
 //                        (1 + g) times the logged one (moments of the true torque)
 //   misalignment_offset  an assembly misalignment vector added to the commanded one (vector sum)
 //   twice_per_rev        an oval sleeve: (A cos(2 phi + p), A sin(2 phi + p)), phi the shaft angle
 //   weight               a heavier hub: M_sy' lower by a constant
+// One truth for every effect of docs/effects.md (the name of the truth is the library effect's,
+// except `speed_drag` for `expression`, a formula); each draws its physical parameters in the
+// doc's plausible ranges, then its size (the amplitude parameters times lambda, the shape
+// parameters kept) is solved so that the physics itself gives snr x the noise level; a final
+// linear touch-up (reported, ~1) makes the RMS exact, and carries the change alone where lambda
+// would leave the physical bounds. hidden_effect_table() lists physics, ranges and accepted names.
 #pragma once
 
 #include <string>
@@ -17,9 +27,24 @@
 
 namespace gc::zoo {
 
+struct HiddenEffectInfo {
+  std::string name;
+  std::string physics;   ///< one line: the physics and the drawn ranges
+  std::string pattern;   ///< regular expression a first claim's name must match (ECMAScript)
+  std::string counts;    ///< the names that count, for tables
+};
+
+const std::vector<HiddenEffectInfo>& hidden_effect_table();
 const std::vector<std::string>& hidden_effect_names();
 /// Regular expression a claimed name must match to name the effect.
 std::string hidden_effect_pattern(const std::string& name);
+
+/// What the programme must contain for the effect to show at all (ProgrammeLimits).
+struct ProgrammeNeeds {
+  int first_block = -1;     ///< -1 any; 0 a torque staircase (from low torque up); 1 misalignment sweeps
+  bool vary_speed = false;  ///< every block ends at another speed
+};
+ProgrammeNeeds hidden_effect_programme(const std::string& name);
 
 /// Adds the effect to truth's moments (RMS of the change over both channels = snr * level_nm);
 /// returns its parameters as text. Throws std::invalid_argument for an unknown name.

@@ -14,7 +14,7 @@ struct State {
 
 class Builder {
  public:
-  Builder(std::size_t rows, const ProgrammeLimits& l, Rng& rng) : l_(l), rng_(rng) {
+  Builder(std::size_t rows, const ProgrammeLimits& l, Rng& rng) : l_(l), rng_(rng), forced_(l.first_block) {
     c_.reserve(rows);
     s_ = {draw_torque(), draw_zeta(), draw_beta(), draw_speed()};
   }
@@ -42,9 +42,12 @@ class Builder {
   std::string block(std::size_t n) {
     const std::size_t join = std::max<std::size_t>(1, static_cast<std::size_t>(rng_.uniform(0.05, 0.15) * n));
     const std::size_t body = n - std::min(n, join);
-    const double speed_end = rng_.chance(0.5) ? s_.speed_rpm : draw_speed();
+    const bool same_speed = rng_.chance(0.5) && !l_.vary_speed;
+    const double speed_end = same_speed ? s_.speed_rpm : draw_speed();
     State start{draw_torque(), draw_zeta(), rng_.chance(0.6) ? s_.beta_rad : draw_beta(), draw_speed()};
-    const int kind = rng_.integer(0, 5);
+    int kind = rng_.integer(0, 5);
+    const bool forced = forced_ >= 0;
+    if (forced) kind = forced_, forced_ = -1;
     if (kind == 1) start.zeta_rad = l_.zeta_min_rad;  // a sweep starts low
     ramp(start, join);
     const double speed0 = s_.speed_rpm;
@@ -57,7 +60,7 @@ class Builder {
     };
     switch (kind) {
       case 0: {  // staircase of torque or misalignment
-        const bool torque = rng_.chance(0.6);
+        const bool torque = rng_.chance(0.6) || forced;
         const int levels = rng_.integer(3, 12);
         std::vector<double> v(levels);
         for (int j = 0; j < levels; ++j) {
@@ -140,6 +143,7 @@ class Builder {
  private:
   const ProgrammeLimits& l_;
   Rng& rng_;
+  int forced_ = -1;
   State s_;
   std::vector<State> c_;
 };

@@ -20,6 +20,8 @@ struct ProgrammeLimits {
   double zeta_max_rad = 0.0;   ///< about 60 % of the jam angle
   double speed_min_rpm = 3.0;
   double speed_max_rpm = 15.0;
+  int first_block = -1;       ///< -1: drawn; 0: a torque staircase; 1: misalignment sweeps (power mode's needs)
+  bool vary_speed = false;    ///< every block ends at another speed (power mode's needs)
 };
 
 struct Programme {

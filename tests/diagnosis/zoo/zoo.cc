@@ -71,6 +71,11 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
   pl.torque_max_nm = prog_rng.uniform(1.5e6, 2.6e6) * d.model.torque_scale;
   pl.zeta_max_rad = prog_rng.uniform(0.3, 0.6) * jam;
   pl.zeta_min_rad = prog_rng.uniform(0.03, 0.1) * jam;
+  if (!lim.effect_truth.empty()) {
+    const ProgrammeNeeds needs = hidden_effect_programme(lim.effect_truth);
+    pl.first_block = needs.first_block;
+    pl.vary_speed = needs.vary_speed;
+  }
   Programme prog = draw_programme(d.rows, d.fs_hz, pl, prog_rng);
   Channels& truth = prog.truth;
   predict(*model, truth);
