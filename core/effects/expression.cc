@@ -26,7 +26,7 @@ EffectInfo make_info(const std::vector<std::string>& terms, Find find) {
       for (const ExpressionTerm& t : expression_terms()) known += (known.empty() ? "" : ", ") + t.name;
       throw InvalidInput(std::string("effects.") + kExpressionEffect + "." + name,
                          "unknown term; the terms are: " + known +
-                             ", time_cycle_<P>s_<sin|cos>_on_<y|z> for a period P of 0.02 to 1000000 s, step_at_<t>s_on_<y|z>, "
+                             ", time_cycle_<P>s_<sin|cos>_on_<y|z> for a period P of 0.0001 to 1000000 s, step_at_<t>s_on_<y|z>, "
                              "[torque_]mesh_order_<N>[_plus_<j>|_minus_<j>]_<sin_on_y|...|backward_sin> for a coupling "
                              "of N teeth (j = 1, 2), and ringing_<f_n>Hz_zeta<zeta>_on_<y|z>");
     }

@@ -132,7 +132,9 @@ constexpr int kForwardCos = 8, kForwardSin = 9, kBackwardCos = 10, kBackwardSin 
 // the shaft orders: scalar kOrder, the same frames; the steps: scalar kStep, frame on_y or on_z.
 // The ringing terms: scalar kRinging, frame kSinY (on M_sy') or kSinZ (on M_sz').
 constexpr int kCycle = -2, kOrder = -3, kStep = -4, kRinging = -5;
-constexpr double kShortestCycleS = 0.02, kLongestCycleS = 1e6;  // 50 Hz (a 100 Hz DAQ's Nyquist) to 11 days
+// 10 kHz (a 20 kHz DAQ's Nyquist: a 1 kHz recording found a 100 Hz cycle that its name could not
+// carry, and the diagnosis stopped) to 11 days.
+constexpr double kShortestCycleS = 1e-4, kLongestCycleS = 1e6;
 constexpr double kSlowCycleS = 10.0;  // from here on a cycle is a slow drift of the zero, below an interference
 constexpr double kLatestStepS = 1e9;  // the recording reader's time range
 
@@ -486,10 +488,7 @@ const std::vector<ExpressionTerm>& expression_terms() {
 const ExpressionTerm* find_expression_term(std::string_view name) {
   for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return &t;
   // Terms made for a value in their name: a period, a time, a tooth count, a mode.
-  std::optional<ExpressionTerm> term = parse_cycle_term(name);
-  if (!term) term = parse_step_term(name);
-  if (!term) term = parse_mesh_term(name);
-  if (!term) term = parse_ringing_term(name);
+  std::optional<ExpressionTerm> term = make_expression_term(name);
   if (!term) return nullptr;
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<const ExpressionTerm>, std::less<>> made;
@@ -501,8 +500,11 @@ const ExpressionTerm* find_expression_term(std::string_view name) {
 
 std::optional<ExpressionTerm> make_expression_term(std::string_view name) {
   for (const ExpressionTerm& t : expression_terms()) if (t.name == name) return t;
+  // Terms made for a value in their name: a period, a time, a tooth count, a mode.
   std::optional<ExpressionTerm> made = parse_cycle_term(name);
   if (!made) made = parse_step_term(name);
+  if (!made) made = parse_mesh_term(name);
+  if (!made) made = parse_ringing_term(name);
   return made;
 }
 
