@@ -126,6 +126,8 @@ def test_a_proposal_naming_the_hidden_effect_appears_on_the_card_within_30_s(loo
     assert shown["effects"] == "eccentricity"
     text = loop["driver"].find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .cell-proposal").text
     assert "add eccentricity" in text and "expected error" in text and "why:" in text
+    # The fitted misalignment in mrad, as diagnose prints it, not "0.0015 ± 2e-05 rad" (issue 39).
+    assert "eccentricity.eccentric_misalignment_rad = " in text and " mrad ± " in text, text
     loop["proposal"] = shown["proposal"]
 
 
