@@ -82,6 +82,14 @@ SampleOutcome CellMonitor::take(std::uint64_t run_id, std::uint64_t sequence_num
 
 void CellMonitor::add_to_windows(const RecordedSample& sample, const SensorMoments& predicted) {
   const double t = sample.input.time_s;
+  std::optional<SensorMoments> shadow;
+  if (shadow_) {
+    try {
+      shadow = shadow_->predict(sample.input).moments;
+    } catch (const ModelError&) {
+      // The proposal refuses what the model in force takes: left out of its figures.
+    }
+  }
   if (!window_origin_s_) window_origin_s_ = t;
   for (std::size_t i = 0; i < windows_.size(); ++i) {
     Window& window = windows_[i];
@@ -93,6 +101,12 @@ void CellMonitor::add_to_windows(const RecordedSample& sample, const SensorMomen
     }
     window.validation.add(sample, predicted);
     window.scale.add(sample.measured, predicted);
+    if (shadow) {
+      const double ey = shadow->y_nm - sample.measured.y_nm, ez = shadow->z_nm - sample.measured.z_nm;
+      window.shadow_sum_sq[0] += ey * ey;
+      window.shadow_sum_sq[1] += ez * ez;
+      ++window.shadow_count;
+    }
     window.end_s = t;
   }
 }
@@ -147,12 +161,15 @@ ModelPeriodReport CellMonitor::period(std::chrono::system_clock::time_point now)
   return report;
 }
 
+void CellMonitor::shadow(std::shared_ptr<const CouplingModel> model) { shadow_ = std::move(model); }
+
 void CellMonitor::swap_model(CellModel model) {
   const auto now = std::chrono::system_clock::now();
   previous_model_ = period(now);
   model_ = std::move(model);
   model_.since = now;
   evaluated_under_model_ = 0;
+  shadow_.reset();   // a proposal is about the model replaced
   restart_windows();
 }
 
@@ -196,6 +213,11 @@ HealthReport CellMonitor::health(std::chrono::system_clock::time_point now) cons
   }
   report.last_refusal = last_refusal_;
   report.last_model_refusal = last_model_refusal_;
+  if (shadow_ && window.shadow_count > 0) {
+    const double n = static_cast<double>(window.shadow_count);
+    report.proposal_rmse_nm = {std::sqrt(window.shadow_sum_sq[0] / n), std::sqrt(window.shadow_sum_sq[1] / n)};
+    report.proposal_samples = window.shadow_count;
+  }
   report.counts = counts_;
   return report;
 }

@@ -78,6 +78,10 @@ struct HealthReport {
   std::string unit_error;          ///< set by the monitor: unit_slip worded with its fix
   SampleCountsSnapshot counts;
   LearningStatus learning;         ///< set by the monitor (live/learning_status.h)
+  /// The standing proposal's model over the same window as `model` (CellMonitor::shadow): RMSE
+  /// per channel [N·m] and the samples it saw (fewer when it stood for part of the window only).
+  std::optional<std::array<double, 2>> proposal_rmse_nm;
+  std::uint64_t proposal_samples = 0;
 };
 
 class CellMonitor {
@@ -99,6 +103,9 @@ class CellMonitor {
   HealthReport health(std::chrono::system_clock::time_point now) const;
   /// After each measurement batch: counts it when the window's moments show a unit slip.
   void end_batch();
+  /// Also predicts every evaluated sample with `model` (a standing proposal's; nullptr: none),
+  /// over the same health windows, so "now" and "with it" are read on one window (issue 39).
+  void shadow(std::shared_ptr<const CouplingModel> model);
   const CellModel& model() const { return model_; }
   /// The latest evaluated samples of the current run, derived inputs filled in.
   const SampleWindow& recent_samples() const { return recent_; }
@@ -110,6 +117,8 @@ class CellMonitor {
     std::optional<double> begin_s = std::nullopt;
     double end_s = 0.0;
     analysis::MomentScale scale = {};   ///< measured against predicted RMS: the unit check
+    std::array<double, 2> shadow_sum_sq = {0.0, 0.0};   ///< the shadow model's errors [N²·m²]
+    std::uint64_t shadow_count = 0;
   };
   void restart_windows();
   void add_to_windows(const RecordedSample& sample, const SensorMoments& predicted);
@@ -121,6 +130,7 @@ class CellMonitor {
   CellMonitorOptions options_;
   CellModel model_;
   std::uint64_t evaluated_under_model_ = 0;
+  std::shared_ptr<const CouplingModel> shadow_;
   std::optional<ModelPeriodReport> previous_model_;
   std::uint64_t run_id_ = 0;
   std::uint64_t last_sequence_ = 0;

@@ -50,6 +50,11 @@ void write_health(dds_entity_t writer, const std::string& test_cell, std::uint64
   health.learning = lend(report.learning.text);
   health.learning_samples_missing = report.learning.samples_missing;
   health.unit_error = lend(report.unit_error);
+  if (report.proposal_rmse_nm) {
+    health.proposal_msy_rmse_nm = (*report.proposal_rmse_nm)[0];
+    health.proposal_msz_rmse_nm = (*report.proposal_rmse_nm)[1];
+    health.proposal_samples = report.proposal_samples;
+  }
   protocol::check_dds(dds_write(writer, &health), "dds_write(health)");
 }
 

@@ -634,6 +634,8 @@ void Monitor::take_outcome(DiagnosisOutcome outcome) {
 
 void Monitor::publish_proposal(Cell& cell) {
   if (cell.proposal->state == ProposalState::standing) ++proposals_published_;
+  // While it stands, its model also follows the health window: "now" and "with it" on one window.
+  cell.monitor.shadow(cell.proposal->state == ProposalState::standing ? cell.proposal->model : nullptr);
   write_proposal(proposal_writer_.get(), monitor_id_, *cell.proposal);
 }
 

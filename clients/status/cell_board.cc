@@ -69,6 +69,9 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   out.set_learning(sample_text(in.learning));
   out.set_learning_samples_missing(in.learning_samples_missing);
   out.set_unit_error(sample_text(in.unit_error));
+  out.set_proposal_msy_rmse_nm(in.proposal_msy_rmse_nm);
+  out.set_proposal_msz_rmse_nm(in.proposal_msz_rmse_nm);
+  out.set_proposal_samples(in.proposal_samples);
   // With hysteresis against the badge it showed (model_health.h).
   const ModelHealth shown = model_health_from(out.model_health());
   out.set_model_health(std::string(to_string(model_health(out.model(), in.window_samples, shown))));

@@ -46,6 +46,9 @@ HealthView health_view(const ::gearcoupling::v1::TestCellRecord& record) {
   v.learning = record.learning();
   v.learning_samples_missing = record.learning_samples_missing();
   v.unit_error = record.unit_error();
+  v.proposal_rmse_nm[0] = record.proposal_msy_rmse_nm();
+  v.proposal_rmse_nm[1] = record.proposal_msz_rmse_nm();
+  v.proposal_samples = record.proposal_samples();
   return v;
 }
 

@@ -35,6 +35,8 @@ struct HealthView {
   double sample_rate_hz = 0.0;
   std::string learning_state, learning, unit_error;   ///< live/learning_status.h
   std::uint64_t learning_samples_missing = 0;
+  double proposal_rmse_nm[2] = {};   ///< the standing proposal's model over the window
+  std::uint64_t proposal_samples = 0;
 };
 
 /// The view of a board's record (CellBoard::snapshot); members the record lacks stay 0 / "".

@@ -82,6 +82,13 @@ TEST_F(LiveTest, A50HzCellAtRealSpeedGetsAProposalWhileItRuns) {
   ASSERT_TRUE(health.has_value());
   EXPECT_EQ(health->learning_state, "proposed") << health->learning;
   EXPECT_NEAR(health->sample_rate_hz, 50.0, 0.5);
+  // "Now" and "with it" over one window: the proposal's model follows the health window.
+  const auto shadowed = health_.wait_for(
+      "rate-50", [](const status::HealthView& h) { return h.proposal_samples >= 50; }, 5s);
+  ASSERT_TRUE(shadowed.has_value());
+  EXPECT_GE(shadowed->proposal_samples, 50u);
+  EXPECT_LT(std::max(shadowed->proposal_rmse_nm[0], shadowed->proposal_rmse_nm[1]),
+            std::max(shadowed->rmse_nm[0], shadowed->rmse_nm[1]));
   replayer->signal(SIGTERM);   // the rest of the run adds nothing
   replayer->wait_exit(10.0);
 }
