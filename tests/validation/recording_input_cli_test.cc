@@ -104,6 +104,23 @@ TEST(RecordingInputCli, KilonewtonMetresOfTorqueUnderAnNmHeaderAreNamedAsAUnitSl
   EXPECT_NE(run.err.find("kN·m under a _nm header? (1000 times too small"), std::string::npos) << run.err;
 }
 
+// Issue 39, rough edges: a column named without its unit, a missing file, a misspelt model.
+TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWhatIsWrong) {
+  const std::string no_unit = with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy,msz_nm");
+  const ProcessResult unitless = run_gearcoupling({"validate", "--data", no_unit, "--model", "paper"});
+  EXPECT_EQ(unitless.exit_code, 2) << unitless.err;
+  EXPECT_NE(unitless.err.find("required column msy missing"), std::string::npos) << unitless.err;
+  EXPECT_NE(unitless.err.find("column 5 'msy' has no unit: name it msy_nm"), std::string::npos) << unitless.err;
+  const ProcessResult missing = run_gearcoupling({"validate", "--data", "/nonexistent/rec.csv", "--model", "paper"});
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  EXPECT_NE(missing.err.find("cannot read recording /nonexistent/rec.csv: No such file or directory"),
+            std::string::npos) << missing.err;
+  const ProcessResult misspelt = run_gearcoupling({"validate", "--data", kSweep, "--model", "papr"});
+  EXPECT_EQ(misspelt.exit_code, 2) << misspelt.err;
+  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind)"),
+            std::string::npos) << misspelt.err;
+}
+
 // A dyno that logs the drive torque negative: refused with what to do, and --negate torque reads
 // the same recording as the positive one.
 TEST(RecordingInputCli, NegativeTorqueIsRefusedWithTheHintAndNegateTorqueReadsIt) {
