@@ -1,5 +1,8 @@
 #include "analysis/recording_csv.h"
 
+#include <cerrno>
+#include <cstring>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -271,9 +274,18 @@ RecordingHeader parse_recording_header(std::string_view header, std::string_view
   }
   for (std::size_t q = 0; q < kRequiredCount; ++q) {
     if (seen[q] == 0) {
+      // A column named for the quantity without its unit ("msy") is there: say only the unit is
+      // missing, not the column (issue 39).
+      std::string hint;
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        if (renamed(names[i], renames) == quantity_name(kQuantities[q])) {
+          hint = fmt::format("; column {} '{}' has no unit: name it {}", i + 1, names[i],
+                             spellings_text(kQuantities[q]));
+        }
+      }
       header_error(source_name, 0, quantity_name(kQuantities[q]),
-                   fmt::format("required column {} missing (one of: {})",
-                               quantity_name(kQuantities[q]), spellings_text(kQuantities[q])));
+                   fmt::format("required column {} missing (one of: {}){}",
+                               quantity_name(kQuantities[q]), spellings_text(kQuantities[q]), hint));
     }
   }
   return result;
@@ -286,7 +298,12 @@ RecordingReader::RecordingReader(const std::filesystem::path& path,
 RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
     : source_name_(path.filename().string()),
       in_(path, std::ios::binary) {
-  if (!in_) throw InvalidInput("recording", "cannot read recording " + path.string());
+  if (!in_) {
+    // The OS's reason: no such file, permission denied, a directory (issue 39).
+    const int reason = errno;
+    throw InvalidInput("recording", "cannot read recording " + path.string() + ": " +
+                                        std::strerror(reason));
+  }
   if (!next_csv_line(in_, line_, line_number_)) {
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }

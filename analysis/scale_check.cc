@@ -64,14 +64,30 @@ std::optional<std::string> MomentScale::refusal(std::string_view model_name) con
   return std::nullopt;
 }
 
-void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal) {
+std::string unit_slip_error(std::string_view source, std::string_view refusal, UnitFix fix) {
+  std::string_view remedy;
+  switch (fix) {
+    case UnitFix::cli:
+      remedy = "give the column its unit (rename it in the file, or --columns msy_knm=HEADER), "
+               "or --force-scale to run anyway";
+      break;
+    case UnitFix::python:
+      remedy = "give the column its unit (rename it, or columns={'msy_knm': 'HEADER'}), or "
+               "force_scale=True to run anyway";
+      break;
+    case UnitFix::stream:
+      remedy = "the publisher must send N·m (the measurement's _nm members; kN·m x 1000); no "
+               "diagnosis meanwhile";
+      break;
+  }
+  return fmt::format("{}: unit error: {}; a fit to moments 1000 times off says nothing: {}",
+                     source, refusal, remedy);
+}
+
+void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal,
+                      UnitFix fix) {
   if (!refusal) return;
-  throw InvalidInput(
-      "recording",
-      fmt::format("{}: {}; a fit to moments 1000 times off says nothing: give the column its "
-                  "unit (rename it in the file, or --columns msy_knm=HEADER), or --force-scale "
-                  "to run anyway",
-                  source, *refusal));
+  throw InvalidInput("recording", unit_slip_error(source, *refusal, fix));
 }
 
 std::vector<MomentScale::ChannelSlip> MomentScale::slips(std::string_view model_name) const {
@@ -97,6 +113,17 @@ std::vector<MomentScale::ChannelSlip> MomentScale::slips(std::string_view model_
         *slip == kUnitSlips.back() ? " or degrees and radians in the misalignment's" : "")});
   }
   return warnings;
+}
+
+std::optional<std::string> torque_scale_warning(double largest_torque_nm, double reference_torque_nm) {
+  if (!(largest_torque_nm > 0.0) || !(reference_torque_nm > 0.0)) return std::nullopt;
+  const double share = largest_torque_nm / reference_torque_nm;
+  const bool plausible_in_knm = share * kRefusedSlip >= kPlausibleLow && share * kRefusedSlip <= kPlausibleHigh;
+  if (share >= 0.01 || !plausible_in_knm) return std::nullopt;
+  return fmt::format("torque reaches only {}, {:.3g} of T_ref ({}): kN·m under a _nm header? "
+                     "(1000 times too small: give the column its unit, torque_knm)",
+                     engineering_text(largest_torque_nm, "N·m"), share,
+                     engineering_text(reference_torque_nm, "N·m"));
 }
 
 std::optional<std::string> misalignment_scale_warning(double largest_misalignment_rad,

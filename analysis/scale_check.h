@@ -44,14 +44,33 @@ class MomentScale {
   std::size_t count_ = 0;
 };
 
-/// Throws gc::InvalidInput naming "recording" when `refusal` holds one: `source`, the warning,
-/// and what to do (fix the header or --columns; --force-scale runs anyway).
-void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal);
+/// Where the moments came from, for the fix a unit-slip error names.
+enum class UnitFix {
+  cli,      ///< a recording read by the CLI: rename the column or --columns; --force-scale
+  python,   ///< a recording read by Python: rename the column or columns=; force_scale=True
+  stream,   ///< a live stream (the monitor): the publisher must send N·m, as the topic says
+};
+
+/// The one wording of a unit slip (`refusal`, MomentScale::refusal) at `source`: a unit error,
+/// the finding, and the fix for `fix`. validate, diagnose, replay, the monitor (and through its
+/// health the dashboard and `status`) and Python all say it with this function.
+std::string unit_slip_error(std::string_view source, std::string_view refusal, UnitFix fix);
+
+/// Throws gc::InvalidInput naming "recording" when `refusal` holds one, worded by
+/// unit_slip_error.
+void refuse_unit_slip(std::string_view source, const std::optional<std::string>& refusal,
+                      UnitFix fix = UnitFix::cli);
 
 /// Degrees under a _rad header make the misalignment 57.3 times too large; radians under _deg,
 /// 57.3 times too small. A warning when the largest misalignment of the recording, times or
 /// divided by 57.3, would fall between 0.1 and 3 jam angles while as read it is far outside.
 std::optional<std::string> misalignment_scale_warning(double largest_misalignment_rad,
                                                       double jam_angle_rad);
+
+/// kN·m under a torque_nm header make the torque 1000 times too small: the model then refuses
+/// light torques near the jam angle with a reason about eq 22, not the unit (issue 39). A
+/// warning when the largest torque, times 1000, would fall between 0.1 and 3 T_ref while as read
+/// it is under a hundredth of it.
+std::optional<std::string> torque_scale_warning(double largest_torque_nm, double reference_torque_nm);
 
 }  // namespace gc::analysis

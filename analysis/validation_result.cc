@@ -49,6 +49,9 @@ v1::ValidationResult validation_result(const RecordingSummary& recording,
   if (auto warning = misalignment_scale_warning(recording.largest_misalignment_rad, binning.jam_angle_rad)) {
     result.add_warnings(*warning);
   }
+  if (auto warning = torque_scale_warning(recording.largest_torque_nm, binning.reference_torque_nm)) {
+    result.add_warnings(*warning);
+  }
   return result;
 }
 
@@ -86,10 +89,11 @@ RecordingCheck check_recording(const CouplingModel& model, std::string_view mode
                                const std::vector<RecordedSample>& samples) {
   RecordingCheck check;
   MomentScale scale;
-  double largest_misalignment_rad = 0.0;
+  double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const RecordedSample& sample = samples[i];
     largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
+    largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
     try {
       scale.add(sample.measured, model.predict_at(std::span<const RecordedSample>(samples), i).moments);
       ++check.compared;
@@ -103,6 +107,10 @@ RecordingCheck check_recording(const CouplingModel& model, std::string_view mode
   check.refusal = scale.refusal(model_name);
   if (auto warning = misalignment_scale_warning(largest_misalignment_rad,
                                                 model.geometry().jam_angle().angle_rad)) {
+    check.warnings.push_back(*warning);
+  }
+  // T_ref as validate's default: check_recording is not given one.
+  if (auto warning = torque_scale_warning(largest_torque_nm, BinningOptions{}.reference_torque_nm)) {
     check.warnings.push_back(*warning);
   }
   return check;

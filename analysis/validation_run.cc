@@ -65,10 +65,11 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
   RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated});
   std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
-  double largest_misalignment_rad = 0.0;
+  double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
   while (reader.next_chunk(chunk, options.chunk_samples)) {
     for (const RecordedSample& sample : chunk) {
       largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
+      largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
     }
     for (ModelRun& run : runs) {
       predict_chunk(*run.model, chunk, options.threads, outcomes);
@@ -76,7 +77,7 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
     }
   }
   return {path.filename().string(), reader.rows_read(), reader.excluded_rows(), reader.problems(),
-          reader.ignored_columns(), largest_misalignment_rad};
+          reader.ignored_columns(), largest_misalignment_rad, largest_torque_nm};
 }
 
 }  // namespace gc::analysis

@@ -31,6 +31,7 @@ struct RecordingSummary {
   std::vector<RowProblem> problems;   ///< the first RecordingReader::kKeptProblems
   std::vector<std::string> ignored_columns;
   double largest_misalignment_rad = 0.0;   ///< of the rows read well, refused ones included
+  double largest_torque_nm = 0.0;          ///< |T|, likewise
 };
 
 struct ValidationRunOptions {

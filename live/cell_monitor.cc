@@ -82,6 +82,14 @@ SampleOutcome CellMonitor::take(std::uint64_t run_id, std::uint64_t sequence_num
 
 void CellMonitor::add_to_windows(const RecordedSample& sample, const SensorMoments& predicted) {
   const double t = sample.input.time_s;
+  std::optional<SensorMoments> shadow;
+  if (shadow_) {
+    try {
+      shadow = shadow_->predict(sample.input).moments;
+    } catch (const ModelError&) {
+      // The proposal refuses what the model in force takes: left out of its figures.
+    }
+  }
   if (!window_origin_s_) window_origin_s_ = t;
   for (std::size_t i = 0; i < windows_.size(); ++i) {
     Window& window = windows_[i];
@@ -92,6 +100,13 @@ void CellMonitor::add_to_windows(const RecordedSample& sample, const SensorMomen
       window = Window{ValidationAccumulator(binning()), t, t};
     }
     window.validation.add(sample, predicted);
+    window.scale.add(sample.measured, predicted);
+    if (shadow) {
+      const double ey = shadow->y_nm - sample.measured.y_nm, ez = shadow->z_nm - sample.measured.z_nm;
+      window.shadow_sum_sq[0] += ey * ey;
+      window.shadow_sum_sq[1] += ez * ez;
+      ++window.shadow_count;
+    }
     window.end_s = t;
   }
 }
@@ -102,6 +117,31 @@ const CellMonitor::Window& CellMonitor::reported_window() const {
   if (!b.begin_s) return a;
   if (!a.begin_s) return b;
   return *a.begin_s <= *b.begin_s ? a : b;
+}
+
+namespace {
+// A channel's RMSE at least this many times its noise: beyond "far off" (3 x).
+constexpr double kSlipOverNoise = 10.0;
+}  // namespace
+
+std::optional<std::string> CellMonitor::unit_slip() const {
+  const Window& window = reported_window();
+  if (window.validation.overall().count() < kSamplesForUnitCheck) return std::nullopt;
+  std::optional<std::string> refusal = window.scale.refusal(model_.name);
+  if (!refusal) return refusal;
+  // Only an error far above the noise is a slip: an aligned, unloaded cell's noise against a
+  // model near zero can be 1000 times it too, and no unit is at fault there.
+  for (Channel channel : kChannels) {
+    if (window.validation.overall()[channel].metrics().rmse_nm >=
+        kSlipOverNoise * window.validation.noise_estimate_nm(channel)) {
+      return refusal;
+    }
+  }
+  return std::nullopt;
+}
+
+void CellMonitor::end_batch() {
+  if (unit_slip()) ++counts_.unit_slip_batches;
 }
 
 ModelPeriodReport CellMonitor::period(std::chrono::system_clock::time_point now) const {
@@ -121,12 +161,15 @@ ModelPeriodReport CellMonitor::period(std::chrono::system_clock::time_point now)
   return report;
 }
 
+void CellMonitor::shadow(std::shared_ptr<const CouplingModel> model) { shadow_ = std::move(model); }
+
 void CellMonitor::swap_model(CellModel model) {
   const auto now = std::chrono::system_clock::now();
   previous_model_ = period(now);
   model_ = std::move(model);
   model_.since = now;
   evaluated_under_model_ = 0;
+  shadow_.reset();   // a proposal is about the model replaced
   restart_windows();
 }
 
@@ -156,13 +199,25 @@ HealthReport CellMonitor::health(std::chrono::system_clock::time_point now) cons
   report.window_begin_s = window.begin_s.value_or(0.0);
   report.window_end_s = window.end_s;
   report.window_samples = window.validation.overall().count();
+  const double span_s = report.window_end_s - report.window_begin_s;
+  if (report.window_samples >= 2 && span_s > 0.0) {
+    report.sample_rate_hz = static_cast<double>(report.window_samples - 1) / span_s;
+  }
   report.model = period(now);
   report.previous_model = previous_model_;
-  if (report.window_samples >= 2) {
+  report.unit_slip = unit_slip();
+  // Under a unit slip every region errs: a region's sentence would send the reader after the
+  // model ("errs most at medium misalignment") when the unit is at fault.
+  if (report.window_samples >= 2 && !report.unit_slip) {
     report.worst_region = worst_region_text(window.validation);
   }
   report.last_refusal = last_refusal_;
   report.last_model_refusal = last_model_refusal_;
+  if (shadow_ && window.shadow_count > 0) {
+    const double n = static_cast<double>(window.shadow_count);
+    report.proposal_rmse_nm = {std::sqrt(window.shadow_sum_sq[0] / n), std::sqrt(window.shadow_sum_sq[1] / n)};
+    report.proposal_samples = window.shadow_count;
+  }
   report.counts = counts_;
   return report;
 }

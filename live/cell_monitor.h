@@ -11,9 +11,11 @@
 #include <string>
 
 #include "analysis/derived_inputs.h"
+#include "analysis/scale_check.h"
 #include "core/recorded_sample.h"
 #include "core/validation/error_bins.h"
 #include "live/cell_model.h"
+#include "live/learning_status.h"
 #include "live/sample_window.h"
 
 namespace gc::live {
@@ -38,9 +40,13 @@ struct CellMonitorOptions {
 /// What happened to one sample.
 enum class SampleOutcome { evaluated, refused_not_finite, refused_by_model, refused_out_of_order };
 
+/// Samples a window must hold before its moments' scale is judged: a 1000-fold slip shows in a
+/// handful, and a 1 Hz cell's 10 s window holds 5 to 10.
+inline constexpr std::uint64_t kSamplesForUnitCheck = 5;
+
 struct SampleCountsSnapshot {
   std::uint64_t taken = 0, evaluated = 0, refused_not_finite = 0, refused_by_model = 0,
-                refused_out_of_order = 0, lost = 0, runs = 0;
+                refused_out_of_order = 0, lost = 0, runs = 0, unit_slip_batches = 0;
 };
 
 struct ChannelFigures {
@@ -59,12 +65,23 @@ struct ModelPeriodReport {
 struct HealthReport {
   double window_begin_s = 0.0, window_end_s = 0.0;   ///< measurement time [s]
   std::uint64_t window_samples = 0;
+  /// Evaluated samples per second of measurement time over the window; 0 under 2 samples [Hz].
+  double sample_rate_hz = 0.0;
   ModelPeriodReport model;
   std::optional<ModelPeriodReport> previous_model;
   std::string worst_region;        ///< validate's sentence, "" when none stands out
   std::string last_refusal;        ///< "field: message"
   std::string last_model_refusal;
+  /// The unit check's finding on the window's moments (analysis::MomentScale::refusal, as
+  /// validate's): nullopt when none, or under kSamplesForUnitCheck samples.
+  std::optional<std::string> unit_slip;
+  std::string unit_error;          ///< set by the monitor: unit_slip worded with its fix
   SampleCountsSnapshot counts;
+  LearningStatus learning;         ///< set by the monitor (live/learning_status.h)
+  /// The standing proposal's model over the same window as `model` (CellMonitor::shadow): RMSE
+  /// per channel [N·m] and the samples it saw (fewer when it stood for part of the window only).
+  std::optional<std::array<double, 2>> proposal_rmse_nm;
+  std::uint64_t proposal_samples = 0;
 };
 
 class CellMonitor {
@@ -84,6 +101,11 @@ class CellMonitor {
   void refuse_model(std::string reason) { last_model_refusal_ = std::move(reason); }
 
   HealthReport health(std::chrono::system_clock::time_point now) const;
+  /// After each measurement batch: counts it when the window's moments show a unit slip.
+  void end_batch();
+  /// Also predicts every evaluated sample with `model` (a standing proposal's; nullptr: none),
+  /// over the same health windows, so "now" and "with it" are read on one window (issue 39).
+  void shadow(std::shared_ptr<const CouplingModel> model);
   const CellModel& model() const { return model_; }
   /// The latest evaluated samples of the current run, derived inputs filled in.
   const SampleWindow& recent_samples() const { return recent_; }
@@ -94,16 +116,21 @@ class CellMonitor {
     ValidationAccumulator validation;
     std::optional<double> begin_s = std::nullopt;
     double end_s = 0.0;
+    analysis::MomentScale scale = {};   ///< measured against predicted RMS: the unit check
+    std::array<double, 2> shadow_sum_sq = {0.0, 0.0};   ///< the shadow model's errors [N²·m²]
+    std::uint64_t shadow_count = 0;
   };
   void restart_windows();
   void add_to_windows(const RecordedSample& sample, const SensorMoments& predicted);
   const Window& reported_window() const;
+  std::optional<std::string> unit_slip() const;
   ModelPeriodReport period(std::chrono::system_clock::time_point now) const;
   BinningOptions binning() const;
 
   CellMonitorOptions options_;
   CellModel model_;
   std::uint64_t evaluated_under_model_ = 0;
+  std::shared_ptr<const CouplingModel> shadow_;
   std::optional<ModelPeriodReport> previous_model_;
   std::uint64_t run_id_ = 0;
   std::uint64_t last_sequence_ = 0;

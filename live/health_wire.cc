@@ -44,7 +44,17 @@ void write_health(dds_entity_t writer, const std::string& test_cell, std::uint64
   health.last_model_refusal = lend(report.last_model_refusal);
   const SampleCountsSnapshot& c = report.counts;
   health.counts = {c.taken, c.evaluated, c.refused_not_finite, c.refused_by_model,
-                   c.refused_out_of_order, c.lost, c.runs};
+                   c.refused_out_of_order, c.lost, c.runs, c.unit_slip_batches};
+  health.sample_rate_hz = report.sample_rate_hz;
+  health.learning_state = lend(report.learning.state);
+  health.learning = lend(report.learning.text);
+  health.learning_samples_missing = report.learning.samples_missing;
+  health.unit_error = lend(report.unit_error);
+  if (report.proposal_rmse_nm) {
+    health.proposal_msy_rmse_nm = (*report.proposal_rmse_nm)[0];
+    health.proposal_msz_rmse_nm = (*report.proposal_rmse_nm)[1];
+    health.proposal_samples = report.proposal_samples;
+  }
   protocol::check_dds(dds_write(writer, &health), "dds_write(health)");
 }
 

@@ -35,6 +35,11 @@ struct Monitor::Cell {
   std::optional<Clock::time_point> onset_of_diagnosis = std::nullopt;
   std::optional<Proposal> proposal = std::nullopt;
   std::uint64_t evaluated_at_proposal = 0;
+  // What the learning status says (live/learning_status.h): the latest diagnosis' note when it
+  // found nothing, whether the queue refused the latest one, the state last logged.
+  std::optional<std::string> found_nothing = std::nullopt;
+  bool queue_full = false;
+  std::string logged_learning_state = {};
 };
 
 namespace {
@@ -433,6 +438,7 @@ void Monitor::take_measurements() {
         c.residuals.push_back({m.sequence_number, m.time_s, m.msy_nm, m.msz_nm, predicted.y_nm,
                                predicted.z_nm});
       }
+      c.monitor.end_batch();
       if (c.residuals.empty()) continue;
       gearcoupling_ResidualBatch out{};
       std::copy_n(test_cell.c_str(), test_cell.size() + 1, out.test_cell);
@@ -461,11 +467,16 @@ void Monitor::publish_health() {
       it = cells_.erase(it);
       continue;
     }
-    const HealthReport health = it->second->monitor.health(wall);
+    HealthReport health = it->second->monitor.health(wall);
     const bool stale = silent_s >= options_.stale_s;
+    if (health.unit_slip) {
+      health.unit_error = analysis::unit_slip_error("test cell " + it->first, *health.unit_slip,
+                                                    analysis::UnitFix::stream);
+    }
+    if (worker_) learn(it->first, *it->second, health, stale);
+    health.learning = learning_of(it->first, *it->second, health, stale);
     write_health(health_writer_.get(), it->first, monitor_id_, stale, health);
     audit_.follow(it->first, health, now);
-    if (worker_) learn(it->first, *it->second, health, stale);
     ++it;
   }
   refusals_.flush();
@@ -486,7 +497,10 @@ void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport
   const auto now = Clock::now();
   const LearningOptions& o = options_.learning;
   const std::size_t needed = min_diagnosis_samples();
-  const bool systematic = health.window_samples >= needed &&
+  // Judged on a sample count, not on the diagnosis' 400: a 10 s window at 50 Hz holds 250-500,
+  // and wanting 400 there reset the clock every other window (issue 39).
+  // Moments 1000 times off are a unit error, not something a model lacks.
+  const bool systematic = !health.unit_slip && health.window_samples >= kSamplesToJudge &&
                           (!health.model.channels[0].at_noise_level ||
                            !health.model.channels[1].at_noise_level);
   if (!systematic) {
@@ -494,6 +508,7 @@ void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport
   } else if (!cell.systematic_since) {
     cell.systematic_since = now;
   }
+  cell.queue_full = false;
   const SampleWindow& window = cell.monitor.recent_samples();
   if (stale || window.size() < needed || worker_->busy(test_cell)) return;
   auto due = [&](const std::optional<Clock::time_point>& last, double period_s) {
@@ -504,11 +519,8 @@ void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport
       health.counts.evaluated - cell.evaluated_at_proposal >= needed &&
       due(cell.rechecked_at ? cell.rechecked_at : cell.diagnosed_at, o.recheck_s)) {
     job.recheck = cell.proposal;
-    cell.rechecked_at = now;
   } else if (cell.systematic_since && seconds_between(*cell.systematic_since, now) >= o.diagnose_after_s &&
              due(cell.diagnosed_at, o.rediagnose_s)) {
-    cell.diagnosed_at = now;
-    cell.onset_of_diagnosis = cell.systematic_since;
   } else {
     return;
   }
@@ -516,15 +528,62 @@ void Monitor::learn(const std::string& test_cell, Cell& cell, const HealthReport
   const bool recheck = job.recheck.has_value();
   if (!worker_->submit(std::move(job))) {
     ++diagnoses_dropped_;
+    cell.queue_full = !recheck;
     spdlog::debug("test cell {}: diagnosis queue full, {} dropped", test_cell,
                   recheck ? "recheck" : "diagnosis");
     return;
+  }
+  // Marked only once submitted: a job the full queue refused is tried again next period.
+  if (recheck) {
+    cell.rechecked_at = now;
+  } else {
+    cell.diagnosed_at = now;
+    cell.onset_of_diagnosis = cell.systematic_since;
   }
   spdlog::info("test cell {}: {} on {} samples", test_cell,
                recheck ? "rechecking proposal " + hex16(cell.proposal->id)
                        : "error beyond the noise for " +
                              fmt::format("{:.1f} s, diagnosing", seconds_between(*cell.systematic_since, now)),
                window.size());
+}
+
+LearningStatus Monitor::learning_of(const std::string& test_cell, Cell& cell,
+                                    const HealthReport& health, bool stale) {
+  const auto now = Clock::now();
+  const LearningOptions& o = options_.learning;
+  LearningInputs in;
+  in.enabled = worker_ != nullptr;
+  in.stale = stale;
+  in.sample_rate_hz = health.sample_rate_hz;
+  in.window_s = options_.cell.window_s;
+  in.window_samples = health.window_samples;
+  in.beyond_noise = cell.systematic_since.has_value();
+  if (cell.systematic_since) in.beyond_noise_for_s = seconds_between(*cell.systematic_since, now);
+  in.diagnose_after_s = o.diagnose_after_s;
+  in.rolling_samples = cell.monitor.recent_samples().size();
+  in.samples_needed = min_diagnosis_samples();
+  if (worker_ && worker_->busy(test_cell)) {
+    (worker_->running() == test_cell ? in.diagnosis_running : in.diagnosis_queued) = true;
+  }
+  in.queue_full = cell.queue_full;
+  if (cell.proposal && cell.proposal->state == ProposalState::standing) {
+    in.standing_proposal = hex16(cell.proposal->id);
+  }
+  // Its first line: the diagnosis' summary runs to a paragraph.
+  if (cell.found_nothing) in.found_nothing = cell.found_nothing->substr(0, cell.found_nothing->find('\n'));
+  if (cell.diagnosed_at) {
+    in.next_diagnosis_in_s = o.rediagnose_s - seconds_between(*cell.diagnosed_at, now);
+  }
+  LearningStatus status = learning_status(in);
+  if (health.unit_slip && !in.diagnosis_running && !in.diagnosis_queued) {
+    status = {"unit_error", health.unit_error, 0};
+  }
+  // One log line per change of state: a cell far off and not diagnosed says why (issue 39).
+  if (status.state != cell.logged_learning_state) {
+    spdlog::info("test cell {}: learning: {}", test_cell, status.text);
+    cell.logged_learning_state = status.state;
+  }
+  return status;
 }
 
 void Monitor::take_outcomes() {
@@ -568,7 +627,9 @@ void Monitor::take_outcome(DiagnosisOutcome outcome) {
     publish_proposal(cell);
     return;
   }
+  cell.found_nothing.reset();
   if (!outcome.proposal) {
+    cell.found_nothing = outcome.note;
     spdlog::info("test cell {}: diagnosis proposes nothing ({:.1f} s CPU): {}", outcome.test_cell,
                  outcome.cpu_s, outcome.note);
     return;
@@ -595,6 +656,8 @@ void Monitor::take_outcome(DiagnosisOutcome outcome) {
 
 void Monitor::publish_proposal(Cell& cell) {
   if (cell.proposal->state == ProposalState::standing) ++proposals_published_;
+  // While it stands, its model also follows the health window: "now" and "with it" on one window.
+  cell.monitor.shadow(cell.proposal->state == ProposalState::standing ? cell.proposal->model : nullptr);
   write_proposal(proposal_writer_.get(), monitor_id_, *cell.proposal);
 }
 

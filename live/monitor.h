@@ -15,6 +15,7 @@
 
 #include "live/cell_monitor.h"
 #include "live/diagnosis_worker.h"
+#include "live/learning_status.h"
 #include "live/monitor_status_wire.h"
 #include "live/refusal_log.h"
 #include "live/swap_audit.h"
@@ -105,6 +106,9 @@ class Monitor {
   void publish_health();
   /// Submits a diagnosis of `cell`, or a recheck of its standing proposal, when due.
   void learn(const std::string& test_cell, Cell& cell, const HealthReport& health, bool stale);
+  /// What the learning loop does for `cell` and waits for (after learn), logged when it changes.
+  LearningStatus learning_of(const std::string& test_cell, Cell& cell, const HealthReport& health,
+                             bool stale);
   /// Publishes what the worker found (on the monitor's thread).
   void take_outcomes();
   void take_outcome(DiagnosisOutcome outcome);

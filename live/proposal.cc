@@ -35,6 +35,20 @@ void add_parameters(const v1::ParameterSetRecord& claimed, std::vector<ProposalP
   }
 }
 
+/// The effects `round` found alike to the one it claimed, with their held-out error from its
+/// ranking (the same rows as the claim's).
+std::vector<ProposalAlternative> alternatives_of(const v1::RoundRecord& round) {
+  std::vector<ProposalAlternative> out;
+  for (const v1::AlikeRecord& alike : round.alike()) {
+    ProposalAlternative a{alike.effect(), 0.0, alike.correlation(), alike.experiment()};
+    for (const v1::CandidateRecord& c : round.ranking()) {
+      if (c.effect() == alike.effect()) a.held_out_rmse_nm = c.held_out_rmse_nm();
+    }
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 }  // namespace
 
 double Proposal::reduction() const {
@@ -68,6 +82,7 @@ std::optional<Proposal> proposal_from(const Diagnosis& diagnosis, const CellMode
       p.kind = figures.kind;
       p.before_rmse_nm = figures.before_nm;
       p.noise_nm = round.noise_rmse_nm();
+      p.alternatives = alternatives_of(round);
       first = false;
     }
     p.after_rmse_nm = figures.after_nm;

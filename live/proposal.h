@@ -28,6 +28,14 @@ struct ProposalParameter {
   std::string note;
 };
 
+/// An effect the data cannot tell from the proposed one (the round's "alike").
+struct ProposalAlternative {
+  std::string effect;
+  double held_out_rmse_nm = 0.0;    ///< [N·m]
+  double correlation = 0.0;
+  std::string experiment;           ///< one sentence, "" when no recorded input separates them
+};
+
 struct Proposal {
   std::string test_cell;
   std::uint64_t id = 0;             ///< random, never 0
@@ -48,6 +56,7 @@ struct Proposal {
   std::chrono::system_clock::time_point proposed_at{};
   double onset_to_proposal_s = 0.0; ///< [s]
   double diagnosis_cpu_s = 0.0;     ///< [s]
+  std::vector<ProposalAlternative> alternatives;   ///< of the first claiming round
 
   /// The share of the error it removes: 1 - after / before.
   double reduction() const;

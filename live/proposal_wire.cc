@@ -27,6 +27,11 @@ void write_proposal(dds_entity_t writer, std::uint64_t monitor_id, const Proposa
     parameters.push_back({lend(q.effect), lend(q.name), lend(q.unit), q.value, q.standard_error,
                           q.held, q.plausible, lend(q.note)});
   }
+  std::vector<gearcoupling_ProposalAlternative> alternatives;
+  for (const ProposalAlternative& a : p.alternatives) {
+    if (alternatives.size() == 8) break;   // the IDL's bound
+    alternatives.push_back({lend(a.effect), a.held_out_rmse_nm, a.correlation, lend(a.experiment)});
+  }
   gearcoupling_ModelProposal out{};
   set_test_cell(out.test_cell, p.test_cell);
   out.proposal_id = p.id;
@@ -52,6 +57,9 @@ void write_proposal(dds_entity_t writer, std::uint64_t monitor_id, const Proposa
   out.proposed_unix_s = unix_seconds(p.proposed_at);
   out.onset_to_proposal_s = p.onset_to_proposal_s;
   out.diagnosis_cpu_s = p.diagnosis_cpu_s;
+  out.alternatives._buffer = alternatives.data();
+  out.alternatives._length = out.alternatives._maximum = static_cast<std::uint32_t>(alternatives.size());
+  out.alternatives._release = false;
   protocol::check_dds(dds_write(writer, &out), "dds_write(proposal)");
 }
 

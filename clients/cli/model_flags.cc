@@ -1,5 +1,10 @@
 #include "clients/cli/model_flags.h"
 
+#include <algorithm>
+#include <string>
+#include <system_error>
+#include <vector>
+
 namespace gc::cli {
 
 FlagSpec model_flag() {
@@ -10,10 +15,34 @@ FlagSpec model_flag() {
 
 std::filesystem::path default_models_dir() { return codec::default_models_dir(); }
 
+namespace {
+
+/// The bundled model names, sorted: what --model takes besides a file.
+std::string bundled_model_names() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(default_models_dir(), error)) {
+    if (entry.path().extension() == ".textproto") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text.empty() ? "none found" : text;
+}
+
+}  // namespace
+
 std::filesystem::path model_flag_path(const Flags& flags) {
   const std::string& model = flags.text("model");
   const bool is_file = model.find('/') != std::string::npos || model.ends_with(".textproto");
-  return is_file ? std::filesystem::path(model) : default_models_dir() / (model + ".textproto");
+  if (is_file) return model;
+  const std::filesystem::path bundled = default_models_dir() / (model + ".textproto");
+  // A misspelt name ("papr") gets the names there are, not a missing file's path (issue 39).
+  if (!std::filesystem::exists(bundled)) {
+    throw UsageError("--model '" + model + "': no such bundled model (" + bundled_model_names() +
+                     ") nor a .textproto file");
+  }
+  return bundled;
 }
 
 codec::ModelFile load_model_flag(const Flags& flags) {

@@ -1,6 +1,9 @@
 // gearcoupling replay: a recording published as a live test cell (live/replay.h).
 #include <fmt/format.h>
 
+#include "analysis/scale_check.h"
+#include "analysis/validation_result.h"
+#include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
 #include "live/live_topics.h"
@@ -20,14 +23,36 @@ std::vector<FlagSpec> replay_flags() {
       {"wait-s", "s", "seconds to wait for them at most", "10", false, '\0', {"wait"}},
       columns_flag(),
       negate_flag(),
+      {"model", "FILE|NAME",
+       "the model the unit check compares the moments with (validate's: moments 1000 times the "
+       "model's are refused; a .textproto file or a name in data/models)",
+       "paper"},
+      force_scale_flag(),
       live_domain_flag(),
-      catalogue_flag(),   // every subcommand has one (make_calculator); not read here
+      catalogue_flag(),   // where --model's coupling is looked up
   };
 }
 
 std::optional<double> optional_number(const Flags& flags, std::string_view name) {
   if (flags.text(name).empty()) return std::nullopt;
   return flags.number(name);
+}
+
+/// Rows the unit check reads from the recording's start: enough for the RMS of each channel,
+/// and a replay of a long recording need not read it twice.
+constexpr std::size_t kUnitCheckRows = 4096;
+
+/// validate's unit check (analysis/scale_check.h) on the recording's first rows against
+/// --model: replay refuses what validate refuses, before anything is published.
+void check_units(const Flags& flags, const analysis::RecordingOptions& options) {
+  if (flags.enabled("force-scale")) return;
+  analysis::RecordingReader reader(flags.text("in"), options);
+  std::vector<RecordedSample> rows;
+  reader.next_chunk(rows, kUnitCheckRows);
+  const codec::ModelFile model = load_model_flag(flags);
+  const analysis::RecordingCheck check = analysis::check_recording(model.model, model.name, rows);
+  print_recording_notes("replay", {}, check.warnings);
+  analysis::refuse_unit_slip(flags.text("in"), check.refusal);
 }
 
 int run_replay(const Flags& flags, const Calculator&, std::FILE* out) {
@@ -40,6 +65,7 @@ int run_replay(const Flags& flags, const Calculator&, std::FILE* out) {
   options.wait_for_readers = static_cast<std::uint32_t>(flags.integer("readers", 0, 1000));
   options.recording.renames = column_renames(flags);
   options.recording.negated = negated_quantities(flags);
+  check_units(flags, options.recording);
   const protocol::Entity participant = live::make_participant(domain_from(flags));
   const live::ReplayResult result = live::replay_recording(participant.get(), flags.text("in"), options);
   fmt::print(out, "replayed {} samples of {} as test cell {} in {:.3f} s (run {:016x})\n",

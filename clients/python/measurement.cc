@@ -36,7 +36,7 @@ ValidationResultObject validate(const RecordingArgument& recording_argument,
                                 const ModelArgument& model_argument_, const std::string& add,
                     double reference_torque_nm, unsigned threads,
                     const std::optional<std::string>& columns,
-                    const std::optional<std::filesystem::path>& html) {
+                    const std::optional<std::filesystem::path>& html, bool force_scale) {
   const Recording recording = recording_source(recording_argument, columns);
   const Model model = model_argument(model_argument_);
   std::unique_ptr<analysis::ModelValidation> validation;
@@ -47,6 +47,12 @@ ValidationResultObject validate(const RecordingArgument& recording_argument,
         {static_cast<int>(threads_argument(threads)), 1u << 15, recording.renames});
     if (recording.scratch) validation->result.set_recording(recording.source);  // not the scratch file
     analysis::require_compared_samples(validation->result);
+    // The CLI's unit check, worded by the same function: refused, not a warning in .warnings.
+    if (!force_scale) {
+      const analysis::ModelRun& run = validation->runs.front();
+      analysis::refuse_unit_slip(recording.source, run.scale.refusal(run.name),
+                                 analysis::UnitFix::python);
+    }
     if (html) {
       analysis::write_validation_report(*html, analysis::validation_report(validation->result, validation->runs));
     }
@@ -63,7 +69,7 @@ ValidationResultObject validate(const RecordingArgument& recording_argument,
 DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
                                const ModelArgument& model_argument_,
                     const std::optional<std::filesystem::path>& write_model, unsigned threads,
-                    const std::optional<std::string>& columns) {
+                    const std::optional<std::string>& columns, bool force_scale) {
   const Recording recording = read_recording(recording_argument, columns);
   const Model model = model_argument(model_argument_);
   const codec::ModelFile& file = *model.file;
@@ -76,6 +82,7 @@ DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
     const analysis::RecordingCheck check = analysis::check_recording(file.model, file.name, data.samples);
     analysis::require_compared_samples(recording.source, file.name, check.compared, data.rows_read,
                                        data.excluded_rows, data.samples.size(), check.first_refusal);
+    if (!force_scale) analysis::refuse_unit_slip(recording.source, check.refusal, analysis::UnitFix::python);
     diagnosis.emplace(gc::diagnose(file.model, data.samples, thread_parallel_for(threads_argument(threads))));
     result = analysis::diagnosis_result(*diagnosis, recording.source, file.name, check, data);
     diagnosed.emplace(analysis::diagnosed_model(file, *diagnosis));
@@ -103,18 +110,22 @@ void bind_measurement(py::module_& m) {
         "share/gearcoupling/<kind>, or the source tree's data/<kind> for a build-tree module.");
   m.def("validate", &validate, py::arg("recording"), py::arg("model"), py::kw_only(),
         py::arg("add") = "", py::arg("reference_torque_nm") = 1.5e6, py::arg("threads") = 0u,
-        py::arg("columns") = py::none(), py::arg("html") = py::none(),
+        py::arg("columns") = py::none(), py::arg("html") = py::none(), py::arg("force_scale") = false,
         "gearcoupling validate: the recording (a file, a DataFrame or a Recording) against the model "
         "(a Model, a name, a file or a dict); with add, also the model with that effect. Returns a "
         "ValidationResult (.to_dict() is validate --json; .samples(model=0) the per-sample "
         "predictions and residuals as a DataFrame, model 1 the one with the effect added). html: "
-        "also write the HTML report there.");
+        "also write the HTML report there. A moment channel 1000 times the model's (kN·m under an _nm "
+        "header) raises ValueError naming the unit error, as validate exits 2; force_scale=True runs "
+        "anyway.");
   m.def("diagnose", &diagnose, py::arg("recording"), py::arg("model"), py::kw_only(),
         py::arg("write_model") = py::none(), py::arg("threads") = 0u, py::arg("columns") = py::none(),
+        py::arg("force_scale") = false,
         "gearcoupling diagnose: which effects the model lacks. Returns a DiagnosisResult "
         "(.to_dict() is diagnose --json) whose .model is the model with the effects found and "
         ".samples(model=0) the per-sample predictions and residuals as a DataFrame (model 0 the "
-        "model given, 1 the model found); write_model: also write that model file there.");
+        "model given, 1 the model found); write_model: also write that model file there. A unit slip "
+        "raises ValueError as in validate; force_scale=True runs anyway.");
 }
 
 }  // namespace gc::python

@@ -63,7 +63,18 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   counts.set_refused_out_of_order(in.counts.refused_out_of_order);
   counts.set_lost(in.counts.lost);
   counts.set_runs(in.counts.runs);
-  out.set_model_health(std::string(to_string(model_health(out.model(), in.window_samples))));
+  counts.set_unit_slip_batches(in.counts.unit_slip_batches);
+  out.set_sample_rate_hz(in.sample_rate_hz);
+  out.set_learning_state(sample_text(in.learning_state));
+  out.set_learning(sample_text(in.learning));
+  out.set_learning_samples_missing(in.learning_samples_missing);
+  out.set_unit_error(sample_text(in.unit_error));
+  out.set_proposal_msy_rmse_nm(in.proposal_msy_rmse_nm);
+  out.set_proposal_msz_rmse_nm(in.proposal_msz_rmse_nm);
+  out.set_proposal_samples(in.proposal_samples);
+  // With hysteresis against the badge it showed (model_health.h).
+  const ModelHealth shown = model_health_from(out.model_health());
+  out.set_model_health(std::string(to_string(model_health(out.model(), in.window_samples, shown))));
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ HealthView health_view(const ::gearcoupling::v1::TestCellRecord& record) {
     v.systematic_nm[c] = channels[c]->systematic_nm();
     v.at_noise_level[c] = channels[c]->at_noise_level();
   }
-  v.model_health = model_health(record.model(), record.window_samples());
+  v.model_health = model_health_from(record.model_health());   // the board's, with hysteresis
   if (record.has_previous_model()) {
     v.previous_model_name = record.previous_model().model_name();
     v.previous_rmse_nm[0] = record.previous_model().msy().rmse_nm();
@@ -40,6 +40,15 @@ HealthView health_view(const ::gearcoupling::v1::TestCellRecord& record) {
   v.refused_out_of_order = counts.refused_out_of_order();
   v.lost = counts.lost();
   v.runs = counts.runs();
+  v.unit_slip_batches = counts.unit_slip_batches();
+  v.sample_rate_hz = record.sample_rate_hz();
+  v.learning_state = record.learning_state();
+  v.learning = record.learning();
+  v.learning_samples_missing = record.learning_samples_missing();
+  v.unit_error = record.unit_error();
+  v.proposal_rmse_nm[0] = record.proposal_msy_rmse_nm();
+  v.proposal_rmse_nm[1] = record.proposal_msz_rmse_nm();
+  v.proposal_samples = record.proposal_samples();
   return v;
 }
 

@@ -31,7 +31,12 @@ struct HealthView {
   double previous_rmse_nm[2] = {};
   std::string worst_region, last_refusal, last_model_refusal;
   std::uint64_t taken = 0, evaluated = 0, refused_not_finite = 0, refused_by_model = 0,
-                refused_out_of_order = 0, lost = 0, runs = 0;
+                refused_out_of_order = 0, lost = 0, runs = 0, unit_slip_batches = 0;
+  double sample_rate_hz = 0.0;
+  std::string learning_state, learning, unit_error;   ///< live/learning_status.h
+  std::uint64_t learning_samples_missing = 0;
+  double proposal_rmse_nm[2] = {};   ///< the standing proposal's model over the window
+  std::uint64_t proposal_samples = 0;
 };
 
 /// The view of a board's record (CellBoard::snapshot); members the record lacks stay 0 / "".

@@ -4,11 +4,38 @@
 
 namespace gc::status {
 
-ModelHealth channel_health(double systematic_nm, double noise_nm) {
-  if (systematic_nm == 0.0 || systematic_nm < kAtNoiseLevelShare * noise_nm) {
+namespace {
+
+ModelHealth channel_health(double systematic_nm, double noise_nm, double at_noise_share,
+                           double far_off_ratio) {
+  if (systematic_nm == 0.0 || systematic_nm < at_noise_share * noise_nm) {
     return ModelHealth::at_noise_level;
   }
-  return systematic_nm >= kFarOffRatio * noise_nm ? ModelHealth::far_off : ModelHealth::systematic;
+  return systematic_nm >= far_off_ratio * noise_nm ? ModelHealth::far_off : ModelHealth::systematic;
+}
+
+}  // namespace
+
+ModelHealth channel_health(double systematic_nm, double noise_nm) {
+  return channel_health(systematic_nm, noise_nm, kAtNoiseLevelShare, kFarOffRatio);
+}
+
+ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,
+                         std::uint64_t window_samples, ModelHealth previous) {
+  if (window_samples < 2) return ModelHealth::unknown;
+  const double share = previous == ModelHealth::at_noise_level ? kAtNoiseLevelShare / kHysteresis
+                                                               : kAtNoiseLevelShare;
+  const double far = previous == ModelHealth::far_off ? kHysteresis * kFarOffRatio : kFarOffRatio;
+  return std::max(channel_health(model.msy().systematic_nm(), model.msy().noise_nm(), share, far),
+                  channel_health(model.msz().systematic_nm(), model.msz().noise_nm(), share, far));
+}
+
+ModelHealth model_health_from(std::string_view text) {
+  for (const ModelHealth health : {ModelHealth::at_noise_level, ModelHealth::systematic,
+                                   ModelHealth::far_off}) {
+    if (text == to_string(health)) return health;
+  }
+  return ModelHealth::unknown;
 }
 
 ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,

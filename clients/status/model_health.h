@@ -31,7 +31,17 @@ ModelHealth channel_health(double systematic_nm, double noise_nm);
 ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,
                          std::uint64_t window_samples);
 
+/// The badge with hysteresis (issue 39: it flipped between red and amber every second during a
+/// steady fault whose ratio sat near 3): a cell leaves `previous` only once a channel is clearly
+/// past the threshold: far off until below kHysteresis x kFarOffRatio, at the noise level until
+/// kAtNoiseLevelShare / kHysteresis or more. Entering a level takes the plain thresholds.
+inline constexpr double kHysteresis = 0.8;
+ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,
+                         std::uint64_t window_samples, ModelHealth previous);
+
 /// "unknown", "at_noise_level", "systematic", "far_off": TestCellRecord.model_health.
 std::string_view to_string(ModelHealth health);
+/// The inverse of to_string; unknown for any other text.
+ModelHealth model_health_from(std::string_view text);
 
 }  // namespace gc::status

@@ -2,6 +2,7 @@
 
 #include "clients/status/cell_board.h"
 #include "clients/status/listening_reader.h"
+#include "clients/status/parameter_display.h"
 #include "gearcoupling.h"
 #include "live/live_qos.h"
 #include "live/live_topics.h"
@@ -39,6 +40,15 @@ v1::ProposalRecord record_of(const gearcoupling_ModelProposal& in) {
     r.set_held(p.held);
     r.set_plausible(p.plausible);
     r.set_note(sample_text(p.note));
+    out.add_parameters_display(parameter_display(r));
+  }
+  for (std::uint32_t i = 0; i < in.alternatives._length && i < 8; ++i) {
+    const gearcoupling_ProposalAlternative& a = in.alternatives._buffer[i];
+    v1::ProposalAlternativeRecord& r = *out.add_alternatives();
+    r.set_effect(sample_text(a.effect));
+    r.set_held_out_rmse_nm(a.held_out_rmse_nm);
+    r.set_correlation(a.correlation);
+    r.set_experiment(sample_text(a.experiment, 4 * kMaxTextBytes));
   }
   out.set_base_model(sample_text(in.base_model));
   out.set_model_name(sample_text(in.model_name));

@@ -109,14 +109,51 @@ void cell_gauges(const std::vector<v1::TestCellRecord>& cells, PrometheusText& o
   }
   out.family("gearcoupling_cell_model_health", "gauge",
              "1 for the test cell's model health (the dashboard's badge: at_noise_level, "
-             "systematic, far_off, unknown), 0 for the others.");
+             "systematic, far_off, unknown; stale once the cell is stale or gone: its last "
+             "health is no news), 0 for the others.");
   for (const auto& cell : cells) {
+    const bool alive = cell.state() == "alive";
     for (const ModelHealth health : {ModelHealth::unknown, ModelHealth::at_noise_level,
                                      ModelHealth::systematic, ModelHealth::far_off}) {
       Labels labels = cell_labels(cell);
       labels.emplace_back("health", std::string(to_string(health)));
-      out.sample("gearcoupling_cell_model_health", labels, cell.model_health() == to_string(health));
+      out.sample("gearcoupling_cell_model_health", labels, alive && cell.model_health() == to_string(health));
     }
+    Labels labels = cell_labels(cell);
+    labels.emplace_back("health", "stale");
+    out.sample("gearcoupling_cell_model_health", labels, !alive);
+  }
+}
+
+/// The learning loop per cell (live/learning_status.h): 1 for its state, and what it lacks.
+void cell_learning(const std::vector<v1::TestCellRecord>& cells, PrometheusText& out) {
+  out.family("gearcoupling_cell_learning_state", "gauge",
+             "1, labelled by what the monitor's learning loop does for the test cell (waiting_for_"
+             "samples, too_few_samples_in_window, beyond_noise, diagnosis_running, proposed, "
+             "found_nothing, unit_error, ...; docs/dashboard.md).");
+  for (const auto& cell : cells) {
+    if (cell.learning_state().empty()) continue;
+    Labels labels = cell_labels(cell);
+    labels.emplace_back("state", cell.learning_state());
+    out.sample("gearcoupling_cell_learning_state", labels, 1.0);
+  }
+  out.family("gearcoupling_cell_learning_samples_missing", "gauge",
+             "Samples the test cell's rolling window still lacks before a diagnosis can run.");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_learning_samples_missing", cell_labels(cell),
+               static_cast<double>(cell.learning_samples_missing()));
+  }
+  out.family("gearcoupling_cell_sample_rate_hertz", "gauge",
+             "Evaluated samples per second of measurement time over the monitor's window [Hz].");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_sample_rate_hertz", cell_labels(cell), cell.sample_rate_hz());
+  }
+  out.family("gearcoupling_cell_unit_slip_batches_total", "counter",
+             "Measurement batches evaluated while the window's moments were 1000 times the "
+             "model's: a unit error (kN·m sent as N·m), not a model error.");
+  for (const auto& cell : cells) {
+    out.sample("gearcoupling_cell_unit_slip_batches_total", cell_labels(cell),
+               static_cast<double>(cell.counts().unit_slip_batches()));
   }
 }
 
@@ -193,6 +230,7 @@ std::string metrics_text(const std::vector<InstanceView>& instances,
   service_time_summary(instances, out);
   cell_gauges(cells, out);
   cell_counters(cells, out);
+  cell_learning(cells, out);
   cell_errors(cells, out);
   return out.text();
 }

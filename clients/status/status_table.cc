@@ -69,7 +69,12 @@ void print_cells(const std::vector<gearcoupling::v1::TestCellRecord>& cells, std
   fmt::print(out, "\n");
   table.print(out);
   for (const auto& cell : cells) {
+    if (!cell.unit_error().empty()) fmt::print(out, "{}: {}\n", cell.test_cell(), cell.unit_error());
     if (!cell.worst_region().empty()) fmt::print(out, "{}: {}\n", cell.test_cell(), cell.worst_region());
+    // What the learning loop does and waits for (issue 39): never silent about a cell far off.
+    if (!cell.learning().empty()) {
+      fmt::print(out, "{}: learning: {}\n", cell.test_cell(), cell.learning());
+    }
   }
 }
 

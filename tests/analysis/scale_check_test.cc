@@ -97,5 +97,39 @@ TEST(MisalignmentScale, FlagsRadiansUnderDegreesAndDegreesUnderRadians) {
   EXPECT_FALSE(misalignment_scale_warning(0.0, jam));   // an aligned test: nothing to judge
 }
 
+// Issue 39: one wording for every place that checks units, each with its own fix.
+TEST(UnitSlipError, NamesTheUnitErrorAndTheFixOfEachPlace) {
+  const std::string finding = "M_sy' measured RMS 155 N·m is 0.001 times the model paper's 155 kN·m";
+  const std::string cli = unit_slip_error("rec.csv", finding, UnitFix::cli);
+  EXPECT_EQ(cli.rfind("rec.csv: unit error: " + finding + "; a fit to moments 1000 times off says nothing: ", 0), 0u) << cli;
+  EXPECT_NE(cli.find("--columns msy_knm=HEADER"), std::string::npos) << cli;
+  EXPECT_NE(cli.find("--force-scale"), std::string::npos) << cli;
+  const std::string python = unit_slip_error("<DataFrame>", finding, UnitFix::python);
+  EXPECT_NE(python.find("columns={'msy_knm': 'HEADER'}"), std::string::npos) << python;
+  EXPECT_NE(python.find("force_scale=True"), std::string::npos) << python;
+  const std::string stream = unit_slip_error("test cell dyno", finding, UnitFix::stream);
+  EXPECT_NE(stream.find("the publisher must send N·m"), std::string::npos) << stream;
+  try {
+    refuse_unit_slip("rec.csv", finding);
+    ADD_FAILURE() << "not refused";
+  } catch (const InvalidInput& error) {
+    EXPECT_EQ(error.field(), "recording");
+    EXPECT_EQ(std::string(error.what()), "recording: " + cli);   // InvalidInput names its field
+  }
+}
+
+// Issue 39: kN·m under torque_nm gave only "light torque near the jam angle is outside eq 22's
+// range". T_ref 1.5 MN·m; a test runs at 0.1 to 3 T_ref.
+TEST(TorqueScale, FlagsKilonewtonMetresUnderAnNmHeader) {
+  const auto slipped = torque_scale_warning(2.2e3, 1.5e6);   // 2.2 MN·m read as 2.2 kN·m
+  ASSERT_TRUE(slipped);
+  EXPECT_NE(slipped->find("torque reaches only 2.20 kN·m"), std::string::npos) << *slipped;
+  EXPECT_NE(slipped->find("kN·m under a _nm header? (1000 times too small"), std::string::npos) << *slipped;
+  EXPECT_FALSE(torque_scale_warning(2.2e6, 1.5e6));   // as it should be
+  EXPECT_FALSE(torque_scale_warning(2e4, 1.5e6));     // 1.3 % of T_ref: a light test, not a slip
+  EXPECT_FALSE(torque_scale_warning(10.0, 1.5e6));    // x 1000 still under 0.1 T_ref
+  EXPECT_FALSE(torque_scale_warning(0.0, 1.5e6));
+}
+
 }  // namespace
 }  // namespace gc::analysis

@@ -125,8 +125,27 @@ def test_a_proposal_naming_the_hidden_effect_appears_on_the_card_within_30_s(loo
     shown = proposal_box(loop["driver"])
     assert shown["effects"] == "eccentricity"
     text = loop["driver"].find_element(By.CSS_SELECTOR, f"#cell-{TEST_CELL} .cell-proposal").text
-    assert "add eccentricity" in text and "expected error" in text and "why:" in text
+    assert "add eccentricity" in text and "with it" in text and "why:" in text
+    # The fitted misalignment in mrad, as diagnose prints it, not "0.0015 ± 2e-05 rad" (issue 39).
+    assert "eccentricity.eccentric_misalignment_rad = " in text and " mrad ± " in text, text
     loop["proposal"] = shown["proposal"]
+
+
+def test_now_and_with_it_are_on_the_window_the_table_shows(loop):
+    # Issue 39: "95.3 kN·m now" sat beside a table of 45/54 kN·m over another window. The table
+    # has the proposal's column over its own window, lower than the model's on both channels. The
+    # test cell runs on (the proposal follows the samples that come after it).
+    replay()
+
+    def shadowed(d):
+        cells = [c for c in state(loop["url"]).get("test_cells", []) if c["test_cell"] == TEST_CELL]
+        return cells[0] if cells and int(cells[0].get("proposal_samples", 0)) > 0 else None
+    record = WebDriverWait(loop["driver"], 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(shadowed)
+    assert record["proposal_msy_rmse_nm"] < record["model"]["msy"]["rmse_nm"], record
+    assert record["proposal_msz_rmse_nm"] < record["model"]["msz"]["rmse_nm"], record
+    shown = WebDriverWait(loop["driver"], 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
+        lambda d: [c.text for c in d.find_elements(By.CSS_SELECTOR, f"#cell-{TEST_CELL} td.with-proposal")])
+    assert len(shown) == 2 and all(float(v) > 0 for v in shown), shown
 
 
 def test_only_the_operator_dashboard_may_apply(loop):

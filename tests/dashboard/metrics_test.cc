@@ -128,6 +128,34 @@ TEST(Metrics, TestCellsHaveTheirModelBiasAndHealth) {
                              "health=\"far_off\"} 0"));
 }
 
+// Issue 39: a gone cell exported its last badge (at_noise_level 1) for as long as it was listed.
+TEST(Metrics, AGoneOrStaleCellIsMarkedStaleNotItsLastHealth) {
+  for (const std::string state : {"gone", "stale"}) {
+    v1::TestCellRecord cell = test_cell("left");
+    cell.set_state(state);
+    cell.set_model_health("at_noise_level");
+    const std::string text = metrics_text({}, {cell});
+    EXPECT_TRUE(has_line(text, "gearcoupling_cell_model_health{test_cell=\"left\",health=\"stale\"} 1")) << text;
+    EXPECT_TRUE(has_line(text, "gearcoupling_cell_model_health{test_cell=\"left\",health=\"at_noise_level\"} 0")) << text;
+  }
+  const std::string alive = metrics();
+  EXPECT_TRUE(has_line(alive, "gearcoupling_cell_model_health{test_cell=\"dyno-5mw\",health=\"stale\"} 0"));
+}
+
+// Issue 39: what the learning loop does for a cell, as a labelled gauge, and what it lacks.
+TEST(Metrics, TheLearningStateAndTheSamplesItLacksAreExported) {
+  v1::TestCellRecord cell = test_cell("slow");
+  cell.set_learning_state("waiting_for_samples");
+  cell.set_learning_samples_missing(120);
+  cell.set_sample_rate_hz(10.0);
+  cell.mutable_counts()->set_unit_slip_batches(3);
+  const std::string text = metrics_text({}, {cell});
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_learning_state{test_cell=\"slow\",state=\"waiting_for_samples\"} 1")) << text;
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_learning_samples_missing{test_cell=\"slow\"} 120")) << text;
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_sample_rate_hertz{test_cell=\"slow\"} 10")) << text;
+  EXPECT_TRUE(has_line(text, "gearcoupling_cell_unit_slip_batches_total{test_cell=\"slow\"} 3")) << text;
+}
+
 TEST(Metrics, PromtoolAcceptsTheText) {
   if (std::system("command -v promtool > /dev/null 2>&1") != 0) {
     GTEST_SKIP() << "promtool is absent (Debian package prometheus, deploy/install-deps.sh)";

@@ -57,5 +57,36 @@ TEST(ModelHealth, UnknownBeforeTwoSamples) {
   EXPECT_EQ(to_string(ModelHealth::unknown), "unknown");
 }
 
+// Issue 39: a steady fault whose systematic part sat near 3 x the noise flipped the badge between
+// red and amber every second. Once red, it stays red until below 0.8 x 3; once green, until a
+// third / 0.8; entering takes the plain thresholds.
+TEST(ModelHealth, TheBadgeHasHysteresisAtBothThresholds) {
+  const double noise = 1000.0;
+  const auto with = [&](double systematic, ModelHealth previous) {
+    return model_health(model(systematic, noise, 0.0, noise), 500, previous);
+  };
+  EXPECT_EQ(with(2900.0, ModelHealth::systematic), ModelHealth::systematic);
+  EXPECT_EQ(with(3000.0, ModelHealth::systematic), ModelHealth::far_off);
+  EXPECT_EQ(with(2900.0, ModelHealth::far_off), ModelHealth::far_off);
+  EXPECT_EQ(with(2401.0, ModelHealth::far_off), ModelHealth::far_off);
+  EXPECT_EQ(with(2399.0, ModelHealth::far_off), ModelHealth::systematic);
+  // A sequence around 3 x noise shows one change, not one a second.
+  ModelHealth shown = ModelHealth::unknown;
+  int changes = 0;
+  for (double systematic : {3100.0, 2900.0, 3050.0, 2800.0, 3000.0, 2700.0}) {
+    const ModelHealth next = with(systematic, shown);
+    changes += next != shown;
+    shown = next;
+  }
+  EXPECT_EQ(changes, 1);
+  EXPECT_EQ(shown, ModelHealth::far_off);
+  // The green side: stays green up to a third / 0.8 of the noise.
+  EXPECT_EQ(with(400.0, ModelHealth::at_noise_level), ModelHealth::at_noise_level);
+  EXPECT_EQ(with(400.0, ModelHealth::systematic), ModelHealth::systematic);
+  EXPECT_EQ(with(420.0, ModelHealth::at_noise_level), ModelHealth::systematic);
+  EXPECT_EQ(model_health_from("far_off"), ModelHealth::far_off);
+  EXPECT_EQ(model_health_from(""), ModelHealth::unknown);
+}
+
 }  // namespace
 }  // namespace gc::status

@@ -2,6 +2,7 @@
 // a gearcoupling-monitor child, a participant of the test's own, the bundled data.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,8 +22,11 @@ inline const std::string kHiddenEccentricity =
 /// gearcoupling-monitor on the test's domain with `extra_args`, its log in a temporary file.
 inline std::unique_ptr<ChildProcess> start_monitor(const std::vector<std::string>& extra_args,
                                                    std::string* log_path = nullptr) {
-  std::vector<std::string> args = {GC_MONITOR_BINARY, "--domain", std::to_string(test_domain()),
-                                    "--log-level", "warn"};
+  std::vector<std::string> args = {GC_MONITOR_BINARY, "--domain", std::to_string(test_domain())};
+  // warn unless the test reads the info lines (the flag is taken once).
+  if (std::find(extra_args.begin(), extra_args.end(), "--log-level") == extra_args.end()) {
+    args.insert(args.end(), {"--log-level", "warn"});
+  }
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const std::string log = cli::testing::temp_path("monitor_log");
   if (log_path != nullptr) *log_path = log;

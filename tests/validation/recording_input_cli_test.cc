@@ -52,7 +52,8 @@ TEST(RecordingInputCli, NewtonMetresUnderAKnmHeaderAreRefusedWithTheWarningsAdvi
     EXPECT_EQ(run.out, "") << subcommand;
     EXPECT_NE(run.err.find("gearcoupling " + subcommand + ": warning: M_sy'"), std::string::npos)
         << run.err;
-    EXPECT_NE(run.err.find("gearcoupling " + subcommand + ": error: recording: " + slipped + ": M_sy' measured RMS"),
+    EXPECT_NE(run.err.find("gearcoupling " + subcommand + ": error: recording: " + slipped +
+                           ": unit error: M_sy' measured RMS"),
               std::string::npos) << run.err;
     EXPECT_NE(run.err.find("check the unit of the msy column (N·m under _knm? kN·m under _nm?); "
                            "a fit to moments 1000 times off says nothing: give the column its unit "
@@ -81,6 +82,43 @@ TEST(RecordingInputCli, KilonewtonMetresUnderAnNmHeaderAreRefusedToo) {
   EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
   EXPECT_NE(run.err.find("too small by about 1000"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("--force-scale to run anyway"), std::string::npos) << run.err;
+}
+
+// Issue 39: torque in kN·m under torque_nm drew only the model's "light torque near the jam
+// angle is outside eq 22's range"; now a warning names the unit before that error.
+TEST(RecordingInputCli, KilonewtonMetresOfTorqueUnderAnNmHeaderAreNamedAsAUnitSlip) {
+  std::ifstream in(kSweep);
+  std::string line, text;
+  std::getline(in, line);
+  text = line + "\n";
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find(','), second = line.find(',', first + 1);
+    const double torque_nm = std::stod(line.substr(first + 1, second - first - 1));
+    text += line.substr(0, first + 1) + std::to_string(torque_nm / 1000.0) + line.substr(second) + "\n";
+  }
+  const std::string path = temp_path("gc_torque_knm") + ".csv";
+  write_file(path, text);
+  const ProcessResult run = run_gearcoupling({"validate", "--data", path, "--model", "paper"});
+  EXPECT_NE(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.err.find("gearcoupling validate: warning: torque reaches only "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("kN·m under a _nm header? (1000 times too small"), std::string::npos) << run.err;
+}
+
+// Issue 39, rough edges: a column named without its unit, a missing file, a misspelt model.
+TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWhatIsWrong) {
+  const std::string no_unit = with_header("time_s,torque_nm,misalignment_rad,direction_rad,msy,msz_nm");
+  const ProcessResult unitless = run_gearcoupling({"validate", "--data", no_unit, "--model", "paper"});
+  EXPECT_EQ(unitless.exit_code, 2) << unitless.err;
+  EXPECT_NE(unitless.err.find("required column msy missing"), std::string::npos) << unitless.err;
+  EXPECT_NE(unitless.err.find("column 5 'msy' has no unit: name it msy_nm"), std::string::npos) << unitless.err;
+  const ProcessResult missing = run_gearcoupling({"validate", "--data", "/nonexistent/rec.csv", "--model", "paper"});
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  EXPECT_NE(missing.err.find("cannot read recording /nonexistent/rec.csv: No such file or directory"),
+            std::string::npos) << missing.err;
+  const ProcessResult misspelt = run_gearcoupling({"validate", "--data", kSweep, "--model", "papr"});
+  EXPECT_EQ(misspelt.exit_code, 2) << misspelt.err;
+  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind)"),
+            std::string::npos) << misspelt.err;
 }
 
 // A dyno that logs the drive torque negative: refused with what to do, and --negate torque reads

@@ -104,3 +104,19 @@ def test_renamed_columns_and_html_report(tmp_path):
     plain = gc.validate(SWEEP, "paper")
     assert renamed.models[0].overall.msy.rmse_nm == plain.models[0].overall.msy.rmse_nm
     assert "<html" in (tmp_path / "report.html").read_text()[:500].lower()
+
+
+def test_a_thousandfold_unit_slip_is_refused_as_validate_refuses_it():
+    # kN·m numbers under _nm headers (issue 39): R² -949,942 came back with the warning only in
+    # .warnings. Now ValueError with the CLI's wording and the Python fix; force_scale runs anyway.
+    frame = pd.read_csv(SWEEP, float_precision="round_trip")
+    frame[["msy_nm", "msz_nm"]] /= 1000.0
+    for run in (gc.validate, gc.diagnose):
+        with pytest.raises(ValueError) as refused:
+            run(frame, "paper")
+        message = str(refused.value)
+        assert "unit error: M_sy' measured RMS" in message, message
+        assert "too small by about 1000" in message, message
+        assert "columns={'msy_knm': 'HEADER'}" in message and "force_scale=True" in message, message
+    forced = gc.validate(frame, "paper", force_scale=True).to_dict()
+    assert any("by about 1000" in w for w in forced["warnings"])
