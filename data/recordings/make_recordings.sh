@@ -17,3 +17,7 @@ done
   "${common[@]}" --out "$here/hidden_loading_friction_moment_sweep.csv"
 "$gearcoupling" synth --model "$here/hidden_daq_skew.truth.textproto" --sequence torque-ramp \
   "${common[@]}" --out "$here/hidden_daq_skew_torque_ramp.csv"
+# A bridge amplifier at its rail: the moment sweep with M_sy' clipped at -200 kN·m, as a DAQ whose
+# range was set too tight records it (docs/tutorial.md, "Data quality before physics").
+awk -F, -v OFS=, 'NR > 1 && $5 < -200000 { $5 = -200000 } { print }' "$here/paper_moment_sweep.csv" \
+  > "$here/paper_moment_sweep_clipped.csv"
