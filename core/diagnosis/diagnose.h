@@ -39,13 +39,14 @@ struct DiagnosisSettings {
   bool refinements = true;
   bool formula = true;      ///< the discrepancy stage
   FormulaSettings formula_settings;
-  /// A formula is claimed over a claimable, plausible effect when its held-out gain over that
-  /// effect has a block-paired t of at least this (and removes at least formula_over_effect_gain
-  /// times the mean square the effect removes): a candidate that does significantly better stands
-  /// first. (At 1.5 times, an effect that took 1 % stood before a formula that took 17 % at t = 20.)
-  /// Physics still goes first where the formula's lead is a second mechanism the effect leaves.
+  /// A formula is claimed over a claimable, plausible effect only when its held-out gain over that
+  /// effect has a block-paired t of at least this, and it removes at least formula_over_effect_gain
+  /// times the mean square the effect removes: physics first, unless the effect explains less than
+  /// two thirds of what the formula shows is there (an offset taking the mean of a drift). An
+  /// effect that takes too little to be claimed at all (a moment_delay's 1 % beside a formula's 17 %)
+  /// is no rival: the claim rule's least fall sets it aside.
   double formula_over_effect_t = 3.0;
-  double formula_over_effect_gain = 1.0;
+  double formula_over_effect_gain = 1.5;
   /// The data-quality stage before the physics (data_quality.h).
   DataQualitySettings data_quality;
   /// Samples more than this many robust deviations from their running median are outliers,
