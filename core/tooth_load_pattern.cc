@@ -19,7 +19,7 @@ void validate_options(const ContactOptions& options) {
 // Eq 11 with eq 12's R_c: maximum tooth separation, at a turning angle of 90 deg [m].
 double max_separation_m(const CouplingGeometry& coupling, double misalignment_rad) {
   const double t = std::tan(misalignment_rad);
-  return coupling.root_crown_radius_m() * t * t / (2.0 * std::tan(coupling.pressure_angle_rad()));
+  return coupling.root_crown_radius_m() * t * t / (2.0 * coupling.tan_pressure_angle());
 }
 
 // Eq 13, with the residue of qN turned into an angle: a fraction of one tooth pitch 2 pi / N
@@ -45,7 +45,7 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
   const double stiffness = coupling.mesh_stiffness_n_per_m();
   ToothLoadPattern p;
   p.total_normal_load_n =
-      point.torque_nm / (coupling.pitch_radius_m() * std::cos(coupling.pressure_angle_rad()));  // 7
+      point.torque_nm / (coupling.pitch_radius_m() * coupling.cos_pressure_angle());  // eq 7
   p.mean_tooth_load_n = p.total_normal_load_n / n;                                   // eq 20
   p.max_separation_m =
       max_separation_m(coupling, point.misalignment_rad) + options.spacing_error_m;  // eq 11
