@@ -25,29 +25,35 @@ double self_weight_moment_nm(const CouplingGeometry& coupling) {
          d.shaft_weight_per_length_n_per_m * cos_tilt * d.shaft_length_m * d.shaft_length_m / 2.0;
 }
 
-QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point, double q,
-                         double offset_alpha_rad, double max_contact_offset_m, bool continuous,
+QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
+                         const ToothLoadPattern& pattern, bool continuous,
                          const std::function<double(int)>& load_of) {
-  const int n = coupling.teeth();
-  const double q_n = q * n;
-  const double alpha = offset_alpha_rad;
+  const double q_n = pattern.load_sharing.q * coupling.teeth();
   const double radius = coupling.pitch_radius_m();
   const double axial_factor = axial_load_factor(point.misalignment_rad, point.friction_coefficient);
-  const double max_offset = max_contact_offset_m;  // R_F sin(zeta), eq 15
+  const double max_offset = pattern.max_contact_offset_m;  // R_F sin(zeta), eq 15
 
   // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
   const double quarter = q_n / 4.0;
   const int last = static_cast<int>(quarter);
   double sum_y = 0.0;
   double sum_z = 0.0;
+  // cos(2 pi j / (qN) + alpha) of eq 40 by turning (cos, sin) a step of 2 pi / (qN) per tooth: a
+  // cosine per tooth was a third of a diagnosis' time, and the turns drift by a few ulp.
+  const double step = 2.0 * M_PI / q_n;
+  const double cos_step = std::cos(step), sin_step = std::sin(step);
+  double cos_offset = pattern.cos_alpha, sin_offset = pattern.sin_alpha;
   const auto add_tooth = [&](int j, double weight) {
     const double load = load_of(j);
-    const double projection = std::cos(2.0 * M_PI * j / n + alpha);            // cos(theta_j)
-    const double offset = max_offset * std::cos(2.0 * M_PI * j / q_n + alpha);  // f_d, eq 40
-    const double arm = std::sqrt(radius * radius - offset * offset);            // R_d, eq 39
-    const double axial = load * axial_factor;                                   // W_d, eq 37
+    const double projection = pattern.cos_theta(coupling, j);  // cos(2 pi j/N + alpha)
+    const double offset = max_offset * cos_offset;             // f_d, eq 40
+    const double arm = std::sqrt(radius * radius - offset * offset);  // R_d, eq 39
+    const double axial = load * axial_factor;                         // W_d, eq 37
     sum_z += weight * projection * axial * arm;     // M_dz'' = W_d R_d, eq 38
     sum_y += weight * projection * load * offset;   // M_dy'' = P_d f_d, eq 41
+    const double turned = cos_offset * cos_step - sin_offset * sin_step;
+    sin_offset = sin_offset * cos_step + cos_offset * sin_step;
+    cos_offset = turned;
   };
   for (int j = 0; j <= last; ++j) add_tooth(j, 1.0);
   // The continuous variant (docs/model.md): as qN/4 grows from one whole number to the next,
@@ -61,9 +67,14 @@ QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint&
 
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ToothContact& contact) {
+  ToothLoadPattern pattern;  // what the quarter sums read of it
+  pattern.load_sharing = contact.load_sharing;
+  pattern.offset_alpha_rad = contact.offset_alpha_rad;
+  pattern.max_contact_offset_m = contact.max_contact_offset_m;
+  pattern.sin_alpha = std::sin(contact.offset_alpha_rad);
+  pattern.cos_alpha = std::cos(contact.offset_alpha_rad);
   const QuarterSums sums =
-      quarter_sums(coupling, point, contact.load_sharing.q, contact.offset_alpha_rad, contact.max_contact_offset_m,
-                   contact.continuous_quarter_sums,
+      quarter_sums(coupling, point, pattern, contact.continuous_quarter_sums,
                    [&contact](int j) { return contact.teeth[static_cast<std::size_t>(j)].load_n; });
   InducedMoments m;
   m.teeth_summed = sums.teeth_summed;
@@ -93,8 +104,8 @@ QuarterSums double_prime_moments(const CouplingGeometry& coupling, const Operati
   double carried = 0.0;  // in tooth order, as tooth_contact() sums them
   for (int j = 0; j < coupling.teeth(); ++j) carried += pattern.load_n(coupling, j);
   require_load_carried(pattern, carried, point, options.min_load_fraction);
-  return quarter_sums(coupling, point, pattern.load_sharing.q, pattern.offset_alpha_rad, pattern.max_contact_offset_m,
-                      options.continuous_quarter_sums, [&](int j) { return pattern.load_n(coupling, j); });
+  return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
+                      [&](int j) { return pattern.load_n(coupling, j); });
 }
 
 }  // namespace gc

@@ -6,6 +6,7 @@
 
 #include "core/operating_point.h"
 #include "core/tooth_contact.h"
+#include "core/tooth_load_pattern.h"
 
 namespace gc {
 
@@ -42,10 +43,10 @@ struct QuarterSums {
   int teeth_summed = 0;         ///< as InducedMoments::teeth_summed
 };
 
-/// Eqs 37-43 for the load pattern of load-sharing ratio q, offset alpha (eq 13) and largest contact
-/// offset F_i (eq 15); `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'.
-QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point, double q,
-                         double offset_alpha_rad, double max_contact_offset_m, bool continuous,
+/// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q);
+/// `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'.
+QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
+                         const ToothLoadPattern& pattern, bool continuous,
                          const std::function<double(int)>& load_of);
 
 /// Eqs 5-43 for the double-prime moments alone, what a model prediction turns into the coupling
