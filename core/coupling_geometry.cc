@@ -121,6 +121,9 @@ CouplingGeometry::CouplingGeometry(CouplingDefinition definition)
     : definition_(std::move(definition)) {
   const CouplingDefinition& d = definition_;
   validate_definition(d);
+  // Once per coupling, not per sample: eqs 7 and 11 take them for every prediction.
+  cos_pressure_angle_ = std::cos(d.pressure_angle_rad);
+  tan_pressure_angle_ = std::tan(d.pressure_angle_rad);
   diametral_pitch_ = d.teeth / d.pitch_diameter_m;     // P = N / D [1/m]
   pitch_radius_m_ = d.teeth / (2.0 * diametral_pitch_);  // eq 8
   circular_pitch_m_ = M_PI / diametral_pitch_;

@@ -22,6 +22,8 @@ class CouplingGeometry {
 
   int teeth() const { return definition_.teeth; }                     ///< N [-]
   double pressure_angle_rad() const { return definition_.pressure_angle_rad; }  ///< phi
+  double cos_pressure_angle() const { return cos_pressure_angle_; }  ///< cos phi (eq 7)
+  double tan_pressure_angle() const { return tan_pressure_angle_; }  ///< tan phi (eq 11)
   double facewidth_m() const { return definition_.facewidth_m; }      ///< F [m]
   double backlash_m() const { return definition_.backlash_m; }        ///< b [m]
   double hub_tooth_thickness_m() const { return definition_.tooth_thickness_m; }  ///< t_c1 [m]
@@ -45,6 +47,8 @@ class CouplingGeometry {
 
  private:
   CouplingDefinition definition_;
+  double cos_pressure_angle_ = 1.0;
+  double tan_pressure_angle_ = 0.0;
   double pitch_radius_m_ = 0.0;
   double diametral_pitch_ = 0.0;
   double circular_pitch_m_ = 0.0;

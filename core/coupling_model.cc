@@ -112,8 +112,9 @@ ModelPrediction CouplingModel::predict(const MeasurementSample& sample) const {
   state.contact = options_;
   for (const auto& effect : effects_) effect->adjust_inputs(sample, context, state);
 
-  const ToothContact contact = tooth_contact(geometry_, state.point, state.contact);
-  const InducedMoments moments = induced_moments(geometry_, state.point, contact);
+  // The moments alone: a recording's diagnosis predicts millions of samples, and the per-tooth
+  // report of tooth_contact() (zones, stress) is not part of them.
+  const QuarterSums moments = double_prime_moments(geometry_, state.point, state.contact);
   // Eqs 44-47 with the frame shift the effects chose (phi with pressure_angle_rotation on).
   const Eigen::Vector2d global =
       double_prime_to_coupling(state.frame_shift_rad, state.point.direction_rad) *

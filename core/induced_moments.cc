@@ -4,6 +4,7 @@
 
 #include "core/coupling_frame.h"
 #include "core/coupling_geometry.h"
+#include "core/tooth_load_pattern.h"
 
 namespace gc {
 
@@ -24,40 +25,61 @@ double self_weight_moment_nm(const CouplingGeometry& coupling) {
          d.shaft_weight_per_length_n_per_m * cos_tilt * d.shaft_length_m * d.shaft_length_m / 2.0;
 }
 
-InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
-                               const ToothContact& contact) {
-  const int n = coupling.teeth();
-  const double q_n = contact.load_sharing.q * n;
-  const double alpha = contact.offset_alpha_rad;
+QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
+                         const ToothLoadPattern& pattern, bool continuous,
+                         const std::function<double(int)>& load_of) {
+  const double q_n = pattern.load_sharing.q * coupling.teeth();
   const double radius = coupling.pitch_radius_m();
   const double axial_factor = axial_load_factor(point.misalignment_rad, point.friction_coefficient);
-  const double max_offset = contact.max_contact_offset_m;  // R_F sin(zeta), eq 15
+  const double max_offset = pattern.max_contact_offset_m;  // R_F sin(zeta), eq 15
 
   // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
   const double quarter = q_n / 4.0;
   const int last = static_cast<int>(quarter);
   double sum_y = 0.0;
   double sum_z = 0.0;
+  // cos(2 pi j / (qN) + alpha) of eq 40 by turning (cos, sin) a step of 2 pi / (qN) per tooth: a
+  // cosine per tooth was a third of a diagnosis' time, and the turns drift by a few ulp.
+  const double step = 2.0 * M_PI / q_n;
+  const double cos_step = std::cos(step), sin_step = std::sin(step);
+  double cos_offset = pattern.cos_alpha, sin_offset = pattern.sin_alpha;
   const auto add_tooth = [&](int j, double weight) {
-    const ToothLoad& tooth = contact.teeth[static_cast<std::size_t>(j)];
-    const double projection = std::cos(tooth.angle_rad);                        // cos(2 pi j/N + a)
-    const double offset = max_offset * std::cos(2.0 * M_PI * j / q_n + alpha);  // f_d, eq 40
-    const double arm = std::sqrt(radius * radius - offset * offset);            // R_d, eq 39
-    const double axial = tooth.load_n * axial_factor;                           // W_d, eq 37
-    sum_z += weight * projection * axial * arm;            // M_dz'' = W_d R_d, eq 38
-    sum_y += weight * projection * tooth.load_n * offset;  // M_dy'' = P_d f_d, eq 41
+    const double load = load_of(j);
+    const double projection = pattern.cos_theta(coupling, j);  // cos(2 pi j/N + alpha)
+    const double offset = max_offset * cos_offset;             // f_d, eq 40
+    const double arm = std::sqrt(radius * radius - offset * offset);  // R_d, eq 39
+    const double axial = load * axial_factor;                         // W_d, eq 37
+    sum_z += weight * projection * axial * arm;     // M_dz'' = W_d R_d, eq 38
+    sum_y += weight * projection * load * offset;   // M_dy'' = P_d f_d, eq 41
+    const double turned = cos_offset * cos_step - sin_offset * sin_step;
+    sin_offset = sin_offset * cos_step + cos_offset * sin_step;
+    cos_offset = turned;
   };
   for (int j = 0; j <= last; ++j) add_tooth(j, 1.0);
   // The continuous variant (docs/model.md): as qN/4 grows from one whole number to the next,
   // the next tooth enters the quarter in proportion instead of all at once, so the sums run
   // from the paper's value at int(qN/4) to its value at int(qN/4) + 1 without a step.
   const double entering = quarter - last;
-  const bool fractional_tooth = contact.continuous_quarter_sums && entering > 0.0;
+  const bool fractional_tooth = continuous && entering > 0.0;
   if (fractional_tooth) add_tooth(last + 1, entering);
+  return {4.0 * sum_y, 4.0 * sum_z, 4 * (last + 1 + (fractional_tooth ? 1 : 0))};  // eqs 43, 42
+}
+
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ToothContact& contact) {
+  ToothLoadPattern pattern;  // what the quarter sums read of it
+  pattern.load_sharing = contact.load_sharing;
+  pattern.offset_alpha_rad = contact.offset_alpha_rad;
+  pattern.max_contact_offset_m = contact.max_contact_offset_m;
+  pattern.sin_alpha = std::sin(contact.offset_alpha_rad);
+  pattern.cos_alpha = std::cos(contact.offset_alpha_rad);
+  const QuarterSums sums =
+      quarter_sums(coupling, point, pattern, contact.continuous_quarter_sums,
+                   [&contact](int j) { return contact.teeth[static_cast<std::size_t>(j)].load_n; });
   InducedMoments m;
-  m.teeth_summed = 4 * (last + 1 + (fractional_tooth ? 1 : 0));
-  m.moment_y_dd_nm = 4.0 * sum_y;  // eq 43
-  m.moment_z_dd_nm = 4.0 * sum_z;  // eq 42
+  m.teeth_summed = sums.teeth_summed;
+  m.moment_y_dd_nm = sums.moment_y_dd_nm;  // eq 43
+  m.moment_z_dd_nm = sums.moment_z_dd_nm;  // eq 42
   const Eigen::Vector2d global =
       double_prime_to_coupling(coupling.pressure_angle_rad(), point.direction_rad) *
       Eigen::Vector2d(m.moment_y_dd_nm, m.moment_z_dd_nm);  // eqs 44-47
@@ -74,6 +96,16 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ContactOptions& options) {
   return induced_moments(coupling, point, tooth_contact(coupling, point, options));
+}
+
+QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                 const ContactOptions& options) {
+  const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
+  double carried = 0.0;  // in tooth order, as tooth_contact() sums them
+  for (int j = 0; j < coupling.teeth(); ++j) carried += pattern.load_n(coupling, j);
+  require_load_carried(pattern, carried, point, options.min_load_fraction);
+  return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
+                      [&](int j) { return pattern.load_n(coupling, j); });
 }
 
 }  // namespace gc

@@ -2,8 +2,11 @@
 // axial sliding friction, in the double-prime frame, the coupling frame and at the sensors.
 #pragma once
 
+#include <functional>
+
 #include "core/operating_point.h"
 #include "core/tooth_contact.h"
+#include "core/tooth_load_pattern.h"
 
 namespace gc {
 
@@ -32,6 +35,25 @@ double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double f
 /// Eq 48's self-weight moment at the sensors [N·m] for coupling weight W_c [N], shaft weight
 /// per length w_sh [N/m], shaft length L_s [m] and tilt gamma [rad].
 double self_weight_moment_nm(const CouplingGeometry& coupling);
+
+/// Eqs 42-43: the moments M_ty'', M_tz'' in the double-prime frame, summed over the symmetric quarter.
+struct QuarterSums {
+  double moment_y_dd_nm = 0.0;  ///< eq 43 [N·m]
+  double moment_z_dd_nm = 0.0;  ///< eq 42 [N·m]
+  int teeth_summed = 0;         ///< as InducedMoments::teeth_summed
+};
+
+/// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q);
+/// `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'.
+QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
+                         const ToothLoadPattern& pattern, bool continuous,
+                         const std::function<double(int)>& load_of);
+
+/// Eqs 5-43 for the double-prime moments alone, what a model prediction turns into the coupling
+/// frame: tooth_contact() then the quarter sums, without listing the teeth, their zones and the
+/// stress (bit for bit the same moments, and the same errors). Throws as tooth_contact().
+QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                 const ContactOptions& options);
 
 /// Eqs 36-48 from a solved tooth contact at `point` (point.friction_coefficient is mu).
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,

@@ -26,7 +26,7 @@ void validate_operating_point(const CouplingGeometry& coupling, const OperatingP
   }
 }
 
-void require_below_jam_angle(const CouplingGeometry& coupling, const std::string& field,
+void require_below_jam_angle(const CouplingGeometry& coupling, std::string_view field,
                              double misalignment_rad) {
   const JamAngle& jam = coupling.jam_angle();
   if (std::isfinite(misalignment_rad) && misalignment_rad >= 0.0 &&
@@ -38,7 +38,7 @@ void require_below_jam_angle(const CouplingGeometry& coupling, const std::string
   allowed << "[0, " << jam.angle_rad << ") rad: below the jam angle of " << coupling.name()
           << ", " << jam.angle_rad * 180.0 / M_PI << " deg (" << to_string(jam.governing)
           << ", eqs 23-35)";
-  throw InvalidInput(field, misalignment_rad, allowed.str());
+  throw InvalidInput(std::string(field), misalignment_rad, allowed.str());
 }
 
 }  // namespace gc

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace gc {
 
@@ -22,7 +23,7 @@ void validate_operating_point(const CouplingGeometry& coupling, const OperatingP
 
 /// Throws InvalidInput naming `field` unless 0 <= misalignment_rad < the coupling's jam angle:
 /// beyond it the coupling jams, so no contact, moment or measurement of the model exists.
-void require_below_jam_angle(const CouplingGeometry& coupling, const std::string& field,
+void require_below_jam_angle(const CouplingGeometry& coupling, std::string_view field,
                              double misalignment_rad);
 
 }  // namespace gc

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "core/diagnosis/candidates_side_by_side.h"
 #include "core/diagnosis/claim_review.h"
 #include "core/diagnosis/delay_estimate.h"
 #include "core/diagnosis/mains_pickup.h"
@@ -175,7 +176,7 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
                                             const std::vector<ParameterValues>& hints) {
   DiagnosisSettings settings = given_settings;
   for (const ParameterValues& hint : hints) settings.cross_validation.fit.hints.push_back(hint);
-  std::vector<CandidateScore> ranking;
+  std::vector<CandidateJob> jobs;  // scored side by side below (candidates_side_by_side.h)
   // An effect that needs an input no search row has changes nothing here (and costs a fit).
   const auto lacks_input = [&](const EffectInfo& info) {
     return std::any_of(info.requires_inputs.begin(), info.requires_inputs.end(), [&](OptionalInput input) {
@@ -186,8 +187,9 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
     // The formula has its own stage; an effect the model has is a refinement below.
     if (registration.info->name == kExpressionEffect || model.has_effect(registration.info->name)) continue;
     if (lacks_input(*registration.info)) continue;
-    ranking.push_back(score_candidate(model, registration, observations, search, base, folds, parallel,
-                                      settings.cross_validation));
+    jobs.push_back([&](const ParallelFor& rows) {
+      return score_candidate(model, registration, observations, search, base, folds, rows, settings.cross_validation);
+    });
   }
   if (settings.refinements) {
     for (const auto& effect : model.effects()) {
@@ -199,15 +201,18 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
       if (!given.has_effect(effect->name()) && !has_held_shape(effect->info()) && !partly.count(effect->name())) continue;
       const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
       if (!registration || registration->info->parameters.empty()) continue;
-      ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,
-                                        settings.cross_validation, effect.get()));
+      jobs.push_back([&, registration = *registration, current = effect.get()](const ParallelFor& rows) {
+        return score_candidate(model, registration, observations, search, base, folds, rows, settings.cross_validation,
+                               current);
+      });
     }
     if (const std::optional<JointEffect> joint = partly_claims_together(model, given, partly, settings)) {
       const CrossValidationSettings joint_cv = joint_refit_settings(settings.cross_validation);
       const std::optional<EffectRegistration> registration = registration_for(*joint, settings);
       if (registration) {
-        ranking.push_back(score_candidate(model, *registration, observations, search, base, folds, parallel,
-                                          joint_cv, &*joint));
+        jobs.push_back([&, registration = *registration, joint_cv, joint = *joint](const ParallelFor& rows) {
+          return score_candidate(model, registration, observations, search, base, folds, rows, joint_cv, &joint);
+        });
       }
       // The same refit with a member's rival in its place, on the model without that member: the
       // simpler effect that came close to it in its round, which, refitted beside the others once
@@ -221,13 +226,16 @@ std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::spa
         const std::optional<JointEffect> swap = joint_of(effects, settings);
         const std::optional<EffectRegistration> swap_registration = swap ? registration_for(*swap, settings) : std::nullopt;
         if (!swap_registration) continue;
-        CandidateScore score = score_candidate(model.without_effect(member->name()), *swap_registration, observations,
-                                               search, base, folds, parallel, joint_cv, &*swap);
-        score.replaces = {member->name()};
-        ranking.push_back(std::move(score));
+        jobs.push_back([&, registration = *swap_registration, joint_cv, swap = *swap,
+                        without = model.without_effect(member->name()), name = member->name()](const ParallelFor& rows) {
+          CandidateScore score = score_candidate(without, registration, observations, search, base, folds, rows, joint_cv, &swap);
+          score.replaces = {name};
+          return score;
+        });
       }
     }
   }
+  std::vector<CandidateScore> ranking = score_side_by_side(jobs, parallel);
   std::stable_sort(ranking.begin(), ranking.end(), [](const CandidateScore& a, const CandidateScore& b) {
     if (a.failure.empty() != b.failure.empty()) return a.failure.empty();
     return a.held_out_rmse_nm < b.held_out_rmse_nm;

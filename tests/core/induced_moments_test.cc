@@ -7,6 +7,7 @@
 #include <Eigen/QR>
 
 #include "core/coupling_geometry.h"
+#include "core/model_error.h"
 #include "tests/core/nrel_couplings.h"
 
 namespace gc {
@@ -128,6 +129,35 @@ TEST(InducedMoments, AlignedAndFrictionlessGivesNoMoment) {
   const InducedMoments m = induced_moments(upwind(), {1.5e6, 0.0, 0.0, 0.0});
   EXPECT_EQ(m.moment_y_dd_nm, 0.0);
   EXPECT_EQ(m.moment_z_dd_nm, 0.0);
+}
+
+// The model's prediction takes the moments without the tooth table: the same numbers bit for bit,
+// and the same refusal, over torque, misalignment, friction and both forms of the quarter sums.
+TEST(InducedMoments, DoublePrimeMomentsAloneAreThoseOfTheFullContactBitForBit) {
+  const double jam = upwind().jam_angle().angle_rad;
+  int compared = 0, refused = 0;
+  for (const bool continuous : {false, true}) {
+    ContactOptions options;
+    options.continuous_quarter_sums = continuous;
+    for (int t = 1; t <= 23; ++t) {
+      for (int z = 0; z <= 19; ++z) {
+        const OperatingPoint point{5e3 * t * t, jam * z / 20.0, 0.1 * t, 0.005 * (t % 5)};
+        try {
+          const InducedMoments full = induced_moments(upwind(), point, tooth_contact(upwind(), point, options));
+          const QuarterSums alone = double_prime_moments(upwind(), point, options);
+          EXPECT_EQ(alone.moment_y_dd_nm, full.moment_y_dd_nm);
+          EXPECT_EQ(alone.moment_z_dd_nm, full.moment_z_dd_nm);
+          EXPECT_EQ(alone.teeth_summed, full.teeth_summed);
+          ++compared;
+        } catch (const InvalidInput&) {
+          EXPECT_THROW(double_prime_moments(upwind(), point, options), InvalidInput);
+          ++refused;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 700);
+  EXPECT_GT(refused, 0);  // light torque near the jam angle
 }
 
 }  // namespace

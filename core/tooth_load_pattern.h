@@ -1,0 +1,59 @@
+// Eq 9's tooth load pattern before any tooth is listed: the scalars of Section 4.1 (eqs 7,
+// 10-13, 15, 20-22) and, from them, the load P_d of any tooth. tooth_contact() lists every tooth
+// with its contact zone and the stress; a model prediction needs only the loads that eqs 42-43
+// sum and their total, so it reads them here without a tooth table per sample (the diagnosis
+// predicts millions of samples, docs/benchmarks.md "Diagnose").
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/coupling_geometry.h"
+#include "core/load_sharing.h"
+#include "core/operating_point.h"
+
+namespace gc {
+
+struct ContactOptions;
+
+struct ToothLoadPattern {
+  double total_normal_load_n = 0.0;     ///< P_t = T / (R cos phi), eq 7 [N]
+  double mean_tooth_load_n = 0.0;       ///< P_t' = P_t / N, eq 20 [N]
+  double max_separation_m = 0.0;        ///< z_o, eq 11, plus the spacing error [m]
+  LoadSharing load_sharing;             ///< q and its iteration, eqs 20-22
+  double peak_tooth_load_n = 0.0;       ///< P_i = P_t' / q, eq 20 [N]
+  double elastic_deformation_m = 0.0;   ///< z_e = P_i / C, eq 10 [m]
+  double offset_alpha_rad = 0.0;        ///< alpha, eq 13 [rad]
+  double max_contact_offset_m = 0.0;    ///< F_i = R_F sin(zeta), eq 15 [m]
+  double separation_ratio = 0.0;        ///< z_o / z_e of eq 9 [-]
+  double sin_alpha = 0.0;
+  double cos_alpha = 1.0;
+
+  /// theta_j = 2 pi j / N + alpha [rad].
+  double angle_rad(int teeth, int j) const { return 2.0 * M_PI * j / teeth + offset_alpha_rad; }
+  /// sin and cos of theta_j by the angle-sum rule on the coupling's tooth table.
+  double sin_theta(const CouplingGeometry& coupling, int j) const {
+    return coupling.tooth_sin()[j] * cos_alpha + coupling.tooth_cos()[j] * sin_alpha;
+  }
+  double cos_theta(const CouplingGeometry& coupling, int j) const {
+    return coupling.tooth_cos()[j] * cos_alpha - coupling.tooth_sin()[j] * sin_alpha;
+  }
+  /// Eq 9 as read: P_d = P_i [1 - (z_o / z_e) sin^2(theta_j)], clipped at zero [N].
+  double load_n(const CouplingGeometry& coupling, int j) const {
+    const double s = sin_theta(coupling, j);
+    return peak_tooth_load_n * std::max(0.0, 1.0 - separation_ratio * s * s);
+  }
+};
+
+/// The pattern at `point`. Validates the operating point and the options (throws InvalidInput
+/// naming the field) and throws NotConverged when eqs 20-22 do not converge.
+ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                    const ContactOptions& options);
+
+/// Rejects a pattern whose tooth loads, summing to `sum_of_loads_n`, carry less than `minimum` of
+/// P_t: eq 22 is a fitted curve, and far below its range (light torque near the jam angle) eq 9
+/// with that q no longer carries the transmitted load. Throws InvalidInput on the torque.
+void require_load_carried(const ToothLoadPattern& pattern, double sum_of_loads_n, const OperatingPoint& point,
+                          double minimum);
+
+}  // namespace gc
