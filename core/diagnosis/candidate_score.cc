@@ -69,7 +69,7 @@ void score_held_out(CandidateScore& score, const Eigen::MatrixX2d& base_residual
   score.held_out_rmse_nm = std::sqrt(pooled_mean_square(score.held_out_residual));
   const double base_rmse = std::sqrt(pooled_mean_square(base_residual));
   score.reduction = base_rmse > 0.0 ? 1.0 - score.held_out_rmse_nm / base_rmse : 0.0;
-  score.against_base = paired_block_test(base_residual, score.held_out_residual, folds.block_of, folds.blocks);
+  score.against_base = paired_block_test(base_residual, score.held_out_residual, folds.block_of, folds.blocks, false);
 }
 
 }  // namespace gc

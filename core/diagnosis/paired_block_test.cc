@@ -60,7 +60,7 @@ double long_run_ratio(const Eigen::VectorXd& series, int least_batches) {
 }
 
 PairedBlockTest paired_block_test(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b,
-                                  const std::vector<int>& block_of, int blocks) {
+                                  const std::vector<int>& block_of, int blocks, bool long_run) {
   const Eigen::VectorXd difference = 0.5 * (a.rowwise().squaredNorm() - b.rowwise().squaredNorm());
   const Eigen::MatrixXd means_matrix = block_means(difference, block_of, blocks);
   PairedBlockTest out;
@@ -71,8 +71,10 @@ PairedBlockTest paired_block_test(const Eigen::MatrixX2d& a, const Eigen::Matrix
   const Eigen::Map<const Eigen::VectorXd> m(means.data(), static_cast<Eigen::Index>(means.size()));
   out.mean_difference = m.mean();
   // The noise's correlation between blocks, on the better model's residual (b when t > 0).
-  const Eigen::MatrixXd noise = block_means(out.mean_difference >= 0.0 ? b : a, block_of, blocks);
-  for (Eigen::Index c = 0; c < noise.cols(); ++c) out.inflation = std::max(out.inflation, long_run_ratio(noise.col(c)));
+  if (long_run) {
+    const Eigen::MatrixXd noise = block_means(out.mean_difference >= 0.0 ? b : a, block_of, blocks);
+    for (Eigen::Index c = 0; c < noise.cols(); ++c) out.inflation = std::max(out.inflation, long_run_ratio(noise.col(c)));
+  }
   const double sd = std::sqrt(variance(m));
   out.t = sd > 0.0 ? out.mean_difference / (sd * std::sqrt(out.inflation / static_cast<double>(m.size()))) : 0.0;
   return out;

@@ -30,9 +30,13 @@ struct PairedBlockTest {
 };
 
 /// Positive t: `b` has the smaller errors. `block_of[i]` is row i's block in [0, blocks), blocks
-/// numbered in time order.
+/// numbered in time order. `long_run`: the block means' variance inflated by the noise's long-run
+/// correlation (above): the test of a claim against the model, which decides whether anything is
+/// claimed at all. Without it the blocks count as independent: the comparisons between candidates
+/// that are each claimable already (which goes first, whether one is idle beside another), where the
+/// noise they share cancels in the difference.
 PairedBlockTest paired_block_test(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b,
-                                  const std::vector<int>& block_of, int blocks);
+                                  const std::vector<int>& block_of, int blocks, bool long_run = false);
 
 /// How much the correlation of `series` (in time order) inflates the variance of its mean over what
 /// independent values would give: for batches of 1, 2, 4, ... consecutive values that leave at least

@@ -87,10 +87,11 @@ TEST(DiagnosisRules, FitsAnAssemblyMisalignmentBeyondTheOldFixedBound) {
   EXPECT_EQ(d.added.size(), 1u);
 }
 
-// Issue 8, class 7: a slow zero drift has a mean. A channel offset takes it in round 1; round 2's
-// formula has the drift in time, and the offset, revisited, is dropped: the formula alone does as
-// well.
-TEST(DiagnosisRules, AnOffsetThatTookTheMeanOfADriftIsDroppedOnceTheDriftIsFound) {
+// Issue 8, class 7: a slow zero drift has a mean. A channel offset takes that mean (61 % of the
+// held-out error); the formula of the drift in time takes it all (67 %, to the noise), significantly
+// better; the offset never stays in the model, whether it is never claimed or claimed in round 1
+// and dropped once the drift is found.
+TEST(DiagnosisRules, AnOffsetNeverKeepsTheMeanOfADriftOnceTheDriftIsFound) {
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
   std::vector<RecordedSample> observations = record(model, sweeps(testing::nrel_upwind()), 53);
   const double end = observations.back().input.time_s;
@@ -100,13 +101,7 @@ TEST(DiagnosisRules, AnOffsetThatTookTheMeanOfADriftIsDroppedOnceTheDriftIsFound
   ASSERT_GE(d.rounds.size(), 2u);
   EXPECT_NE(d.summary.find("drift"), std::string::npos);
   for (const auto& e : d.added) EXPECT_NE(e->name(), "channel_gain_offset");
-  bool dropped = false;
-  for (const DiagnosisRound& r : d.rounds) {
-    dropped = dropped || std::find(r.dropped.begin(), r.dropped.end(), "channel_gain_offset") != r.dropped.end();
-  }
-  EXPECT_TRUE(dropped);
-  EXPECT_NE(d.summary.find("the earlier claim channel_gain_offset no longer lowers the held-out error and is dropped"),
-            std::string::npos);
+  EXPECT_LT(d.rounds.back().rmse_nm, 1.05 * d.rounds.back().noise.pooled_sigma_nm());
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
