@@ -108,7 +108,7 @@ TEST(ExpressionTerms, TimeCycleTermsCarryTheirPeriodInTheirName) {
   EXPECT_NEAR(v.x(), 0.0, 1e-12);
   EXPECT_NEAR(v.y(), 1.0, 1e-12);
   EXPECT_NEAR(find_expression_term("time_cycle_70s_cos_on_y")->value(s, {1.0, 2.0})->x(), 0.0, 1e-12);
-  for (const char* bad : {"time_cycle_0.01s_sin_on_y", "time_cycle_070s_sin_on_y", "time_cycle_70.50s_sin_on_y",
+  for (const char* bad : {"time_cycle_0.00001s_sin_on_y", "time_cycle_070s_sin_on_y", "time_cycle_70.50s_sin_on_y",
                           "time_cycle_70s_tan_on_y", "time_cycle_s_sin_on_y", "time_cycle_2000000s_sin_on_y",
                           "time_cycle_7e1s_sin_on_y", "time_cycle_2.5000001s_sin_on_y", "time_cycle_nans_sin_on_y"}) {
     EXPECT_EQ(find_expression_term(bad), nullptr) << bad;
