@@ -56,7 +56,9 @@ DataQuality check_data_quality(std::span<const RecordedSample> observations, con
   for (const RecordedChannel& channel : recorded_channels(observations)) {
     // A set point or a noise-free channel holds values by design: its repeats are no artefact.
     const bool noisy = changes_every_sample(channel, observations);
-    if (noisy) channel_artefacts(channel, settings, out.findings);
+    // Rails, frozen runs and dropouts on the moment channels only: an input's top set point (a speed
+    // programme's 14 rpm held for a few samples) piles up at its maximum as a rail does.
+    if (noisy && channel.measured) channel_artefacts(channel, settings, out.findings);
     // A sensor's grid shows on a measured channel whatever its ties; an input on a coarse grid
     // cannot be told from set points, nor from a ramp that moves by the same step every sample (a
     // misalignment sweep of 98 µrad a sample read as an ADC step).
