@@ -138,7 +138,9 @@ TEST(LiveBounds, FiveThousandCellNamesInABurstLeaveTheMonitorFollowingAtMostMaxC
   const std::string text = read_file(log);
   EXPECT_NE(text.find("refused: 64 test cells are followed, the most --max-cells allows"),
             std::string::npos) << text;
-  EXPECT_EQ(occurrences(text, "refused"), 1u) << "logged once, not per name:\n" << text.substr(0, 4000);
+  // The first refusal, then a summary at most once a second (issue 38's refusal log), not a line per
+  // name: the burst and the wait after it last a few seconds.
+  EXPECT_LE(occurrences(text, "refused"), 6u) << "logged once and summarised, not per name:\n" << text.substr(0, 4000);
   const long growth_kb = resident_kb(monitor->pid()) - before_kb;
   EXPECT_LT(growth_kb, kMostGrowthKb);
   std::printf("monitor: %ld kB resident before %d names, +%ld kB after\n", before_kb, kBurstCells,
