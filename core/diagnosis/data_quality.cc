@@ -25,7 +25,11 @@ void add(std::vector<DataQualityFinding>& findings, std::optional<DataQualityFin
 void channel_artefacts(const RecordedChannel& channel, const DataQualitySettings& settings,
                        std::vector<DataQualityFinding>& findings) {
   std::vector<std::size_t> taken;
-  for (auto finding : {zero_dropouts(channel, settings), clipped_samples(channel, settings)}) {
+  // A rail on the moment channels only: an input's top set point (a speed programme's 14 rpm held
+  // for a few samples) piles up at its maximum as a rail does.
+  const std::optional<DataQualityFinding> clipped =
+      channel.measured ? clipped_samples(channel, settings) : std::nullopt;
+  for (auto finding : {zero_dropouts(channel, settings), clipped}) {
     if (!finding) continue;
     taken.insert(taken.end(), finding->rows.begin(), finding->rows.end());
     findings.push_back(std::move(*finding));
@@ -56,9 +60,7 @@ DataQuality check_data_quality(std::span<const RecordedSample> observations, con
   for (const RecordedChannel& channel : recorded_channels(observations)) {
     // A set point or a noise-free channel holds values by design: its repeats are no artefact.
     const bool noisy = changes_every_sample(channel, observations);
-    // Rails, frozen runs and dropouts on the moment channels only: an input's top set point (a speed
-    // programme's 14 rpm held for a few samples) piles up at its maximum as a rail does.
-    if (noisy && channel.measured) channel_artefacts(channel, settings, out.findings);
+    if (noisy) channel_artefacts(channel, settings, out.findings);
     // A sensor's grid shows on a measured channel whatever its ties; an input on a coarse grid
     // cannot be told from set points, nor from a ramp that moves by the same step every sample (a
     // misalignment sweep of 98 µrad a sample read as an ADC step).

@@ -10,7 +10,7 @@ constexpr int kMaxLag = 10;     ///< samples: beyond a few correlation times of 
 constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean square says little
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
 constexpr std::size_t kLongestSpike = 2;  ///< samples in a spike at most, and the rows that keep spikes apart
-constexpr double kNeighbourShare = 0.7;  ///< of the threshold: a neighbour this far out makes a flagged sample part of structure
+constexpr double kNeighbourShare = 0.5;  ///< of the threshold: a neighbour this far out makes a flagged sample part of structure
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;

@@ -11,7 +11,7 @@ namespace {
 constexpr double kWholeShare = 0.9;   ///< of the gaps that must be whole multiples of the step
 constexpr double kStepTolerance = 0.02;  ///< of a step: the printed values' rounding
 constexpr double kLeastLevels = 8.0;     ///< steps a channel's range spans before it is called a grid
-constexpr double kMostStepShare = 4.0;   ///< of the noise: a coarser "grid" is set points
+constexpr double kMostStepShare = 50.0;  ///< of the noise: a coarser "grid" is set points held without noise
 
 bool whole_multiples(const std::vector<double>& gaps, double step) {
   std::size_t whole = 0;

@@ -72,10 +72,10 @@ TEST(NoiseEstimate, FlagsSpikesButNotStepsOrColouredNoise) {
   }
   const std::vector<std::size_t> found = outlier_positions(r);
   // Every flag a spike; nearly every spike flagged: one whose neighbour the AR(1) noise carries out
-  // beyond 0.7 of the threshold is kept with its neighbours as possible structure (a ringing's
+  // beyond half the threshold is kept with its neighbours as possible structure (a ringing's
   // peaks stand alone above the threshold with their neighbours just below it).
   for (std::size_t f : found) EXPECT_TRUE(std::binary_search(spikes.begin(), spikes.end(), f)) << f;
-  EXPECT_GE(found.size(), spikes.size() * 95 / 100);
+  EXPECT_GE(found.size(), spikes.size() * 90 / 100);
 }
 
 }  // namespace
