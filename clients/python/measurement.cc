@@ -66,6 +66,14 @@ ValidationResultObject validate(const RecordingArgument& recording_argument,
   return out;
 }
 
+/// The model as the user named it, as `diagnose --model` records it (DiagnosisResult.model_source):
+/// a bundled name or a file's path as given; a Model object or a dict by the model's own name.
+std::string model_source(const ModelArgument& argument, const codec::ModelFile& file) {
+  if (py::isinstance<py::str>(argument)) return argument.cast<std::string>();
+  if (py::hasattr(argument, "__fspath__")) return py::str(argument.attr("__fspath__")()).cast<std::string>();
+  return file.name;
+}
+
 DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
                                const ModelArgument& model_argument_,
                     const std::optional<std::filesystem::path>& write_model, unsigned threads,
@@ -77,6 +85,7 @@ DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
   std::optional<Diagnosis> diagnosis;
   gearcoupling::v1::DiagnosisResult result;
   std::optional<codec::ModelFile> diagnosed;
+  const std::string source = model_source(model_argument_, file);
   {
     py::gil_scoped_release release;
     const analysis::RecordingCheck check = analysis::check_recording(file.model, file.name, data.samples);
@@ -85,6 +94,7 @@ DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
     if (!force_scale) analysis::refuse_unit_slip(recording.source, check.refusal, analysis::UnitFix::python);
     diagnosis.emplace(gc::diagnose(file.model, data.samples, thread_parallel_for(threads_argument(threads))));
     result = analysis::diagnosis_result(*diagnosis, recording.source, file.name, check, data);
+    result.set_model_source(source);
     diagnosed.emplace(analysis::diagnosed_model(file, *diagnosis));
     if (write_model) {
       analysis::write_file_atomically(*write_model, model_text(*diagnosed), "write_model");
