@@ -16,7 +16,7 @@ Qos request_reply_qos(double max_blocking_s) {
 }
 
 std::int32_t reply_history_depth(Calculation calculation) {
-  return calculation == Calculation::kToothContact ? 32 : 128;
+  return calculation == Calculation::kToothContact ? 64 : 512;
 }
 
 Qos tagged_reply_writer_qos(const std::string& tag, Calculation calculation, double max_blocking_s) {

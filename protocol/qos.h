@@ -16,12 +16,14 @@ namespace gc::protocol {
 Qos request_reply_qos(double max_blocking_s = 10.0);
 
 /// How many of its latest replies a reply writer of `calculation` keeps for readers that have
-/// not acknowledged them (KEEP_LAST depth): 128, and 32 for tooth contact, whose replies carry
-/// every tooth (about 6 kB for the bundled couplings' 100). Chosen so that the latest `depth`
-/// replies fit in a writer's window (Cyclone's WhcHigh, 500 kB in every shipped configuration)
-/// for error replies of the small calculations (at most about 2.2 kB: `field` and `message` of
-/// up to 1024 bytes each) and for tooth contacts of up to about 270 teeth: then no reader, of
-/// whichever participant, can make a write wait (issue 38; docs/protocol.md, "QoS").
+/// not acknowledged them (KEEP_LAST depth): 512, and 64 for tooth contact, whose replies carry
+/// every tooth (5.8 kB for the bundled couplings' 100). Deep enough that a client keeping the
+/// 256 requests in flight of docs/protocol.md rule 9 never finds a reply it has to have resent
+/// dropped before it could ask; shallow enough that the latest `depth` replies fit in a writer's
+/// window (Cyclone's WhcHigh, 500 kB in every shipped configuration) while replies are at most
+/// about 1 kB (every OK reply, about 150 bytes, and the usual error replies) or, for tooth
+/// contact, 7.8 kB (about 135 teeth): then no reader, of whichever participant, can make a write
+/// wait (issue 38; docs/protocol.md, "QoS").
 std::int32_t reply_history_depth(Calculation calculation);
 
 /// Reply writers: RELIABLE, KEEP_LAST reply_history_depth(calculation), VOLATILE, blocking at
