@@ -17,25 +17,24 @@ Qos request_reply_qos(double max_blocking_s = 10.0);
 
 /// How many of its latest replies a reply writer of `calculation` keeps for readers that have
 /// not acknowledged them (KEEP_LAST depth): 512, and 64 for tooth contact, whose replies carry
-/// every tooth (5.8 kB for the bundled couplings' 100). Deep enough that a client keeping the
-/// 256 requests in flight of docs/protocol.md rule 9 never finds a reply it has to have resent
-/// dropped before it could ask; shallow enough that the latest `depth` replies fit in a writer's
-/// window (Cyclone's WhcHigh, 500 kB in every shipped configuration) while replies are at most
-/// about 1 kB (every OK reply, about 150 bytes, and the usual error replies) or, for tooth
-/// contact, 7.8 kB (about 135 teeth): then no reader, of whichever participant, can make a write
-/// wait (issue 38; docs/protocol.md, "QoS").
+/// every tooth (5.8 kB for the bundled couplings' 100, up to 560 kB for 10,000). Deep enough that
+/// a client keeping the 256 requests in flight of docs/protocol.md rule 9 can have resent any
+/// small reply it missed; for tooth contact, shallow enough that a reader that never acknowledges
+/// holds at most 64 replies of the service's memory (370 kB with the bundled couplings, 36 MB at
+/// the largest).
 std::int32_t reply_history_depth(Calculation calculation);
 
-/// Reply writers: RELIABLE, KEEP_LAST reply_history_depth(calculation), VOLATILE, blocking at
-/// most `max_blocking_s` when the window is full anyway (larger replies), with USER_DATA =
-/// `tag`: the service tags its reply writers with its instance id so a client can tell which
-/// instance's writer its reply reader matched. KEEP_LAST, not KEEP_ALL: a KEEP_ALL writer keeps
-/// every reply until every matched reader has acknowledged it, so a reader of another process in
-/// the client's partition that never reads (it needs only to know the partition name, which
-/// discovery tells every participant) filled the window and stopped the client's replies
-/// (issue 38, finding 6). A KEEP_LAST writer drops its oldest reply beyond the depth, acknowledged
-/// or not, so a reader that does not acknowledge costs only itself. Reply readers keep KEEP_ALL
-/// (request_reply_qos): history is not matched between writer and reader.
+/// Reply writers: RELIABLE, KEEP_LAST reply_history_depth(calculation), VOLATILE, max blocking
+/// `max_blocking_s`, with USER_DATA = `tag`: the service tags its reply writers with its instance
+/// id so a client can tell which instance's writer its reply reader matched. KEEP_LAST, not
+/// KEEP_ALL: a KEEP_ALL writer keeps every reply until every matched reader has acknowledged it
+/// and blocks (or fails) once 500 kB wait, so a reader of another process in the client's
+/// partition that never reads (it needs only the partition's name, which discovery tells every
+/// participant) stopped the client's replies (issue 38, finding 6). A KEEP_LAST writer drops its
+/// oldest reply beyond the depth, acknowledged or not, and Cyclone 0.10 never makes one wait
+/// (ddsi_endpoint.c: its watermarks are INT32_MAX), so a reader that does not acknowledge costs
+/// only itself. Reply readers keep KEEP_ALL (request_reply_qos): history is not matched between
+/// writer and reader.
 Qos tagged_reply_writer_qos(const std::string& tag, Calculation calculation, double max_blocking_s);
 
 /// Status topic: RELIABLE, KEEP_LAST 1 per instance (the newest status is all that matters),

@@ -76,10 +76,10 @@ ReplyWriters::Endpoint ReplyWriters::make_endpoint(std::shared_ptr<Generation> g
   endpoint.publisher = Entity(check_dds(
       dds_create_publisher(domain.participant(), partition.get(), nullptr), "dds_create_publisher"));
   // KEEP_LAST (protocol::reply_history_depth): the writer keeps only its latest replies for
-  // readers that have not acknowledged them, so no reader in the client's partition, the client's
-  // own or another process's that never reads, can fill its window (issue 38). Max blocking time
-  // 0: should the window fill anyway (replies larger than the depth allows for), a write never
-  // waits; it returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog.
+  // readers that have not acknowledged them and never waits for one, so no reader in the
+  // client's partition, the client's own or another process's that never reads, can hold it
+  // (issue 38). Max blocking time 0 as well: were a write ever to find the writer's window full,
+  // it would return DDS_RETCODE_TIMEOUT at once and the reply go to the ReplyBacklog.
   const protocol::Qos qos = protocol::tagged_reply_writer_qos(
       instance_tag_, protocol::kAllCalculations[key.second], 0.0);
   endpoint.writer = Entity(check_dds(dds_create_writer(endpoint.publisher.get(),

@@ -155,8 +155,8 @@ TEST(MisbehavingClients, AClientThatNeverReadsItsRepliesSlowsOnlyItself) {
   EXPECT_EQ(service.wait_exit(10.0), 0);
   const std::string text = test::read_text(log);
   std::remove(log.c_str());
-  // Since issue 38 its writer keeps only its latest 64 replies (KEEP_LAST, 370 kB: within the
-  // window), so no write ever waited for it: nothing was held for a retry, nothing dropped.
+  // Since issue 38 its writer keeps only its latest 64 replies (KEEP_LAST, which Cyclone never
+  // makes wait), so no write ever waited for it: nothing was held for a retry, nothing dropped.
   EXPECT_EQ(last_count(text, "late"), 0) << text.substr(0, 4000);
   EXPECT_EQ(last_count(text, "dropped"), 0) << text.substr(0, 4000);
 }
