@@ -15,8 +15,13 @@ Qos request_reply_qos(double max_blocking_s) {
   return qos;
 }
 
-Qos tagged_reply_writer_qos(const std::string& tag, double max_blocking_s) {
+std::int32_t reply_history_depth(Calculation calculation) {
+  return calculation == Calculation::kToothContact ? 64 : 512;
+}
+
+Qos tagged_reply_writer_qos(const std::string& tag, Calculation calculation, double max_blocking_s) {
   Qos qos = request_reply_qos(max_blocking_s);
+  dds_qset_history(qos.get(), DDS_HISTORY_KEEP_LAST, reply_history_depth(calculation));
   dds_qset_userdata(qos.get(), tag.data(), tag.size());
   return qos;
 }

@@ -1,6 +1,8 @@
 // Replies a worker could not write at once: the client's reply writer has its window full of
 // replies the client has not acknowledged (it reads slowly, is stopped, or was killed and is
-// still matched until its lease ends). The reply writers never block (max blocking time 0), so
+// still matched until its lease ends). Since issue 38 the writers are KEEP_LAST
+// (protocol::reply_history_depth), which Cyclone 0.10 never makes wait: a write no longer fails
+// for a full window, and this backlog stays empty. It is kept for a writer that would. The reply writers never block (max blocking time 0), so
 // the worker hands such a reply here and moves on; a thread of this class retries it, again
 // without blocking, until it is written or has waited `hold_s`. A slow or dead reader so delays
 // only its own replies, never a worker or another client's.

@@ -75,9 +75,13 @@ ReplyWriters::Endpoint ReplyWriters::make_endpoint(std::shared_ptr<Generation> g
   const ReplyDomain& domain = *endpoint.generation->domain;
   endpoint.publisher = Entity(check_dds(
       dds_create_publisher(domain.participant(), partition.get(), nullptr), "dds_create_publisher"));
-  // Max blocking time 0: a write never waits for a client's acknowledgements; a full window
-  // returns DDS_RETCODE_TIMEOUT at once and the reply goes to the ReplyBacklog instead.
-  const protocol::Qos qos = protocol::tagged_reply_writer_qos(instance_tag_, 0.0);
+  // KEEP_LAST (protocol::reply_history_depth): the writer keeps only its latest replies for
+  // readers that have not acknowledged them and never waits for one, so no reader in the
+  // client's partition, the client's own or another process's that never reads, can hold it
+  // (issue 38). Max blocking time 0 as well: were a write ever to find the writer's window full,
+  // it would return DDS_RETCODE_TIMEOUT at once and the reply go to the ReplyBacklog.
+  const protocol::Qos qos = protocol::tagged_reply_writer_qos(
+      instance_tag_, protocol::kAllCalculations[key.second], 0.0);
   endpoint.writer = Entity(check_dds(dds_create_writer(endpoint.publisher.get(),
                                                        domain.reply_topic(key.second), qos.get(),
                                                        nullptr),

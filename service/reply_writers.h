@@ -4,7 +4,9 @@
 // client may send, see docs/protocol.md) and deleted when the reader goes: a request carrying an
 // id no reader has (made up, 0, or a client that did not wait for discovery) creates nothing.
 // Every writer carries this instance's id as USER_DATA, by which a client knows this instance's
-// writer has matched its reader.
+// writer has matched its reader. Writers are KEEP_LAST (protocol::tagged_reply_writer_qos): any
+// participant may put a reader in a client's partition, and one that never acknowledges must
+// not hold the writer; a KEEP_LAST writer never waits for a reader (issue 38).
 //
 // The writers live in a ReplyDomain, not on the service's participant: Cyclone 0.10.2 keeps
 // memory for every writer deleted until its domain goes (service/reply_domain.h). After

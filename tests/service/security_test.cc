@@ -266,6 +266,85 @@ void expect_victim_unharmed(const VictimUnderForgery& run, const std::string& se
       << " forgeries logged as forged";
 }
 
+/// What a victim saw while a reader of another process sat, full and silent, in its reply
+/// partition.
+struct VictimBesideStalledReader {
+  int calls = 0;
+  int answered = 0;
+  int lost = 0;             ///< calls that failed (1 s timeouts)
+  double seconds = 0.0;     ///< for all the calls
+  double p50_ms = 0.0, p99_ms = 0.0, max_ms = 0.0;  ///< the answered calls' round trips
+};
+
+constexpr int kStalledVictimCalls = 300;
+
+/// Issue 38, finding 6: tests/service/stalled_reader (a process of its own, with `environment`:
+/// the victim's identity under security) copies `victim`'s reply readers, each holding one reply
+/// and never read; then `victim` makes kStalledVictimCalls tooth-contact calls (about 6 kB
+/// replies, so that 500 kB of a reply writer's window fill within 90 of them), 10 ms apart, with
+/// a 1 s timeout. Before the fix the service's reply writer waited for the stalled reader's
+/// acknowledgements: once its window was full the victim's replies were dropped and the victim
+/// put on hold, so nearly every call after the first 90 timed out. Bounded: 60 s of calls.
+VictimBesideStalledReader run_victim_beside_stalled_reader(
+    client::Client& victim, const std::string& attacker_log,
+    std::vector<std::pair<std::string, std::string>> environment) {
+  const client::Client::Request<Calculation::kToothContact> contact{
+      CatalogueName{"nrel_upwind"}, {1.5e6, 0.007, 0.0, 0.1}, {}};
+  VictimBesideStalledReader run;
+  EXPECT_TRUE(victim.wait_for_service(Calculation::kToothContact, std::chrono::seconds(30)));
+  victim.call<Calculation::kToothContact>(contact);  // its reply reader matched
+  test::ChildProcess attacker({GC_STALLED_READER_BINARY, std::to_string(test::test_domain()), "90"},
+                              attacker_log, std::move(environment), {}, true);
+  const bool stalling = protocol::wait_until(
+      [&] { return lines_containing(attacker_log, "stalling gearcoupling/tooth_contact/reply") > 0; },
+      in_seconds(40));
+  EXPECT_TRUE(stalling) << cli::testing::read_file(attacker_log);
+  if (!stalling) return run;
+  std::vector<double> latencies_ms;
+  const Clock::time_point started = Clock::now();
+  const Clock::time_point give_up = started + std::chrono::seconds(60);
+  for (; run.calls < kStalledVictimCalls && Clock::now() < give_up; ++run.calls) {
+    const Clock::time_point start = Clock::now();
+    try {
+      victim.call<Calculation::kToothContact>(contact);
+      run.answered += 1;
+      latencies_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    } catch (const std::exception&) {
+      run.lost += 1;
+    }
+    // Paced, so that the calls span seconds: under security the service's writer matches the
+    // stalled reader some time after the reader matched it.
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  run.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  std::sort(latencies_ms.begin(), latencies_ms.end());
+  if (!latencies_ms.empty()) {
+    const auto at = [&](double q) {
+      return latencies_ms[std::min(latencies_ms.size() - 1,
+                                   static_cast<std::size_t>(q * latencies_ms.size()))];
+    };
+    run.p50_ms = at(0.50);
+    run.p99_ms = at(0.99);
+    run.max_ms = latencies_ms.back();
+  }
+  EXPECT_TRUE(attacker.running()) << "the stalled reader's process left early";
+  // The attack took hold: the stalled reader holds a reply of the victim's.
+  EXPECT_TRUE(protocol::wait_until(
+      [&] { return lines_containing(attacker_log, "holding a reply of gearcoupling/tooth_contact/reply") > 0; },
+      in_seconds(5))) << cli::testing::read_file(attacker_log);
+  std::printf("victim beside a stalled reader: %d of %d answered (%d calls made in %.1f s), %d "
+              "lost; round trip p50 %.2f ms, p99 %.2f ms, max %.2f ms\n",
+              run.answered, kStalledVictimCalls, run.calls, run.seconds, run.lost, run.p50_ms,
+              run.p99_ms, run.max_ms);
+  return run;
+}
+
+/// At least 95 % of the calls answered, all of them made within the 60 s.
+void expect_stalled_reader_harmless(const VictimBesideStalledReader& run) {
+  EXPECT_EQ(run.calls, kStalledVictimCalls);
+  EXPECT_GE(run.answered, kStalledVictimCalls * 95 / 100);
+}
+
 // ---- the script ---------------------------------------------------------------------------
 
 class SecurityScript : public test::SecureCellTest {
@@ -565,6 +644,17 @@ TEST_F(SecureService, AnotherClientsRequestsCarryingAVictimsIdCostTheVictimNothi
   expect_victim_unharmed(run, log_path());
 }
 
+TEST_F(SecureService, AReaderOfAnotherProcessOfTheVictimsIdentityThatNeverReadsCostsTheVictimNothing) {
+  start_service();
+  const auto a = domain(kClientADomain, "client-a");
+  client::ClientOptions options = client_options(kClientADomain, "a");
+  options.timeout = std::chrono::seconds(1);  // a dropped reply shows as a 1 s timeout
+  client::Client victim(options);
+  const VictimBesideStalledReader run = run_victim_beside_stalled_reader(
+      victim, cell_->dir() + "/stalled_reader.log", {{"CYCLONEDDS_URI", cell_->uri("client-a")}});
+  expect_stalled_reader_harmless(run);
+}
+
 // ---- without security ---------------------------------------------------------------------
 
 TEST(ReplyRouting, AForgedClientIdIsRefusedWithoutSecurityToo) {
@@ -581,6 +671,14 @@ TEST(ReplyRouting, AForgedClientIdIsRefusedWithoutSecurityToo) {
 
 namespace gc {
 namespace {
+
+TEST(ReplyRouting, AReaderOfAnotherParticipantThatNeverReadsCostsTheVictimNothing) {
+  const std::string log = cli::testing::temp_path("stalled_reader_log");
+  test::ServiceProcess service;
+  client::Client victim({test::test_domain(), std::chrono::seconds(1)});
+  const VictimBesideStalledReader run = run_victim_beside_stalled_reader(victim, log, {});
+  expect_stalled_reader_harmless(run);
+}
 
 TEST(ReplyRouting, AnotherParticipantsRequestsCarryingAVictimsIdCostTheVictimNothing) {
   const std::string log = cli::testing::temp_path("capability_service_log");
