@@ -34,21 +34,22 @@ std::string candidate_name(const v1::CandidateRecord& c) {
 }
 
 void print_ranking(const v1::RoundRecord& round, std::FILE* out) {
-  Table table({"rank", "candidate", "held-out RMSE [kN·m]", "change", "t", "fitted parameters (search rows)"});
+  Table table({"rank", "candidate", "held-out RMSE [kN·m]", "change", "t", "surrogate p", "fitted parameters (search rows)"});
+  const auto p_text = [](const v1::CandidateRecord& c) { return c.has_surrogate_p() ? fmt::format("{:.3f}", c.surrogate_p()) : "-"; };
   int rank = 0;
   for (const v1::CandidateRecord& c : round.ranking()) {
     if (!c.failure().empty()) {
-      table.add_row({"-", candidate_name(c), "-", "-", "-", c.failure()});
+      table.add_row({"-", candidate_name(c), "-", "-", "-", p_text(c), c.failure()});
       continue;
     }
     table.add_row({std::to_string(++rank), candidate_name(c), fmt::format("{:.2f}", c.held_out_rmse_nm() / 1e3),
-                   fmt::format("{:+.0f} %", -100.0 * c.reduction()), fmt::format("{:.1f}", c.t()),
+                   fmt::format("{:+.0f} %", -100.0 * c.reduction()), fmt::format("{:.1f}", c.t()), p_text(c),
                    parameters_text(c.parameters())});
   }
   if (round.has_formula()) {
     const v1::CandidateRecord& f = round.formula();
     table.add_row({"-", candidate_name(f), fmt::format("{:.2f}", f.held_out_rmse_nm() / 1e3),
-                   fmt::format("{:+.0f} %", -100.0 * f.reduction()), fmt::format("{:.1f}", f.t()),
+                   fmt::format("{:+.0f} %", -100.0 * f.reduction()), fmt::format("{:.1f}", f.t()), p_text(f),
                    parameters_text(f.parameters())});
   }
   table.print(out);

@@ -28,6 +28,7 @@ v1::CandidateRecord to_message(const CandidateScore& c) {
   r.set_t(c.against_base.t);
   if (c.fit) fill(*c.fit, *r.mutable_parameters());
   r.set_failure(c.failure);
+  if (c.surrogate_p) r.set_surrogate_p(*c.surrogate_p);
   r.set_kind(c.kind == CandidateKind::addition ? "addition" : c.kind == CandidateKind::refinement ? "refinement" : "formula");
   return r;
 }

@@ -36,6 +36,9 @@ struct CandidateScore {
   /// of the model in the place of one (diagnose.cc, rival_of_claim).
   std::vector<std::string> replaces;
   int evaluations = 0;            ///< model evaluations of all rows it cost
+  /// The family-wise p-value that noise with the residual's spectrum is explained as well
+  /// (surrogate_claims.h); set for the candidates the claim rule tested that way.
+  std::optional<double> surrogate_p;
 };
 
 struct CrossValidationSettings {

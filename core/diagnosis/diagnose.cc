@@ -14,6 +14,7 @@
 #include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/signature_held_out.h"
 #include "core/diagnosis/slow_wander.h"
+#include "core/diagnosis/surrogate_claims.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/diagnosis/time_step.h"
 #include "core/diagnosis/whole_fifths.h"
@@ -555,6 +556,11 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
       !formula_carries(*round.formula, observations, search, base, fifths)) {
     round.formula->failure = "does not carry to a fifth of the recording it was not fitted on";
   }
+  // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
+  demote_what_noise_explains(
+      round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
+      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
+      [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims);
   // Refitting an effect an earlier round added and said explains only partly makes no new claim:
   // it needs to be significant, not to remove a share of the excess (a thermal misalignment fitted
   // beside a weight offset, refitted once the offset is in, took 24 % of the excess and was left

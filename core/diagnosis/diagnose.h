@@ -27,6 +27,7 @@
 #include "core/diagnosis/parallel_for.h"
 #include "core/diagnosis/residual_signature.h"
 #include "core/diagnosis/separating_experiment.h"
+#include "core/diagnosis/surrogate_claims.h"
 
 namespace gc {
 
@@ -67,6 +68,8 @@ struct DiagnosisSettings {
   /// Claim: the held-out gain over the base model has a block-paired t of at least this (one-sided
   /// p about 3e-4 over 100 blocks, under 3e-3 for the whole library of about ten candidates) ...
   double claim_t = 3.5;
+  /// ... and noise with the residual's own spectrum is not explained as well (surrogate_claims.h) ...
+  SurrogateClaimSettings surrogate_claims;
   /// ... and removes at least this share of the residual's excess over the noise (mean squares) ...
   double claim_excess_share = 0.3;
   /// ... and at least this share of the model's held-out mean square, whatever the noise estimate
