@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <set>
 
@@ -111,7 +112,8 @@ TEST_P(HiddenEffect, IsRankedFirstAndCutsTheHeldOutErrorByHalfOrToTheNoise) {
                                   << first.search_base_rmse_nm << ", noise " << first.noise.pooled_sigma_nm();
   // With it added, what is left is noise: nothing further is claimed.
   ASSERT_GE(d.rounds.size(), 2u);
-  if (scenario.effect == "thermal_misalignment" && d.rounds[1].outcome == RoundOutcome::unexplained) {
+  if (scenario.effect == "thermal_misalignment" && d.rounds[1].outcome == RoundOutcome::unexplained &&
+      !std::getenv("GC_RUN_KNOWN_REGRESSIONS")) {
     // Known regression of the issue-37 session (its closing note): round 1 fits theta_0 at 3.7 deg C
     // (79 % of the error), and round 2 calls the rest unexplained, where it was noise before.
     GTEST_SKIP() << "known regression: thermal_misalignment's remainder is unexplained in round 2";
@@ -287,7 +289,7 @@ TEST(Diagnosis, RefitsTwoEffectsTogetherWhenTheFirstWasFittedBesideTheSecond) {
   const auto joint = std::find_if(d.rounds.begin(), d.rounds.end(), [](const DiagnosisRound& r) {
     return r.claimed && r.claimed->info->name == "thermal_misalignment+channel_gain_offset";
   });
-  if (joint == d.rounds.end()) {
+  if (joint == d.rounds.end() && !std::getenv("GC_RUN_KNOWN_REGRESSIONS")) {
     // Known regression of the issue-37 session (its closing note): no round says "partly" now, so
     // the joint refit is never offered.
     GTEST_SKIP() << "known regression: no round refitted the two together";
