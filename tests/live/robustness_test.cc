@@ -205,7 +205,8 @@ void start_monitor_and_swap(status::CellBoard& health, live::MeasurementPublishe
   publish_stream(publisher, paper_samples(), 300, 2000.0);
   ASSERT_TRUE(health.wait_for(test_cell, [](const HealthView& h) { return h.taken == 300; }, 10s));
   const auto swap = cli::testing::run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", test_cell, "--model", "paper_downwind", "--wait-s", "10"}));
+      {"swap-model", "--test-cell", test_cell, "--model", "paper_downwind", "--wait-s", "10",
+       "--operator", "tester"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
 }
 
