@@ -6,6 +6,7 @@
 
 #include "codec/bundled_data.h"
 #include "codec/coupling_catalog.h"
+#include "codec/nearest_name.h"
 #include "codec/text_format.h"
 #include "core/effects/effect_registry.h"
 #include "core/model_error.h"
@@ -36,9 +37,14 @@ CouplingDefinition coupling_of(const v1::ModelConfig& config, std::string_view s
     const auto found = catalog.find(config.coupling());
     if (found == catalog.end()) {
       std::string names;
-      for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
+      std::vector<std::string> known;
+      for (const auto& [name, geometry] : catalog) {
+        names += (names.empty() ? "" : ", ") + name;
+        known.push_back(name);
+      }
       throw InvalidInput("model.coupling", "'" + config.coupling() + "' is not in the catalogue " +
-                                               catalog_dir.string() + " (" + names + ")");
+                                               catalog_dir.string() + " (" + names + ")" +
+                                               did_you_mean(config.coupling(), known));
     }
     return found->second.definition();
   } catch (const InvalidInput& error) {

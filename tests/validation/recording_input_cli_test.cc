@@ -117,8 +117,13 @@ TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWha
             std::string::npos) << missing.err;
   const ProcessResult misspelt = run_gearcoupling({"validate", "--data", kSweep, "--model", "papr"});
   EXPECT_EQ(misspelt.exit_code, 2) << misspelt.err;
-  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind)"),
+  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind) nor a "
+                             ".textproto file; did you mean 'paper'?"),
             std::string::npos) << misspelt.err;
+  const ProcessResult coupling = run_gearcoupling({"jam-angle", "--coupling", "nrel_dowwind"});
+  EXPECT_EQ(coupling.exit_code, 2) << coupling.err;
+  EXPECT_NE(coupling.err.find("(known: nrel_downwind, nrel_upwind); did you mean 'nrel_downwind'?"),
+            std::string::npos) << coupling.err;
 }
 
 // A dyno that logs the drive torque negative: refused with what to do, and --negate torque reads
