@@ -17,9 +17,6 @@ FlagSpec model_flag() {
 
 std::filesystem::path default_models_dir() { return codec::default_models_dir(); }
 
-namespace {
-
-/// The bundled model names, sorted: what --model takes besides a file.
 std::vector<std::string> bundled_model_names() {
   std::vector<std::string> names;
   std::error_code error;
@@ -29,6 +26,8 @@ std::vector<std::string> bundled_model_names() {
   std::sort(names.begin(), names.end());
   return names;
 }
+
+namespace {
 
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
