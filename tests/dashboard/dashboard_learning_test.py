@@ -188,8 +188,9 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
     WebDriverWait(driver, 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
         lambda d: loop["proposal"] in d.find_element(By.ID, "swaps").text)
     audit = driver.find_element(By.ID, "swaps").text
-    assert "paper_diagnosed" in audit and "dashboard@" in audit, audit   # the source
-    assert "operator-" + OPERATOR in audit, audit   # by: the operator identity's subject, a person
+    assert "paper_diagnosed" in audit, audit
+    # by: a person, here the operator identity's subject (issue 39), not the process "dashboard@HOST".
+    assert "dashboard@" not in audit and "operator-" + OPERATOR in audit, audit
     rows = [r for r in swap_rows(driver) if r.get("proposal") == loop["proposal"]]
     assert len(rows) == 1, swap_rows(driver)
     assert rows[0]["operatorIdentity"] == "operator-" + OPERATOR, rows
