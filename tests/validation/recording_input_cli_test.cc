@@ -120,6 +120,11 @@ TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWha
   EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind) nor a "
                              ".textproto file; did you mean 'paper'?"),
             std::string::npos) << misspelt.err;
+  const ProcessResult unwritable = run_gearcoupling(
+      {"synth", "--model", "paper", "--out", "/nonexistent/dir/out.csv"});
+  EXPECT_EQ(unwritable.exit_code, 1) << unwritable.err;
+  EXPECT_NE(unwritable.err.find("cannot write --out /nonexistent/dir/out.csv: No such file or directory"),
+            std::string::npos) << unwritable.err;
   const ProcessResult coupling = run_gearcoupling({"jam-angle", "--coupling", "nrel_dowwind"});
   EXPECT_EQ(coupling.exit_code, 2) << coupling.err;
   EXPECT_NE(coupling.err.find("(known: nrel_downwind, nrel_upwind); did you mean 'nrel_downwind'?"),
