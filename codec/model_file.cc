@@ -77,8 +77,12 @@ std::vector<std::shared_ptr<const Effect>> effects_of(const v1::ModelConfig& con
     try {
       effects.push_back(make_effect(entry.name(), values));
     } catch (const InvalidInput& error) {
+      // A misspelt effect ("eccentricty") gets the library's nearest name (issue 39).
+      const std::string guess =
+          error.field() == "effects." + entry.name() ? did_you_mean_effect(entry.name()) : "";
       // The core names "effects.<name>[.<parameter>]"; keep its tail after the index.
-      rethrow_in(error, field + error.field().substr(std::string("effects").size()), source_name);
+      const std::string tail = field + error.field().substr(std::string("effects").size());
+      throw InvalidInput(tail, std::string(source_name) + ": " + error.what() + guess);
     }
   }
   return effects;

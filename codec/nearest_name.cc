@@ -4,6 +4,8 @@
 #include <cctype>
 #include <limits>
 
+#include "core/effects/effect_registry.h"
+
 namespace gc::codec {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -44,6 +46,12 @@ std::string nearest_name(std::string_view typed, const std::vector<std::string>&
 std::string did_you_mean(std::string_view typed, const std::vector<std::string>& known) {
   const std::string nearest = nearest_name(typed, known);
   return nearest.empty() ? "" : "; did you mean '" + nearest + "'?";
+}
+
+std::string did_you_mean_effect(std::string_view typed) {
+  std::vector<std::string> names;
+  for (const EffectRegistration& r : effect_registry()) names.push_back(r.info->name);
+  return did_you_mean(typed, names);
 }
 
 }  // namespace gc::codec

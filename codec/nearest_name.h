@@ -20,4 +20,8 @@ std::string nearest_name(std::string_view typed, const std::vector<std::string>&
 /// "; did you mean 'NAME'?" for nearest_name, "" when there is none: to append to an error.
 std::string did_you_mean(std::string_view typed, const std::vector<std::string>& known);
 
+/// did_you_mean among the effects of the library (core/effects/effect_registry.h): for a model
+/// file's effect or validate --add.
+std::string did_you_mean_effect(std::string_view typed);
+
 }  // namespace gc::codec

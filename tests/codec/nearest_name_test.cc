@@ -26,5 +26,11 @@ TEST(NearestName, SuggestsOnlyANameNearEnoughToBeATypo) {
   EXPECT_EQ(did_you_mean("xyz", models), "");
 }
 
+TEST(NearestName, SuggestsTheLibrarysEffectForAMisspeltOne) {
+  EXPECT_EQ(did_you_mean_effect("eccentricty"), "; did you mean 'eccentricity'?");
+  EXPECT_EQ(did_you_mean_effect("fricton"), "; did you mean 'friction'?");
+  EXPECT_EQ(did_you_mean_effect("gravity_well"), "");
+}
+
 }  // namespace
 }  // namespace gc::codec

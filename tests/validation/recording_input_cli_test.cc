@@ -125,6 +125,11 @@ TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWha
   EXPECT_EQ(unwritable.exit_code, 1) << unwritable.err;
   EXPECT_NE(unwritable.err.find("cannot write --out /nonexistent/dir/out.csv: No such file or directory"),
             std::string::npos) << unwritable.err;
+  const ProcessResult effect = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper",
+                                                 "--add", "eccentricty"});
+  EXPECT_EQ(effect.exit_code, 2) << effect.err;
+  EXPECT_NE(effect.err.find("unknown effect; the library has: "), std::string::npos) << effect.err;
+  EXPECT_NE(effect.err.find("; did you mean 'eccentricity'?"), std::string::npos) << effect.err;
   const ProcessResult coupling = run_gearcoupling({"jam-angle", "--coupling", "nrel_dowwind"});
   EXPECT_EQ(coupling.exit_code, 2) << coupling.err;
   EXPECT_NE(coupling.err.find("(known: nrel_downwind, nrel_upwind); did you mean 'nrel_downwind'?"),
