@@ -255,7 +255,7 @@ TEST_F(LiveTest, TheAuditTrailOutlivesAKilledMonitor) {
     EXPECT_DOUBLE_EQ(is.at_unix_s(), was.at_unix_s());
     EXPECT_DOUBLE_EQ(is.before_msy_rmse_nm(), was.before_msy_rmse_nm());
   }
-  EXPECT_NE(m.recent_swaps(0).by().find('@'), std::string::npos);   // the CLI's USER@HOST
+  EXPECT_EQ(m.recent_swaps(0).by(), "tester");   // the CLI's --operator (start_monitor_and_swap)
   EXPECT_EQ(m.recent_swaps(0).model_after(), "paper_downwind");
   EXPECT_EQ(m.recent_swaps(1).by(), "tester@bench");
   EXPECT_EQ(m.recent_swaps(1).source(), "file mu012.textproto");
