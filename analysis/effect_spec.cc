@@ -4,7 +4,9 @@
 
 #include "analysis/format_error.h"
 #include "analysis/number_text.h"
+#include "codec/nearest_name.h"
 #include "core/effects/effect_registry.h"
+#include "core/model_error.h"
 
 namespace gc::analysis {
 
@@ -25,7 +27,15 @@ std::shared_ptr<const Effect> parse_effect_spec(std::string_view spec) {
     }
     values[std::string(trim(item.substr(0, eq)))] = *value;
   }
-  return make_effect(name, values);
+  try {
+    return make_effect(name, values);
+  } catch (const InvalidInput& error) {
+    // A misspelt effect ("--add eccentricty") gets the library's nearest name (issue 39).
+    if (error.field() != "effects." + name) throw;
+    const std::string what = error.what();
+    throw InvalidInput(error.field(), what.substr(error.field().size() + 2) +
+                                          codec::did_you_mean_effect(name));
+  }
 }
 
 std::string effect_spec_text(const Effect& effect) {

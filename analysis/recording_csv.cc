@@ -296,7 +296,7 @@ RecordingReader::RecordingReader(const std::filesystem::path& path,
     : RecordingReader(path, RecordingOptions{loading, {}}) {}
 
 RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
-    : source_name_(path.filename().string()),
+    : source_name_(options.source_name.empty() ? path.filename().string() : options.source_name),
       in_(path, std::ios::binary) {
   if (!in_) {
     // The OS's reason: no such file, permission denied, a directory (issue 39).

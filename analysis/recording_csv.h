@@ -88,6 +88,9 @@ struct RecordingOptions {
   /// Quantities read with their sign flipped (--negate torque: a dyno that logs the drive
   /// torque negative; the model takes the torque's magnitude).
   std::vector<Quantity> negated = {};
+  /// What errors call the recording, "" for the file's name: "<DataFrame>" where the file is a
+  /// scratch copy the user never named (Python).
+  std::string source_name = {};
 };
 
 /// "torque,msy" as quantities (their header names, docs/recordings.md). Throws FormatError

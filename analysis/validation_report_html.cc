@@ -1,6 +1,8 @@
 #include "analysis/validation_report_html.h"
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -31,9 +33,10 @@ caption { font-weight: bold; padding: 4px; }
 )css";
 
 std::string read_file(const std::filesystem::path& path) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw std::runtime_error("cannot read Chart.js at " + path.string() +
+    throw std::runtime_error("cannot read Chart.js at " + path.string() + ": " + std::strerror(errno) +
                              " (install Debian's libjs-chart.js, or set $GEARCOUPLING_CHART_JS)");
   }
   std::ostringstream text;

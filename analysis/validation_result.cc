@@ -57,7 +57,7 @@ v1::ValidationResult validation_result(const RecordingSummary& recording,
 
 void require_compared_samples(std::string_view source, std::string_view model_name,
                               std::size_t compared, std::size_t rows, std::size_t excluded_rows,
-                              std::size_t refused, std::string_view first_refusal) {
+                              std::size_t refused, std::string_view first_refusal, UnitFix fix) {
   if (compared > 0) return;
   std::string why;
   if (rows == 0) {
@@ -67,21 +67,24 @@ void require_compared_samples(std::string_view source, std::string_view model_na
   } else {
     why = fmt::format("the model refused all {} samples read (first: {})", refused, first_refusal);
     if (refuses_negative_torque("operating_point.torque_nm", first_refusal)) {
-      why += negative_torque_hint("for a dyno that logs the drive torque negative, read the "
-                                  "column with --negate torque");
+      why += negative_torque_hint(fix == UnitFix::python
+                                      ? "for a dyno that logs the drive torque negative, read the "
+                                        "column with negate=\"torque\""
+                                      : "for a dyno that logs the drive torque negative, read the "
+                                        "column with --negate torque");
     }
   }
   throw InvalidInput("recording", fmt::format("{}: {} compared no sample: {}; an RMSE of no "
                                               "samples is no fit", source, model_name, why));
 }
 
-void require_compared_samples(const v1::ValidationResult& result) {
+void require_compared_samples(const v1::ValidationResult& result, UnitFix fix) {
   for (const v1::ModelValidation& model : result.models()) {
     const std::string first_refusal =
         model.rejections_size() > 0 ? model.rejections(0).field() + ": " + model.rejections(0).first_message() : "";
     require_compared_samples(result.recording(), model.model(), model.compared_samples(),
                              result.recording_rows(), result.excluded_rows(),
-                             model.rejected_samples(), first_refusal);
+                             model.rejected_samples(), first_refusal, fix);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/scale_check.h"
 #include "analysis/validation_run.h"
 #include "core/coupling_model.h"
 #include "idl/validation.pb.h"
@@ -22,8 +23,10 @@ gearcoupling::v1::ValidationResult validation_result(const RecordingSummary& rec
 
 /// Zero compared samples is no data, not a perfect fit (an RMSE of 0.00). Throws InvalidInput
 /// naming "recording" with why: no rows, every row malformed, or every sample refused (with
-/// the model's first reason).
-void require_compared_samples(const gearcoupling::v1::ValidationResult& result);
+/// the model's first reason). A negative torque gets the fix in `fix`'s terms (--negate torque,
+/// or Python's negate="torque").
+void require_compared_samples(const gearcoupling::v1::ValidationResult& result,
+                              UnitFix fix = UnitFix::cli);
 
 /// What the same check finds for a recording in memory (diagnose): the samples `model`
 /// accepts, the first refusal, and the scale warnings. Predicts every sample once.
@@ -39,6 +42,7 @@ RecordingCheck check_recording(const CouplingModel& model, std::string_view mode
 /// The error of require_compared_samples for `source` when `compared` is zero.
 void require_compared_samples(std::string_view source, std::string_view model_name,
                               std::size_t compared, std::size_t rows, std::size_t excluded_rows,
-                              std::size_t refused, std::string_view first_refusal);
+                              std::size_t refused, std::string_view first_refusal,
+                              UnitFix fix = UnitFix::cli);
 
 }  // namespace gc::analysis

@@ -62,7 +62,8 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options) {
-  RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated});
+  RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated,
+                                                options.source_name});
   std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
@@ -76,7 +77,8 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
       accumulate(chunk, outcomes, run);
     }
   }
-  return {path.filename().string(), reader.rows_read(), reader.excluded_rows(), reader.problems(),
+  return {options.source_name.empty() ? path.filename().string() : options.source_name,
+          reader.rows_read(), reader.excluded_rows(), reader.problems(),
           reader.ignored_columns(), largest_misalignment_rad, largest_torque_nm};
 }
 

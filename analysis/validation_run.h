@@ -39,6 +39,7 @@ struct ValidationRunOptions {
   std::size_t chunk_samples = 1u << 15;
   std::vector<ColumnRename> renames = {};   ///< --columns
   std::vector<Quantity> negated = {};       ///< --negate
+  std::string source_name = {};             ///< RecordingOptions::source_name
 };
 
 /// Compares every model of `runs` with the recording at `path`. Samples a model refuses are

@@ -2,16 +2,23 @@
 
 #include "calculators/coupling_reference.h"
 #include "codec/coupling_catalog.h"
+#include "codec/nearest_name.h"
 #include "core/model_error.h"
 
 namespace gc::calculators {
 namespace {
 
 template <typename Catalog>
-std::string known_names(const Catalog& catalog) {
-  std::string names;
-  for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
+std::vector<std::string> known_names(const Catalog& catalog) {
+  std::vector<std::string> names;
+  for (const auto& [name, geometry] : catalog) names.push_back(name);
   return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
 }
 
 }  // namespace
@@ -41,7 +48,8 @@ const CouplingGeometry& InProcessCalculator::geometry(std::string_view coupling)
   if (found == catalog_->end()) {
     throw InvalidInput("coupling", "no coupling named \"" + std::string(coupling) + "\" in " +
                                        catalog_dir_.string() + " (known: " +
-                                       known_names(*catalog_) + ")");
+                                       joined(known_names(*catalog_)) + ")" +
+                                       codec::did_you_mean(coupling, known_names(*catalog_)));
   }
   return found->second;
 }

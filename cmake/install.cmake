@@ -95,5 +95,8 @@ install(CODE "set(GC_PC_NAMES \"${gc_pc_names}\")
 set(GC_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")")
 install(SCRIPT cmake/install_pkg_config.cmake)
 
+# The README and the pages it links to, in the same layout as the source tree (docs/X.md beside
+# README.md), so its links resolve where it is installed; the pages only (not docs/CMakeLists.txt
+# or the tutorial's test helper).
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs FILES_MATCHING PATTERN "*.md")

@@ -6,6 +6,7 @@
 
 #include "codec/bundled_data.h"
 #include "codec/coupling_catalog.h"
+#include "codec/nearest_name.h"
 #include "codec/text_format.h"
 #include "core/effects/effect_registry.h"
 #include "core/model_error.h"
@@ -36,9 +37,14 @@ CouplingDefinition coupling_of(const v1::ModelConfig& config, std::string_view s
     const auto found = catalog.find(config.coupling());
     if (found == catalog.end()) {
       std::string names;
-      for (const auto& [name, geometry] : catalog) names += (names.empty() ? "" : ", ") + name;
+      std::vector<std::string> known;
+      for (const auto& [name, geometry] : catalog) {
+        names += (names.empty() ? "" : ", ") + name;
+        known.push_back(name);
+      }
       throw InvalidInput("model.coupling", "'" + config.coupling() + "' is not in the catalogue " +
-                                               catalog_dir.string() + " (" + names + ")");
+                                               catalog_dir.string() + " (" + names + ")" +
+                                               did_you_mean(config.coupling(), known));
     }
     return found->second.definition();
   } catch (const InvalidInput& error) {
@@ -71,8 +77,12 @@ std::vector<std::shared_ptr<const Effect>> effects_of(const v1::ModelConfig& con
     try {
       effects.push_back(make_effect(entry.name(), values));
     } catch (const InvalidInput& error) {
+      // A misspelt effect ("eccentricty") gets the library's nearest name (issue 39).
+      const std::string guess =
+          error.field() == "effects." + entry.name() ? did_you_mean_effect(entry.name()) : "";
       // The core names "effects.<name>[.<parameter>]"; keep its tail after the index.
-      rethrow_in(error, field + error.field().substr(std::string("effects").size()), source_name);
+      const std::string tail = field + error.field().substr(std::string("effects").size());
+      throw InvalidInput(tail, std::string(source_name) + ": " + error.what() + guess);
     }
   }
   return effects;

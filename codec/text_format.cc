@@ -3,11 +3,15 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <vector>
 
+#include <google/protobuf/descriptor.h>
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 #include <google/protobuf/util/json_util.h>
 
+#include "codec/nearest_name.h"
 #include "core/model_error.h"
 
 namespace gc::codec {
@@ -25,8 +29,11 @@ class ThrowingErrorCollector : public pb::io::ErrorCollector {
   void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
     if (!first_error_.empty()) return;
     // The parser counts lines and columns from zero; editors count from one.
+    const std::string guess = suggestion(message);
+    std::string said = message;
+    if (!guess.empty() && !said.empty() && said.back() == '.') said.pop_back();  // "...\"x\"; did you"
     first_error_ = std::string(source_) + ":" + std::to_string(line + 1) + ":" +
-                   std::to_string(column + 1) + ": " + message;
+                   std::to_string(column + 1) + ": " + said + guess;
     field_ = root_ + named_field(message);
   }
 
@@ -47,6 +54,31 @@ class ThrowingErrorCollector : public pb::io::ErrorCollector {
     return field;
   }
 
+  /// The text between the `nth` pair of double quotes of `message` (0: the first), "" if none.
+  static std::string quoted(const std::string& message, int nth) {
+    std::size_t at = 0;
+    for (int k = 0;; ++k) {
+      const auto open = message.find('"', at);
+      if (open == std::string::npos) return "";
+      const auto close = message.find('"', open + 1);
+      if (close == std::string::npos) return "";
+      if (k == nth) return message.substr(open + 1, close - open - 1);
+      at = close + 1;
+    }
+  }
+
+  /// "; did you mean 'x'?" for a misspelt field ("Message type \"T\" has no field named \"y\"."),
+  /// from the fields of that message type (issue 39); "" for other errors or when none is near.
+  static std::string suggestion(const std::string& message) {
+    if (message.find("has no field named") == std::string::npos) return "";
+    const pb::Descriptor* type = pb::DescriptorPool::generated_pool()->FindMessageTypeByName(quoted(message, 0));
+    if (type == nullptr) return "";
+    std::vector<std::string> names;
+    for (int i = 0; i < type->field_count(); ++i) names.push_back(type->field(i)->name());
+    return did_you_mean(quoted(message, 1), names);
+  }
+
+ private:
   std::string_view source_;
   std::string root_;
   std::string first_error_;

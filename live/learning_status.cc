@@ -76,7 +76,8 @@ LearningStatus learning_status(const LearningInputs& in) {
   // A standing proposal first: a recheck of it running is upkeep, not news.
   if (in.standing_proposal) {
     return {"proposed",
-            fmt::format("proposal {} standing: apply it (swap-model --proposal {}) or leave it",
+            fmt::format("proposal {} standing: apply it (swap-model --proposal {} --operator NAME) "
+                        "or leave it",
                         *in.standing_proposal, *in.standing_proposal),
             0};
   }

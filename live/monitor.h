@@ -42,8 +42,9 @@ struct LearningOptions {
   double cpu_share = 0.25;
 };
 
-/// Who swapped a model and from what: the swap writer's USER_DATA ("by=USER@HOST;source=..."
-/// as gearcoupling swap-model sets it), else its participant's GUID; the writer's GUID; and the
+/// Who swapped a model and from what: the swap writer's USER_DATA ("by=NAME;source=..." as
+/// gearcoupling swap-model and the dashboard set it, NAME the person: live/swap_operator.h), else
+/// its participant's GUID; the writer's GUID; and the
 /// operator identity of its partitions (operator_identity_of), which DDS Security authenticates.
 struct SwapOrigin {
   std::string by, source, writer, operator_identity;

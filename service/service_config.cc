@@ -1,7 +1,12 @@
 #include "service/service_config.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -9,6 +14,7 @@
 #include <google/protobuf/text_format.h>
 #include <spdlog/common.h>
 
+#include "codec/nearest_name.h"
 #include "core/model_error.h"
 #include "protocol/domain_id.h"
 #include "service/service_config.pb.h"
@@ -21,9 +27,25 @@ class FileErrors : public google::protobuf::io::ErrorCollector {
   explicit FileErrors(std::string path) : path_(std::move(path)) {}
   void AddError(int line, int column, const std::string& message) override {
     if (first_.empty()) {
+      const std::string guess = suggestion(message);
+      std::string said = message;
+      if (!guess.empty() && !said.empty() && said.back() == '.') said.pop_back();
       first_ = path_ + ":" + std::to_string(line + 1) + ":" + std::to_string(column + 1) + ": " +
-               message;
+               said + guess;
     }
+  }
+
+  /// "; did you mean 'threads'?" for a misspelt setting (protobuf: no field named "x").
+  static std::string suggestion(const std::string& message) {
+    static constexpr std::string_view kMarker = "no field named \"";
+    const std::size_t at = message.find(kMarker);
+    if (at == std::string::npos) return "";
+    const std::size_t begin = at + kMarker.size();
+    const std::string typed = message.substr(begin, message.find('"', begin) - begin);
+    std::vector<std::string> names;
+    const auto* type = gearcoupling::v1::ServiceConfig::descriptor();
+    for (int i = 0; i < type->field_count(); ++i) names.push_back(type->field(i)->name());
+    return codec::did_you_mean(typed, names);
   }
   const std::string& first() const { return first_; }
 
@@ -32,18 +54,38 @@ class FileErrors : public google::protobuf::io::ErrorCollector {
   std::string first_;
 };
 
+/// Why a file that does not parse might not: it is written as TOML, as the monitor's and the
+/// dashboard's are (a `name = value` line), "" otherwise.
+std::string toml_hint(const std::string& text) {
+  static const std::regex toml_line(R"(^\s*[A-Za-z_][A-Za-z0-9_-]*\s*=)");
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (std::regex_search(line, toml_line)) {
+      return " (this file is protobuf text format, `name: value`, with the fields of "
+             "service/service_config.proto; monitor.conf and dashboard.conf are TOML, `name = "
+             "value`: docs/deploy.md, \"Configuration files\")";
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 void apply_config_file(const std::string& path, ServiceConfig& config) {
+  errno = 0;
   std::ifstream in(path);
-  if (!in) throw InvalidInput("--config", "cannot read \"" + path + "\"");
+  if (!in) {
+    throw InvalidInput("--config", "cannot read \"" + path + "\": " + std::strerror(errno));
+  }
   std::stringstream text;
   text << in.rdbuf();
   gearcoupling::v1::ServiceConfig file;
   google::protobuf::TextFormat::Parser parser;
   FileErrors errors(path);
   parser.RecordErrorsTo(&errors);
-  if (!parser.ParseFromString(text.str(), &file)) throw InvalidInput("--config", errors.first());
+  if (!parser.ParseFromString(text.str(), &file)) {
+    throw InvalidInput("--config", errors.first() + toml_hint(text.str()));
+  }
   if (file.has_domain()) config.domain = file.domain();
   if (file.has_threads()) config.threads = file.threads();
   if (file.has_catalogue_dir()) config.catalogue_dir = file.catalogue_dir();

@@ -11,10 +11,21 @@ bool takes_path(const FlagSpec& spec) {
          spec.value_name.find("DIR") != std::string::npos;
 }
 
-// The case arm of one subcommand: its flags, and those taking a path (space-delimited).
+// A flag whose value may be a bundled name (--coupling NAME|FILE, --model FILE|NAME): the kind
+// of `gearcoupling --complete-names KIND` that lists them, "" for any other flag.
+std::string names_kind(const FlagSpec& spec) {
+  if (spec.value_name.find("NAME") == std::string::npos) return "";
+  if (spec.name == "coupling") return "couplings";
+  if (spec.name == "model") return "models";
+  return "";
+}
+
+// The case arm of one subcommand: its flags, those taking a path, and those taking a bundled
+// name as FLAG:KIND (space-delimited).
 std::string case_arm(const Subcommand& subcommand) {
   std::string flags;
   std::string paths = " ";
+  std::string name_flags = " ";
   for (const FlagSpec& spec : subcommand.flags()) {
     if (!spec.refused.empty()) continue;
     std::vector<std::string> names = {"--" + spec.name};  // not the aliases: older spellings
@@ -22,10 +33,11 @@ std::string case_arm(const Subcommand& subcommand) {
     for (const std::string& name : names) {
       flags += name + " ";
       if (takes_path(spec)) paths += name + " ";
+      if (!names_kind(spec).empty()) name_flags += name + ":" + names_kind(spec) + " ";
     }
   }
-  return fmt::format("    {}) flags=\"{}--help\"; paths=\"{}\" ;;\n", subcommand.name, flags,
-                     paths);
+  return fmt::format("    {}) flags=\"{}--help\"; paths=\"{}\"; names=\"{}\" ;;\n", subcommand.name,
+                     flags, paths, name_flags);
 }
 
 }  // namespace
@@ -37,7 +49,7 @@ std::string bash_completion(std::span<const Subcommand* const> subcommands) {
     names += std::string(subcommand->name) + " ";
     arms += case_arm(*subcommand);
   }
-  return fmt::format(R"(# bash completion for gearcoupling; written by `gearcoupling --bash-completion`
+  return fmt::format(R"bash(# bash completion for gearcoupling; written by `gearcoupling --bash-completion`
 # from the flag tables of its subcommands.
 _gearcoupling() {{
   local cur="${{COMP_WORDS[COMP_CWORD]}}" prev="${{COMP_WORDS[COMP_CWORD-1]}}"
@@ -45,9 +57,17 @@ _gearcoupling() {{
     COMPREPLY=($(compgen -W "{}--help --version --bash-completion" -- "$cur"))
     return
   fi
-  local flags="" paths=" "
+  local flags="" paths=" " names=" " kind
   case "${{COMP_WORDS[1]}}" in
 {}  esac
+  # A flag that takes a bundled coupling or model name: the names there are (the program lists
+  # them, $GEARCOUPLING_CATALOG and $GEARCOUPLING_MODELS honoured), and files.
+  if [[ "$names" == *" $prev:"* ]]; then
+    kind=${{names#* $prev:}}; kind=${{kind%% *}}
+    COMPREPLY=($(compgen -W "$("${{COMP_WORDS[0]}}" --complete-names "$kind" 2>/dev/null)" -- "$cur")
+               $(compgen -f -- "$cur"))
+    return 0
+  fi
   if [[ "$paths" == *" $prev "* ]]; then
     COMPREPLY=($(compgen -f -- "$cur"))
     return
@@ -55,7 +75,7 @@ _gearcoupling() {{
   COMPREPLY=($(compgen -W "$flags" -- "$cur"))
 }}
 complete -o filenames -F _gearcoupling gearcoupling
-)",
+)bash",
                      names, arms);
 }
 

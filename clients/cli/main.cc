@@ -13,7 +13,9 @@
 #include "analysis/input_names.h"
 #include "clients/cli/bash_completion.h"
 #include "clients/cli/make_calculator.h"
+#include "clients/cli/model_flags.h"
 #include "clients/cli/subcommand.h"
+#include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 
 namespace gc::cli {
@@ -95,10 +97,16 @@ struct CommandLine {
   CLI::App app{"Crowned-tooth gear coupling model (Guo et al.)", "gearcoupling"};
   std::vector<std::unique_ptr<Flags>> flags;  // parallel to subcommands()
   bool print_completion = false;
+  std::string complete_names;   // --complete-names KIND, for the bash completion
 
   CommandLine() {
     app.set_version_flag("--version", "gearcoupling " GC_VERSION);
     app.add_flag("--bash-completion", print_completion, "print the bash completion script");
+    // Hidden (no group): what the completion offers after --coupling and --model.
+    app.add_option("--complete-names", complete_names,
+                   "print the bundled coupling or model names, one a line")
+        ->check(CLI::IsMember({"couplings", "models"}))
+        ->group("");
     app.formatter_fn([](const CLI::App*, std::string, CLI::AppFormatMode) { return overview(); });
     for (const Subcommand* subcommand : subcommands()) {
       Flags* parsed = flags.emplace_back(std::make_unique<Flags>(subcommand->flags())).get();
@@ -145,6 +153,21 @@ int main(int argc, char** argv) {
   }
   if (command_line.print_completion) {
     fmt::print("{}", bash_completion(subcommands()));
+    return 0;
+  }
+  if (!command_line.complete_names.empty()) {
+    try {
+      if (command_line.complete_names == "models") {
+        for (const std::string& name : bundled_model_names()) fmt::print("{}\n", name);
+      } else {
+        for (const auto& [name, geometry] : codec::load_coupling_catalog(codec::default_catalog_dir())) {
+          fmt::print("{}\n", name);
+        }
+      }
+    } catch (const std::exception& error) {   // a catalogue that does not load: no names
+      fmt::print(stderr, "gearcoupling: {}\n", error.what());
+      return 1;
+    }
     return 0;
   }
   const int k = command_line.chosen();

@@ -5,6 +5,8 @@
 #include <system_error>
 #include <vector>
 
+#include "codec/nearest_name.h"
+
 namespace gc::cli {
 
 FlagSpec model_flag() {
@@ -15,16 +17,19 @@ FlagSpec model_flag() {
 
 std::filesystem::path default_models_dir() { return codec::default_models_dir(); }
 
-namespace {
-
-/// The bundled model names, sorted: what --model takes besides a file.
-std::string bundled_model_names() {
+std::vector<std::string> bundled_model_names() {
   std::vector<std::string> names;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(default_models_dir(), error)) {
     if (entry.path().extension() == ".textproto") names.push_back(entry.path().stem().string());
   }
   std::sort(names.begin(), names.end());
+  return names;
+}
+
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
   std::string text;
   for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
   return text.empty() ? "none found" : text;
@@ -39,8 +44,9 @@ std::filesystem::path model_flag_path(const Flags& flags) {
   const std::filesystem::path bundled = default_models_dir() / (model + ".textproto");
   // A misspelt name ("papr") gets the names there are, not a missing file's path (issue 39).
   if (!std::filesystem::exists(bundled)) {
-    throw UsageError("--model '" + model + "': no such bundled model (" + bundled_model_names() +
-                     ") nor a .textproto file");
+    const std::vector<std::string> names = bundled_model_names();
+    throw UsageError("--model '" + model + "': no such bundled model (" + joined(names) +
+                     ") nor a .textproto file" + codec::did_you_mean(model, names));
   }
   return bundled;
 }

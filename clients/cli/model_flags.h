@@ -2,6 +2,10 @@
 // data/models/ ("paper" is data/models/paper.textproto).
 #pragma once
 
+#include <filesystem>
+#include <string>
+#include <vector>
+
 #include "clients/cli/command_line.h"
 #include "codec/model_file.h"
 
@@ -20,5 +24,9 @@ std::filesystem::path model_flag_path(const Flags& flags);
 
 /// $GEARCOUPLING_MODELS when set and not empty, else the bundled data/models.
 std::filesystem::path default_models_dir();
+
+/// The names --model takes besides a file: the stems of default_models_dir()'s *.textproto,
+/// sorted.
+std::vector<std::string> bundled_model_names();
 
 }  // namespace gc::cli

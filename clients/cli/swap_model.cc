@@ -2,8 +2,6 @@
 // model file checked here as --model is, or a monitor's proposal (--proposal), then checked by the
 // monitor; waits for the monitor's health to show it.
 #include <fmt/format.h>
-#include <unistd.h>
-
 #include <fstream>
 #include <sstream>
 
@@ -15,6 +13,7 @@
 #include "live/live_topics.h"
 #include "live/live_names.h"
 #include "live/model_swap_publisher.h"
+#include "live/swap_operator.h"
 
 namespace gc::cli {
 namespace {
@@ -26,6 +25,10 @@ std::vector<FlagSpec> swap_model_flags() {
        "model configuration: a .textproto file, or a name in data/models ($GEARCOUPLING_MODELS); "
        "or give --proposal", ""},
       {"proposal", "ID", "put the monitor's proposal ID in force (gearcoupling proposals lists them)",
+       ""},
+      {"operator", "NAME",
+       "the person putting the model in force, for the monitor's audit trail; required unless "
+       "the DDS Security identity is an operator's (GC_IDENTITY=operator-NAME), which names them",
        ""},
       {"decimate", "N", "also publish one residual per N evaluated samples (0: keep)", "0"},
       {"wait-s", "s", "seconds to wait for the monitor's health to show the model in force", "10",
@@ -40,14 +43,6 @@ std::string read_text(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-/// "USER@HOST" of this process, for the monitor's audit trail.
-std::string operator_name() {
-  const char* user = std::getenv("USER");
-  char host[256] = {};
-  gethostname(host, sizeof host - 1);
-  return std::string(user != nullptr && *user != '\0' ? user : "uid" + std::to_string(getuid())) + "@" + host;
 }
 
 /// What to put in force: the model's name and file text, and where it came from.
@@ -92,13 +87,15 @@ int run_swap_model(const Flags& flags, const Calculator&, std::FILE* out) {
     throw UsageError("give --model FILE|NAME or --proposal ID (one of them)");
   }
   const std::string& test_cell = flags.text("test-cell");
+  // Before any DDS work: who swaps is the first thing the audit trail needs.
+  const std::string by = live::swap_operator(flags.text("operator"), live::operator_of_identity());
   const auto wait = std::chrono::milliseconds(static_cast<long>(flags.number("wait-s") * 1e3));
   const protocol::Entity participant = live::make_participant(domain_from(flags));
   const SwapText swap = by_proposal ? proposal_text(participant.get(), test_cell,
                                                     flags.text("proposal"), wait)
                                     : file_text(flags);
   live::ModelSwapPublisher swaps(participant.get(), {test_cell},
-                                 "by=" + operator_name() + ";source=" + swap.source,
+                                 live::swap_user_data(by, swap.source),
                                  live::operator_of_identity());
   status::CellBoardOptions board;
   board.read_residuals = false;  // an operator identity may read the health alone

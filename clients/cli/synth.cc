@@ -1,6 +1,8 @@
 // gearcoupling synth: a synthetic recording from a model configuration along one of the
 // paper's load sequences (core/synthesis/), with reproducible noise.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -92,9 +94,10 @@ int run_synth(const Flags& flags, const Calculator&, std::FILE* out) {
     return 0;
   }
   std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (file == nullptr) throw std::runtime_error("cannot write --out " + path);
+  // The OS's reason: no such directory, permission denied, disk full (issue 39).
+  if (file == nullptr) throw std::runtime_error("cannot write --out " + path + ": " + std::strerror(errno));
   write_recording(recording, file);
-  if (std::fclose(file) != 0) throw std::runtime_error("cannot write --out " + path);
+  if (std::fclose(file) != 0) throw std::runtime_error("cannot write --out " + path + ": " + std::strerror(errno));
   return 0;
 }
 

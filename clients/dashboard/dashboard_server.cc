@@ -57,7 +57,7 @@ DashboardServer::DashboardServer(DashboardOptions options)
       instances_(participant_.get()),
       cells_(participant_.get(), cell_board_options(options_)),
       learning_(participant_.get(), options_.max_cells),
-      applier_(participant_.get(), learning_, options_.operator_cells),
+      applier_(participant_.get(), learning_, options_.operator_cells, options_.operator_name),
       query_(query_client_options(options_)),
       hub_(options_.queue_capacity, options_.max_streams, options_.queue_bytes),
       hosts_(options_.listen_host, options_.allow_hosts),

@@ -57,6 +57,10 @@ struct DashboardOptions {
   /// "apply"); empty: read-only. Under DDS Security its identity must be an operator granted
   /// them (clients/dashboard/proposal_apply.h).
   std::vector<std::string> operator_cells;
+  /// The person applying proposals, as the monitor's audit trail names them (`--operator`;
+  /// live::swap_operator): required with operator_cells unless the DDS Security identity is an
+  /// operator's, whose name then stands instead.
+  std::string operator_name;
   /// Host names (besides localhost, the listen address and IP addresses) that requests may
   /// name in Host and Origin; any other is refused 403 (DNS rebinding: host_allow_list.h).
   std::vector<std::string> allow_hosts;

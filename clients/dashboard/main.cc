@@ -9,6 +9,9 @@
 
 #include "calculators/client_id_prefix.h"
 #include "clients/dashboard/dashboard_server.h"
+#include "core/model_error.h"
+#include "live/live_names.h"
+#include "live/swap_operator.h"
 #include "parallel/shutdown_signals.h"
 #include "protocol/dds_config.h"
 #include "protocol/domain_id.h"
@@ -90,6 +93,10 @@ int main(int argc, char** argv) {
                  "apply button); under DDS Security its identity must be an operator granted them. "
                  "Default: none, read-only")
       ->delimiter(',');
+  app.add_option("--operator", options.operator_name,
+                 "with --operator-cells: the person applying proposals, as the monitor's audit "
+                 "trail names them; required unless the DDS Security identity is an operator's "
+                 "(GC_IDENTITY=operator-NAME), which names them");
   app.add_option("--allow-host", options.allow_hosts,
                  "host names the dashboard answers to in Host and Origin, besides localhost, the "
                  "--listen address and IP addresses (the names users type, e.g. "
@@ -106,10 +113,17 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     parse_listen(listen, options);
     options.client_id_prefix = gc::calculators::parse_client_id_prefix(client_id_prefix);
+    if (!options.operator_cells.empty()) {
+      options.operator_name = gc::live::swap_operator(options.operator_name,
+                                                      gc::live::operator_of_identity());
+    }
   } catch (const CLI::ParseError& error) {
     // --help exits 0; bad flags exit 2, as the other programs' bad input does.
     return app.exit(error) == 0 ? 0 : kBadInput;
   } catch (const std::invalid_argument& error) {
+    std::fprintf(stderr, "gearcoupling-dashboard: %s\n", error.what());
+    return kBadInput;
+  } catch (const gc::InvalidInput& error) {
     std::fprintf(stderr, "gearcoupling-dashboard: %s\n", error.what());
     return kBadInput;
   }

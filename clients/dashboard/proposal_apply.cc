@@ -11,6 +11,7 @@
 
 #include "codec/result_json.h"
 #include "live/live_names.h"
+#include "live/swap_operator.h"
 #include "protocol/dds_error.h"
 
 namespace gc::dashboard {
@@ -27,7 +28,8 @@ JsonAnswer error(int status, const std::string& message) {
   return {status, "{\"error\": " + quoted(message) + "}"};
 }
 
-std::string dashboard_name() {
+/// "dashboard@HOST": where a swap came from (the audit trail's `source`; `by` names the person).
+std::string dashboard_source() {
   char host[256] = {};
   gethostname(host, sizeof host - 1);
   return std::string("dashboard@") + host;
@@ -36,13 +38,15 @@ std::string dashboard_name() {
 }  // namespace
 
 ProposalApplier::ProposalApplier(dds_entity_t participant, status::MonitorBoard& proposals,
-                                 std::vector<std::string> operator_cells)
+                                 std::vector<std::string> operator_cells,
+                                 const std::string& operator_name)
     : proposals_(proposals), cells_(std::move(operator_cells)) {
   if (cells_.empty()) return;
+  by_ = live::swap_operator(operator_name, live::operator_of_identity());
   try {
-    swaps_ = std::make_unique<live::ModelSwapPublisher>(participant, cells_,
-                                                        "by=" + dashboard_name() + ";source=dashboard",
-                                                        live::operator_of_identity());
+    swaps_ = std::make_unique<live::ModelSwapPublisher>(
+        participant, cells_, live::swap_user_data(by_, dashboard_source()),
+        live::operator_of_identity());
   } catch (const protocol::DdsError& error) {
     throw std::runtime_error(fmt::format(
         "--operator-cells {}: this dashboard's DDS identity may not publish model swaps for these "
@@ -75,8 +79,8 @@ JsonAnswer ProposalApplier::apply(const std::map<std::string, std::string>& para
     return error(409, fmt::format("proposal: {} is {}: {}", id->second, found->state(), found->state_reason()));
   }
   swaps_->publish(cell->second, found->model_text());
-  spdlog::info("test cell {}: proposal {} applied from the dashboard (model {})", cell->second,
-               id->second, found->model_name());
+  spdlog::info("test cell {}: proposal {} applied from the dashboard by {} (model {})",
+               cell->second, id->second, by_, found->model_name());
   return {200, fmt::format("{{\"applied\": {}, \"model\": {}}}", quoted(id->second),
                            quoted(found->model_name()))};
 }

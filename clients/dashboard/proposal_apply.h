@@ -22,9 +22,11 @@ class ProposalApplier {
  public:
   /// `operator_cells` empty: read-only. Otherwise one model writer per cell on `participant`
   /// (throws std::runtime_error naming --operator-cells and why when the identity may not, e.g.
-  /// a dashboard-* identity).
+  /// a dashboard-* identity), whose swaps the audit trail says are by `operator_name` (the
+  /// person, --operator), or by the operator identity operator-NAME when it is empty
+  /// (live::swap_operator; throws InvalidInput naming "--operator" when neither names anyone).
   ProposalApplier(dds_entity_t participant, status::MonitorBoard& proposals,
-                  std::vector<std::string> operator_cells);
+                  std::vector<std::string> operator_cells, const std::string& operator_name = "");
 
   /// Parameters test_cell and proposal (16 hex digits). 200 {"applied": ID, "model": NAME};
   /// 403 when this dashboard may not apply (read-only, or not that test cell); 400 naming a
@@ -36,6 +38,7 @@ class ProposalApplier {
  private:
   status::MonitorBoard& proposals_;
   std::vector<std::string> cells_;
+  std::string by_;   ///< who applies, for the log (the audit trail has it from USER_DATA)
   std::unique_ptr<live::ModelSwapPublisher> swaps_;
 };
 

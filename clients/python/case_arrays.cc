@@ -43,6 +43,11 @@ CaseInputs::CaseInputs(const std::vector<const char*>& names, const std::vector<
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   std::vector<Array> given;
   for (std::size_t k = 0; k < values.size(); ++k) {
+    // A pandas Series (not an Index, which has no .index): its index, the first one given.
+    if (index_.is_none() && py::hasattr(values[k], "index") && py::hasattr(values[k], "to_numpy") &&
+        !py::isinstance<py::array>(values[k])) {
+      index_ = values[k].attr("index");
+    }
     Array array = Array::ensure(values[k]);
     if (!array) {
       PyErr_Clear();
@@ -69,6 +74,7 @@ CaseInputs::CaseInputs(const std::vector<const char*>& names, const std::vector<
   }
   size_ = 1;
   for (py::ssize_t n : shape_) size_ *= static_cast<std::size_t>(n);
+  if (!index_.is_none() && !(shape_.size() == 1 && py::len(index_) == size_)) index_ = py::none();
   // Each input at the full shape, C-contiguous: a view where it already is, else a copy.
   const py::object broadcast_to = py::module_::import("numpy").attr("broadcast_to");
   for (Array& array : given) {
@@ -222,7 +228,8 @@ CaseTableObject CaseArrays<Result>::finish() {
     out["ok"] = ok;
     out["error"] = py::array(messages).attr("reshape")(shape_tuple(inputs_.shape()));
   }
-  return py::module_::import("gearcoupling._results").attr("CaseTable")(out, inputs_.arrays());
+  return py::module_::import("gearcoupling._results").attr("CaseTable")(out, inputs_.arrays(),
+                                                                       inputs_.index());
 }
 
 template class CaseArrays<ToothContact>;

@@ -36,6 +36,10 @@ class CaseInputs {
   double operator()(std::size_t k, std::size_t i) const { return data_[k][i]; }
   /// Every input broadcast to shape(), by name: the CaseTable's inputs. Needs the GIL.
   pybind11::dict arrays() const;
+  /// The index of the first input that is a pandas Series, when the cases are one axis of its
+  /// length (the Series against numbers or arrays of its length); else None. CaseTable.to_frame()
+  /// keeps it, so the rows line up with the user's own frame.
+  const pybind11::object& index() const { return index_; }
 
  private:
   std::vector<const char*> names_;
@@ -43,6 +47,7 @@ class CaseInputs {
   std::vector<const double*> data_;
   std::vector<pybind11::ssize_t> shape_;
   std::size_t size_ = 1;
+  pybind11::object index_ = pybind11::none();
 };
 
 /// One output column: its name and how it is read from a case's result.

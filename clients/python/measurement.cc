@@ -35,18 +35,18 @@ unsigned threads_argument(unsigned threads) {
 ValidationResultObject validate(const RecordingArgument& recording_argument,
                                 const ModelArgument& model_argument_, const std::string& add,
                     double reference_torque_nm, unsigned threads,
-                    const std::optional<std::string>& columns,
+                    const ColumnsArgument& columns, const NegateArgument& negate,
                     const std::optional<std::filesystem::path>& html, bool force_scale) {
-  const Recording recording = recording_source(recording_argument, columns);
+  const Recording recording = recording_source(recording_argument, columns, negate);
   const Model model = model_argument(model_argument_);
   std::unique_ptr<analysis::ModelValidation> validation;
   {
     py::gil_scoped_release release;
     validation = analysis::validate_model(
         recording.path, *model.file, add, reference_torque_nm,
-        {static_cast<int>(threads_argument(threads)), 1u << 15, recording.renames});
-    if (recording.scratch) validation->result.set_recording(recording.source);  // not the scratch file
-    analysis::require_compared_samples(validation->result);
+        {static_cast<int>(threads_argument(threads)), 1u << 15, recording.renames,
+         recording.negated, recording.source_name()});
+    analysis::require_compared_samples(validation->result, analysis::UnitFix::python);
     // The CLI's unit check, worded by the same function: refused, not a warning in .warnings.
     if (!force_scale) {
       const analysis::ModelRun& run = validation->runs.front();
@@ -62,7 +62,8 @@ ValidationResultObject validate(const RecordingArgument& recording_argument,
   py::list models;
   models.append(py::cast(model));
   if (!add.empty()) models.append(py::cast(with_effect(model, add)));
-  out.attr("_sample_sources") = py::make_tuple(recording_argument, columns, models);
+  // The recording as read here (renames, negate, the DataFrame's scratch copy kept alive).
+  out.attr("_sample_sources") = py::make_tuple(py::cast(recording), py::none(), models);
   return out;
 }
 
@@ -77,8 +78,9 @@ std::string model_source(const ModelArgument& argument, const codec::ModelFile& 
 DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
                                const ModelArgument& model_argument_,
                     const std::optional<std::filesystem::path>& write_model, unsigned threads,
-                    const std::optional<std::string>& columns, bool force_scale) {
-  const Recording recording = read_recording(recording_argument, columns);
+                    const ColumnsArgument& columns, const NegateArgument& negate,
+                    bool force_scale) {
+  const Recording recording = read_recording(recording_argument, columns, negate);
   const Model model = model_argument(model_argument_);
   const codec::ModelFile& file = *model.file;
   const analysis::Recording& data = *recording.data;
@@ -90,7 +92,8 @@ DiagnosisResultObject diagnose(const RecordingArgument& recording_argument,
     py::gil_scoped_release release;
     const analysis::RecordingCheck check = analysis::check_recording(file.model, file.name, data.samples);
     analysis::require_compared_samples(recording.source, file.name, check.compared, data.rows_read,
-                                       data.excluded_rows, data.samples.size(), check.first_refusal);
+                                       data.excluded_rows, data.samples.size(), check.first_refusal,
+                                       analysis::UnitFix::python);
     if (!force_scale) analysis::refuse_unit_slip(recording.source, check.refusal, analysis::UnitFix::python);
     diagnosis.emplace(gc::diagnose(file.model, data.samples, thread_parallel_for(threads_argument(threads))));
     result = analysis::diagnosis_result(*diagnosis, recording.source, file.name, check, data);
@@ -120,22 +123,24 @@ void bind_measurement(py::module_& m) {
         "share/gearcoupling/<kind>, or the source tree's data/<kind> for a build-tree module.");
   m.def("validate", &validate, py::arg("recording"), py::arg("model"), py::kw_only(),
         py::arg("add") = "", py::arg("reference_torque_nm") = 1.5e6, py::arg("threads") = 0u,
-        py::arg("columns") = py::none(), py::arg("html") = py::none(), py::arg("force_scale") = false,
+        py::arg("columns") = py::none(), py::arg("negate") = py::none(), py::arg("html") = py::none(),
+        py::arg("force_scale") = false,
         "gearcoupling validate: the recording (a file, a DataFrame or a Recording) against the model "
         "(a Model, a name, a file or a dict); with add, also the model with that effect. Returns a "
         "ValidationResult (.to_dict() is validate --json; .samples(model=0) the per-sample "
         "predictions and residuals as a DataFrame, model 1 the one with the effect added). html: "
         "also write the HTML report there. A moment channel 1000 times the model's (kN·m under an _nm "
         "header) raises ValueError naming the unit error, as validate exits 2; force_scale=True runs "
-        "anyway.");
+        "anyway. columns and negate as read_recording takes them (validate --columns, --negate).");
   m.def("diagnose", &diagnose, py::arg("recording"), py::arg("model"), py::kw_only(),
         py::arg("write_model") = py::none(), py::arg("threads") = 0u, py::arg("columns") = py::none(),
-        py::arg("force_scale") = false,
+        py::arg("negate") = py::none(), py::arg("force_scale") = false,
         "gearcoupling diagnose: which effects the model lacks. Returns a DiagnosisResult "
         "(.to_dict() is diagnose --json) whose .model is the model with the effects found and "
         ".samples(model=0) the per-sample predictions and residuals as a DataFrame (model 0 the "
         "model given, 1 the model found); write_model: also write that model file there. A unit slip "
-        "raises ValueError as in validate; force_scale=True runs anyway.");
+        "raises ValueError as in validate; force_scale=True runs anyway. columns and negate as "
+        "read_recording takes them (diagnose --columns, --negate).");
 }
 
 }  // namespace gc::python

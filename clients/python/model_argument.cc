@@ -81,18 +81,18 @@ void bind_models(py::module_& m) {
            "SI parameters, e.g. 'hysteresis=lag_rad=6e-4', as validate --add takes it.")
       .def("predict",
            [](const Model& model, const RecordingArgument& recording,
-              const std::optional<std::string>& columns, unsigned threads) {
-             return predict_recording(model, read_recording(recording, columns), threads);
+              const ColumnsArgument& columns, const NegateArgument& negate, unsigned threads) {
+             return predict_recording(model, read_recording(recording, columns, negate), threads);
            },
            py::arg("recording"), py::kw_only(), py::arg("columns") = py::none(),
-           py::arg("threads") = 0u,
+           py::arg("negate") = py::none(), py::arg("threads") = 0u,
            "The model's prediction of every sample of the recording (a file, a DataFrame or a "
            "Recording), as validate makes it (CouplingModel::predict_at: input timing such as "
            "moment_delay included). Returns a CaseTable (.to_frame() for pandas): time_s, "
            "torque_nm, misalignment_rad, direction_rad, msy_measured_nm, msz_measured_nm, "
            "msy_predicted_nm, msz_predicted_nm, msy_residual_nm, msz_residual_nm (predicted - "
            "measured, validate's sign), ok, error (NaN predictions where the model refuses a "
-           "sample). columns: renames as validate --columns takes them.")
+           "sample). columns, negate: as read_recording takes them.")
       .def("to_text", [](const Model& model) { return model_text(*model.file); },
            "The model as a model file (text format) that reads back to the same model.")
       .def("write",

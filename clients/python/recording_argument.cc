@@ -9,8 +9,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "analysis/format_error.h"
 #include "clients/python/bindings.h"
 #include "clients/python/typed_objects.h"
+#include "core/model_error.h"
 
 namespace py = pybind11;
 
@@ -23,8 +25,68 @@ ScratchFile::~ScratchFile() {
 
 namespace {
 
-std::vector<analysis::ColumnRename> renames_argument(const std::optional<std::string>& columns) {
-  return columns ? analysis::parse_column_renames(*columns) : std::vector<analysis::ColumnRename>{};
+/// "a, b": the Python repr of each of `items`, for messages.
+std::string reprs(py::handle items) {
+  std::string text;
+  for (py::handle item : items) text += (text.empty() ? "" : ", ") + py::repr(item).cast<std::string>();
+  return text;
+}
+
+/// `text` as one CSV field: quoted, its quotes doubled, so a header may hold ','.
+std::string csv_field(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::vector<analysis::ColumnRename> renames_argument(py::handle columns) {
+  if (columns.is_none()) return {};
+  if (py::isinstance<py::str>(columns)) return analysis::parse_column_renames(columns.cast<std::string>());
+  if (!py::isinstance<py::dict>(columns)) {
+    throw InvalidInput("columns", "must be 'name=header,...' or a dict {name: header}, not " +
+                                      py::repr(py::type::of(columns)).cast<std::string>());
+  }
+  // {name: header}, our column name to the user's header: checked one by one, as --columns
+  // checks each item, so the error names the key the user wrote.
+  std::vector<analysis::ColumnRename> renames;
+  for (auto [name, header] : columns.cast<py::dict>()) {
+    if (!py::isinstance<py::str>(name) || !py::isinstance<py::str>(header)) {
+      throw InvalidInput("columns", "{" + reprs(py::make_tuple(name)) + ": " +
+                                        reprs(py::make_tuple(header)) +
+                                        "}: keys and values must be strings (name: header)");
+    }
+    try {
+      const auto one = analysis::parse_column_renames(
+          csv_field(name.cast<std::string>() + "=" + header.cast<std::string>()));
+      renames.insert(renames.end(), one.begin(), one.end());
+    } catch (const analysis::FormatError& error) {
+      // "--columns 'x=y': 'x=y' is not name=header with a name of ... (one of: ...)" in the
+      // dict's terms: the key is what is wrong.
+      const std::string said = error.what();
+      const std::size_t names = said.find("(one of:");
+      throw InvalidInput("columns", "key " + reprs(py::make_tuple(name)) +
+                                        " is not a column name of docs/recordings.md " +
+                                        (names == std::string::npos ? std::string() : said.substr(names)));
+    }
+  }
+  return renames;
+}
+
+std::vector<analysis::Quantity> negated_argument(py::handle negate) {
+  if (negate.is_none()) return {};
+  if (py::isinstance<py::str>(negate)) return analysis::parse_negated_quantities(negate.cast<std::string>());
+  if (!py::isinstance<py::list>(negate) && !py::isinstance<py::tuple>(negate)) {
+    throw InvalidInput("negate", "must be 'torque,msy' or a list ['torque', 'msy'], not " +
+                                     py::repr(py::type::of(negate)).cast<std::string>());
+  }
+  std::string text;
+  for (py::handle item : negate) {
+    if (!py::isinstance<py::str>(item)) {
+      throw InvalidInput("negate", "[" + reprs(negate) + "]: every item must be a quantity's name");
+    }
+    text += (text.empty() ? "" : ",") + csv_field(item.cast<std::string>());
+  }
+  return analysis::parse_negated_quantities(text);
 }
 
 // A DataFrame with the recording's columns as CSV: pandas prints floats so they read back
@@ -80,10 +142,12 @@ py::list recording_problems(const Recording& recording) {
 
 }  // namespace
 
-Recording recording_source(py::handle argument, const std::optional<std::string>& columns) {
+Recording recording_source(py::handle argument, const ColumnsArgument& columns,
+                           const NegateArgument& negate) {
   if (py::isinstance<Recording>(argument)) return argument.cast<Recording>();
   Recording recording;
   recording.renames = renames_argument(columns);
+  recording.negated = negated_argument(negate);
   if (py::hasattr(argument, "to_csv") && py::hasattr(argument, "columns")) {
     recording.scratch = write_data_frame(argument);
     recording.path = recording.scratch->path;
@@ -95,12 +159,15 @@ Recording recording_source(py::handle argument, const std::optional<std::string>
   return recording;
 }
 
-Recording read_recording(py::handle argument, const std::optional<std::string>& columns) {
-  Recording recording = recording_source(argument, columns);
+Recording read_recording(py::handle argument, const ColumnsArgument& columns,
+                         const NegateArgument& negate) {
+  Recording recording = recording_source(argument, columns, negate);
   if (!recording.data) {
+    const analysis::RecordingOptions options{{}, recording.renames, recording.negated,
+                                             recording.source_name()};
     py::gil_scoped_release release;
     recording.data = std::make_shared<const analysis::Recording>(
-        analysis::read_recording(recording.path, analysis::RecordingOptions{{}, recording.renames}));
+        analysis::read_recording(recording.path, options));
   }
   return recording;
 }
@@ -122,14 +189,16 @@ void bind_recordings(py::module_& m) {
       .def("__len__", [](const Recording& r) { return r.data->samples.size(); });
 
   m.def("read_recording",
-        [](const RecordingArgument& source, const std::optional<std::string>& columns) {
-          return read_recording(source, columns);
-        },
+        [](const RecordingArgument& source, const ColumnsArgument& columns,
+           const NegateArgument& negate) { return read_recording(source, columns, negate); },
         py::arg("source"), py::kw_only(),
-        py::arg("columns") = py::none(),
+        py::arg("columns") = py::none(), py::arg("negate") = py::none(),
         "Reads a recording: a CSV file (docs/recordings.md) or a pandas DataFrame with its columns "
         "(<quantity>_<unit>, e.g. torque_nm, misalignment_deg, msy_knm). columns: renames as "
-        "validate --columns takes them ('msy_knm=Ch3_kNm,...').");
+        "validate --columns takes them ('msy_knm=Ch3_kNm,...') or a dict {'msy_knm': 'Ch3_kNm'}. "
+        "negate: quantities read with their sign flipped, as validate --negate ('torque' or "
+        "['torque', 'msy']). Errors in a DataFrame name it '<DataFrame>' (line 1 its header, "
+        "line N its row N - 2 by position).");
 }
 
 }  // namespace gc::python

@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 
 #include "analysis/recording_csv.h"
+#include "clients/python/typed_objects.h"
 
 namespace gc::python {
 
@@ -27,13 +28,22 @@ struct Recording {
   std::shared_ptr<ScratchFile> scratch;
   std::shared_ptr<const analysis::Recording> data;
   std::vector<analysis::ColumnRename> renames;
+  std::vector<analysis::Quantity> negated;   ///< read with the sign flipped (--negate)
+
+  /// What errors and results call it: "" for the file's own name, "<DataFrame>" for a scratch
+  /// copy of a DataFrame (the user never named that file).
+  std::string source_name() const { return scratch ? source : std::string(); }
 };
 
 /// A Recording as is; a path; or a DataFrame, written as CSV to a scratch file (pandas prints
-/// floats so that they read back exactly). `columns`: renames as --columns takes them.
-Recording recording_source(pybind11::handle argument, const std::optional<std::string>& columns);
+/// floats so that they read back exactly). `columns`: renames as --columns takes them, or a dict
+/// {name: header} (e.g. {"msy_knm": "Ch3 [kNm]"}); `negate`: quantities read with their sign
+/// flipped, as --negate takes them, or a list. Throws InvalidInput naming "columns" or "negate".
+Recording recording_source(pybind11::handle argument, const ColumnsArgument& columns,
+                           const NegateArgument& negate);
 
 /// recording_source, read whole (the GIL released while reading).
-Recording read_recording(pybind11::handle argument, const std::optional<std::string>& columns);
+Recording read_recording(pybind11::handle argument, const ColumnsArgument& columns,
+                         const NegateArgument& negate);
 
 }  // namespace gc::python

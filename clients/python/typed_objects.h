@@ -25,6 +25,8 @@ GC_PYTHON_TYPED_OBJECT(CouplingArgument);   ///< a Coupling, catalogue name, cou
 GC_PYTHON_TYPED_OBJECT(ModelArgument);      ///< a Model, bundled name, model file or dict
 GC_PYTHON_TYPED_OBJECT(RecordingArgument);  ///< a Recording, recording file or DataFrame
 GC_PYTHON_TYPED_OBJECT(ArrayArgument);      ///< a numpy array (any shape) or a number
+GC_PYTHON_TYPED_OBJECT(ColumnsArgument);    ///< renames: "name=header,..." or {name: header}
+GC_PYTHON_TYPED_OBJECT(NegateArgument);     ///< quantities: "torque,msy" or ["torque", "msy"]
 
 // Results (gearcoupling/_results.py).
 GC_PYTHON_TYPED_OBJECT(ToothContactResultObject);
@@ -52,6 +54,8 @@ GC_PYTHON_TYPE_NAME(CouplingArgument, "gearcoupling.Coupling | str | os.PathLike
 GC_PYTHON_TYPE_NAME(ModelArgument, "gearcoupling.Model | str | os.PathLike | dict");
 GC_PYTHON_TYPE_NAME(RecordingArgument, "gearcoupling.Recording | str | os.PathLike | pandas.DataFrame");
 GC_PYTHON_TYPE_NAME(ArrayArgument, "numpy.ndarray | float");
+GC_PYTHON_TYPE_NAME(ColumnsArgument, "str | dict[str, str] | None");
+GC_PYTHON_TYPE_NAME(NegateArgument, "str | list[str] | None");
 GC_PYTHON_TYPE_NAME(ToothContactResultObject, "gearcoupling.ToothContactResult");
 GC_PYTHON_TYPE_NAME(InducedMomentsResultObject, "gearcoupling.InducedMomentsResult");
 GC_PYTHON_TYPE_NAME(JamAngleResultObject, "gearcoupling.JamAngleResult");

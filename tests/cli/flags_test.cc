@@ -139,6 +139,19 @@ TEST(CliBashCompletion, CompletesSubcommandsAndTheirFlags) {
             std::string::npos);
 }
 
+// Issue 39: after --coupling and --model the bundled names, which the program lists when asked
+// (so $GEARCOUPLING_CATALOG and $GEARCOUPLING_MODELS count), besides files.
+TEST(CliBashCompletion, OffersTheBundledCouplingAndModelNames) {
+  const std::string program = GC_GEARCOUPLING_PATH;
+  EXPECT_EQ(complete(program + " jam-angle --coupling nrel_", 3), "nrel_downwind nrel_upwind ");
+  EXPECT_EQ(complete(program + " validate --model pap", 3), "paper paper_downwind ");
+  EXPECT_EQ(complete(program + " contact --coupling nrel_d", 3), "nrel_downwind ");
+  const ProcessResult models = run_gearcoupling({"--complete-names", "models"});
+  EXPECT_EQ(models.exit_code, 0);
+  EXPECT_EQ(models.out, "paper\npaper_downwind\n");
+  EXPECT_EQ(run_gearcoupling({"--complete-names", "effects"}).exit_code, 2);
+}
+
 TEST(CliBashCompletion, IsWhatTheProgramPrints) {
   const ProcessResult run = run_gearcoupling({"--bash-completion"});
   EXPECT_EQ(run.exit_code, 0);

@@ -102,6 +102,24 @@ TEST(CouplingFile, UnknownFieldIsNamedWithLineAndColumn) {
   EXPECT_NE(what.find("backlash_mm"), std::string::npos) << what;
 }
 
+// Issue 39: a typo gets the field it was meant for, nested fields too; a name far from every
+// field gets no guess.
+TEST(CouplingFile, MisspeltFieldSuggestsTheNearestFieldOfItsMessage) {
+  const auto what_of = [](const std::string& text) {
+    return std::string(error_of([&] { parse_coupling_text(text, "typo.textproto"); }).what());
+  };
+  const std::string upwind = bundled_text("nrel_upwind");
+  std::string module_typo = upwind;
+  module_typo.replace(module_typo.find("module_m:"), 9, "modul_m:");
+  EXPECT_NE(what_of(module_typo).find("no field named \"modul_m\"; did you mean 'module_m'?"),
+            std::string::npos) << what_of(module_typo);
+  std::string nested_typo = upwind;
+  nested_typo.replace(nested_typo.find("contact_stress_pa:"), 18, "contact_stres_pa:");
+  EXPECT_NE(what_of(nested_typo).find("did you mean 'contact_stress_pa'?"), std::string::npos)
+      << what_of(nested_typo);
+  EXPECT_EQ(what_of("  colour: 3\n" + upwind).find("did you mean"), std::string::npos);
+}
+
 TEST(CouplingFile, SyntaxErrorNamesLineAndColumn) {
   const std::string text = "name: \"x\"\nteeth 100\n";  // line 2 lacks its colon
   const InvalidInput error = error_of([&] { parse_coupling_text(text, "syntax.textproto"); });

@@ -188,7 +188,9 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
     WebDriverWait(driver, 10.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
         lambda d: loop["proposal"] in d.find_element(By.ID, "swaps").text)
     audit = driver.find_element(By.ID, "swaps").text
-    assert "paper_diagnosed" in audit and "dashboard@" in audit, audit
+    assert "paper_diagnosed" in audit, audit
+    # by: a person, here the operator identity's subject (issue 39), not the process "dashboard@HOST".
+    assert "dashboard@" not in audit and "operator-" + OPERATOR in audit, audit
     rows = [r for r in swap_rows(driver) if r.get("proposal") == loop["proposal"]]
     assert len(rows) == 1, swap_rows(driver)
     assert rows[0]["operatorIdentity"] == "operator-" + OPERATOR, rows
@@ -203,7 +205,8 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
 def test_a_swap_without_operator_identity_is_shown_plainly_as_such(loop):
     environment = {k: v for k, v in ENVIRONMENT.items() if k != "GC_IDENTITY"}
     subprocess.run([CLI, "swap-model", "--test-cell", TEST_CELL, "--model", "paper", "--wait-s", "10",
-                    "--domain", str(DOMAIN)], env=environment, check=True, stdout=subprocess.DEVNULL)
+                    "--operator", "Grace Hopper", "--domain", str(DOMAIN)], env=environment, check=True,
+                   stdout=subprocess.DEVNULL)
 
     def shown(d):
         rows = [r for r in swap_rows(d) if r.get("testCell") == TEST_CELL and not r.get("proposal")]
@@ -212,6 +215,7 @@ def test_a_swap_without_operator_identity_is_shown_plainly_as_such(loop):
     assert row["operatorIdentity"] == "", row
     assert row["identity_text"] == "none (no operator identity)", row
     assert "paper_diagnosed" in row["text"] and "file " in row["text"], row   # from the applied model, by file
+    assert "Grace Hopper" in row["text"], row   # by: the person --operator named
     # The operator's swap before it still names its identity, and its after-figures are final now.
     applied = [r for r in swap_rows(loop["driver"]) if r.get("proposal") == loop["proposal"]]
     assert applied and applied[0]["identity_text"] == "operator-" + OPERATOR, applied

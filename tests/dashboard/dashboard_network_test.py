@@ -34,7 +34,7 @@ ATTACK_S = 10.0   # each attack lasts this long: longer than two request deadlin
 @pytest.fixture
 def dashboard():
     child = subprocess.Popen([DASHBOARD, "--domain", str(DOMAIN), "--listen", "127.0.0.1:0",
-                              "--operator-cells", "c", "--allow-host", "dyno-hall.example"],
+                              "--operator-cells", "c", "--operator", "tester", "--allow-host", "dyno-hall.example"],
                              env=ENVIRONMENT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                              text=True)
     try:

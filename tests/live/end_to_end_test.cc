@@ -70,7 +70,7 @@ TEST_F(LiveTest, ReplayMonitorRecordDiagnoseSwapBringsTheErrorToTheNoise) {
 
   // 4. Swap the diagnosed model in.
   const auto swap = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--model", fixed, "--wait-s", "20"}));
+      {"swap-model", "--test-cell", cell, "--model", fixed, "--wait-s", "20", "--operator", "tester"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
   const auto swapped = health_.wait_for(
@@ -117,7 +117,7 @@ TEST_F(LiveTest, SwapModelRefusesABadModelWithTheReasonAndKeepsTheModelInForce) 
   const std::string bad = temp_path("bad") + ".textproto";
   cli::testing::write_file(bad, "name: \"bad\" coupling: \"nrel_upwind\" effects { name: \"friction\" "
                                 "parameters { name: \"mu0\" value: 7 } }\n");
-  const auto swap = run_gearcoupling(on_test_domain({"swap-model", "--test-cell", cell, "--model", bad}));
+  const auto swap = run_gearcoupling(on_test_domain({"swap-model", "--test-cell", cell, "--model", bad, "--operator", "tester"}));
   EXPECT_EQ(swap.exit_code, 2) << swap.out << swap.err;
   EXPECT_NE(swap.err.find("mu0"), std::string::npos) << swap.err;
   const auto health = health_.latest(cell);

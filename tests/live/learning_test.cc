@@ -73,13 +73,20 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find(proposal->proposal_id()), std::string::npos) << text.out;
 
-  // 2. A wrong id is refused, naming the flag; the right one is put in force.
+  // 2. Without a person to name (no --operator, no operator identity) the swap is refused,
+  // naming the flag; a wrong id is refused, naming the flag; the right one is put in force.
+  const auto anonymous = run_gearcoupling(on_test_domain(
+      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "5"}));
+  EXPECT_EQ(anonymous.exit_code, 2) << anonymous.out << anonymous.err;
+  EXPECT_NE(anonymous.err.find("--operator: required"), std::string::npos) << anonymous.err;
   const auto wrong = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--proposal", "0123456789abcdef", "--wait-s", "5"}));
+      {"swap-model", "--test-cell", cell, "--proposal", "0123456789abcdef", "--wait-s", "5",
+       "--operator", "Ada Lovelace"}));
   EXPECT_EQ(wrong.exit_code, 2) << wrong.out << wrong.err;
   EXPECT_NE(wrong.err.find("--proposal"), std::string::npos) << wrong.err;
   const auto swap = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "20"}));
+      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "20",
+       "--operator", "Ada Lovelace"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   EXPECT_NE(swap.out.find("model paper_diagnosed in force"), std::string::npos) << swap.out;
   EXPECT_EQ(watch.wait_exit(20.0), 0);
@@ -121,7 +128,7 @@ TEST_F(LiveTest, MonitorProposesTheHiddenEffectAndItsSwapBringsTheErrorToTheNois
   const v1::SwapAuditRecord& s = m.recent_swaps(0);
   EXPECT_EQ(s.proposal_id(), proposal->proposal_id());
   EXPECT_EQ(s.source(), "proposal " + proposal->proposal_id());
-  EXPECT_NE(s.by().find('@'), std::string::npos) << s.by();
+  EXPECT_EQ(s.by(), "Ada Lovelace");   // the person, not the process's USER@HOST
   EXPECT_EQ(s.model_before(), "paper");
   EXPECT_EQ(s.model_after(), "paper_diagnosed");
   for (double before_nm : {s.before_msy_rmse_nm(), s.before_msz_rmse_nm()}) EXPECT_GT(before_nm, 0.0);
@@ -187,7 +194,8 @@ TEST_F(LiveTest, ASwapDuringADiagnosisLeavesNoProposalForTheModelReplaced) {
       [&](const v1::LiveStatus& s) { return s.monitors(0).diagnosing() == cell; });
   ASSERT_EQ(diagnosing.monitors(0).diagnosing(), cell);
   const auto swap = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--model", "paper_downwind", "--wait-s", "10"}));
+      {"swap-model", "--test-cell", cell, "--model", "paper_downwind", "--wait-s", "10",
+       "--operator", "tester"}));
   ASSERT_EQ(swap.exit_code, 0) << swap.err;
   const v1::LiveStatus status = wait_for_status(
       [](const v1::LiveStatus& s) { return s.monitors(0).diagnoses_run() >= 1; });
@@ -227,7 +235,8 @@ TEST_F(LiveTest, AProposalThatLaterDataContradictsIsWithdrawn) {
       << withdrawn->state_reason();
   // Withdrawn, it can no longer be applied.
   const auto swap = run_gearcoupling(on_test_domain(
-      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "5"}));
+      {"swap-model", "--test-cell", cell, "--proposal", proposal->proposal_id(), "--wait-s", "5",
+       "--operator", "tester"}));
   EXPECT_EQ(swap.exit_code, 2) << swap.out << swap.err;
   EXPECT_NE(swap.err.find("withdrawn"), std::string::npos) << swap.err;
 }

@@ -57,6 +57,13 @@ for program in gearcoupling gearcoupling-service gearcoupling-monitor gearcoupli
   [ "$("$program" --version)" = "$program $version" ] ||
     fail "$program --version: $("$program" --version 2>&1) (package $version)"
 done
+# The installed completion offers the installed bundled names after --coupling and --model.
+completion=/usr/share/bash-completion/completions/gearcoupling
+offered() { bash -c "source $completion && COMP_WORDS=(gearcoupling $1) && COMP_CWORD=3 && _gearcoupling && echo \${COMPREPLY[*]}"; }
+[ "$(offered "jam-angle --coupling nrel_")" = "nrel_downwind nrel_upwind" ] ||
+  fail "the completion after --coupling offers: $(offered "jam-angle --coupling nrel_")"
+[ "$(offered "validate --model pap")" = "paper paper_downwind" ] ||
+  fail "the completion after --model offers: $(offered "validate --model pap")"
 for program in gearcoupling-service gearcoupling-monitor gearcoupling-dashboard; do
   unit=/lib/systemd/system/$program.service
   [ -f "$unit" ] || fail "no $unit"

@@ -15,7 +15,16 @@ scratch gc_deb
 # dpkg-buildpackage writes beside debian/: a scratch copy of it, not the source tree.
 mkdir "$tmp/src"
 cp -r "$source/debian" "$tmp/src/debian"
-(cd "$tmp/src" && GC_BUILD_DIR=$build dpkg-buildpackage -b -uc -us >"$tmp/dpkg-buildpackage.log" 2>&1) ||
+# debian/rules packs only a build with Debian's hardening flags (-DGC_DPKG_BUILDFLAGS=ON); a test
+# build without them is packed anyway, and its hardening is not checked.
+hardened=0
+grep -qiE '^GC_DPKG_BUILDFLAGS:BOOL=(ON|1|TRUE|YES|Y)$' "$build/CMakeCache.txt" && hardened=1
+if [ "$hardened" = 0 ]; then
+  echo "NOTE: $build was not configured with -DGC_DPKG_BUILDFLAGS=ON: packed with" \
+       "GC_UNHARDENED_OK=1, the binaries' hardening not checked"
+fi
+(cd "$tmp/src" && GC_BUILD_DIR=$build GC_UNHARDENED_OK=$((1 - hardened)) \
+   dpkg-buildpackage -b -uc -us >"$tmp/dpkg-buildpackage.log" 2>&1) ||
   { tail -30 "$tmp/dpkg-buildpackage.log" >&2; fail "dpkg-buildpackage"; }
 version=$(dpkg-parsechangelog -l "$source/debian/changelog" -S Version)
 arch=$(dpkg --print-architecture)
@@ -27,9 +36,13 @@ done
 
 # lintian on everything built (the .changes: the packages and the .buildinfo): no error, no
 # warning. (As root it says that it would rather not be: that line is not a finding.)
-lintian --fail-on error,warning "$tmp"/gearcoupling_"$version"_"$arch".changes >"$tmp/lintian.out" 2>&1 ||
+# -I: the informational tags too, where the hardening ones are.
+lintian -I --fail-on error,warning "$tmp"/gearcoupling_"$version"_"$arch".changes >"$tmp/lintian.out" 2>&1 ||
   { cat "$tmp/lintian.out" >&2; fail "lintian"; }
 grep -v "running with root privileges" "$tmp/lintian.out" | sed 's/^/lintian: /' || true
+if [ "$hardened" = 1 ] && grep -E "hardening-no-(bindnow|fortify-functions|relro)" "$tmp/lintian.out"; then
+  fail "binaries of a build with -DGC_DPKG_BUILDFLAGS=ON lack hardening (lintian -I above)"
+fi
 if ls "$tmp"/*.ddeb "$tmp"/*-dbgsym_*.deb 2>/dev/null; then fail "-dbgsym packages of a build without debug information"; fi
 
 # Control data. Each package's Depends: those dpkg-shlibdeps found, and the -dev packages of
@@ -88,7 +101,7 @@ in_package gearcoupling '/usr/bin/gearcoupling(-service|-monitor|-dashboard)?' \
   '/usr/share/gearcoupling/models/paper\.textproto' \
   '/usr/share/gearcoupling/deploy/cyclonedds-loopback-client\.xml' \
   '/usr/share/gearcoupling/deploy/security/make-security\.sh' \
-  '/usr/share/bash-completion/completions/gearcoupling' '/usr/share/doc/gearcoupling/deploy\.md'
+  '/usr/share/bash-completion/completions/gearcoupling' '/usr/share/doc/gearcoupling/docs/deploy\.md'
 # The client's headers need no Cyclone header and nothing idlc generated (docs/deploy.md).
 if contents libgearcoupling-dev | grep -E '/gearcoupling\.h$|client_core\.h$'; then
   fail "libgearcoupling-dev ships a header of the client's DDS side"
@@ -98,6 +111,22 @@ fi
 dpkg -x "$(deb libgearcoupling-dev)" "$tmp/dev"
 others=$(grep -rhoE '#include <[A-Za-z0-9_.]+/' "$tmp/dev/usr/include" | sort -u | grep -vE '<(Eigen|google)/$') || true
 [ -z "$others" ] || fail "libgearcoupling-dev's headers include $others: its -dev package belongs in Depends"
+# /usr/share/doc/gearcoupling: the README and the pages it links to (docs/*.md), nothing of the
+# build (CMakeLists.txt, the tutorial's test helper); every link of the README to a file resolves.
+docs=$(contents gearcoupling | grep '^/usr/share/doc/gearcoupling/' | grep -v '/$')
+if grep -E 'CMakeLists\.txt$|\.py$' <<<"$docs"; then fail "/usr/share/doc/gearcoupling ships build files"; fi
+dpkg -x "$(deb gearcoupling)" "$tmp/doc-check"
+doc=$tmp/doc-check/usr/share/doc/gearcoupling
+for link in $(grep -oE '\]\([^)#]+' "$doc/README.md" | sed 's/^](//' | grep -vE '^[a-z]+:' | sort -u); do
+  [ -f "$doc/$link" ] || fail "the installed README links to $link, which is not installed"
+done
+# The man pages: help2man's sections and debian/man/*.h2m's FILES, ENVIRONMENT, EXAMPLES.
+for program in gearcoupling gearcoupling-service gearcoupling-monitor gearcoupling-dashboard; do
+  page=$tmp/doc-check/usr/share/man/man1/$program.1.gz
+  for section in FILES ENVIRONMENT EXAMPLES; do
+    zcat "$page" | grep -qx "\.SH $section" || fail "man page $program.1 has no $section section"
+  done
+done
 # Each file in one package only.
 duplicates=$(for package in "${packages[@]}"; do contents "$package" | grep -v '/$'; done | sort | uniq -d)
 [ -z "$duplicates" ] || fail "files in two packages: $duplicates"

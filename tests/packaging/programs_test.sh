@@ -30,12 +30,15 @@ refused gearcoupling-monitor "--window-s: Value -1 not in range" "window-s = -1"
 refused gearcoupling-monitor "windoww" "windoww = 3"
 refused gearcoupling-dashboard "--update-hz: Value 99 not in range 1 to 10" "update-hz = 99"
 refused gearcoupling-dashboard "lisen" 'lisen = "127.0.0.1:8080"'
+# An operator dashboard names the person applying proposals (issue 39): --operator, else refused.
+refused gearcoupling-dashboard "--operator: required" 'operator-cells = ["dyno1"]'
+refused gearcoupling-dashboard "--operator: 'a;b' is not an operator name" $'operator-cells = ["dyno1"]\noperator = "a;b"'
 status=0
 "$build/${binary[gearcoupling-monitor]}" --config "$tmp/none.conf" >"$tmp/out" 2>&1 || status=$?
 [ "$status" -eq 2 ] && grep -qF "$tmp/none.conf" "$tmp/out" || fail "a missing --config file: exit $status: $(cat "$tmp/out")"
 # The files shipped in /etc/gearcoupling name only flags the programs have.
 for program in monitor dashboard; do
-  for name in $(sed -n 's/^\([a-z-]*\) = .*/\1/p' "$source/deploy/$program.conf"); do
+  for name in $(sed -n 's/^#\? \?\([a-z-]*\) = .*/\1/p' "$source/deploy/$program.conf"); do
     "$build/${binary[gearcoupling-$program]}" --help | grep -q -- "--$name" ||
       fail "deploy/$program.conf sets $name, which gearcoupling-$program has not"
   done

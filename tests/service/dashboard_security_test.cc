@@ -125,7 +125,7 @@ TEST_F(SecureDashboard, UnderADashboardIdentityWithAClientsPrefixThePanelStillSa
 TEST_F(SecureDashboard, UnderADashboardIdentityApplyingProposalsIsRefused) {
   const test::ShellResult refused = test::run_shell(
       "CYCLONEDDS_URI='" + cell_->uri("dashboard-main") + "' " GC_DASHBOARD_BINARY " --domain " +
-      std::to_string(test::test_domain()) + " --listen 127.0.0.1:0 --operator-cells c");
+      std::to_string(test::test_domain()) + " --listen 127.0.0.1:0 --operator-cells c --operator tester");
   EXPECT_EQ(refused.exit_code, 1) << refused.output;
   EXPECT_NE(refused.output.find("--operator-cells c: this dashboard's DDS identity may not publish "
                                 "model swaps"), std::string::npos) << refused.output;

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -46,6 +48,31 @@ TEST(ServiceConfig, EqualsFormAliasesAndShortJobs) {
   EXPECT_EQ(parse_service_command({"--jobs=5"}).config.threads, 5u);
   EXPECT_EQ(parse_service_command({"--threads", "6"}).config.threads, 6u);  // documented alias
   EXPECT_EQ(parse_service_command({"-j", "1", "--jobs", "2"}).config.threads, 2u);  // last wins
+  std::remove(file.c_str());
+}
+
+// Issue 39: a missing file says why; a misspelt setting gets the nearest; a TOML line (the
+// monitor's and the dashboard's format) is named as such.
+TEST(ServiceConfig, FileErrorsSayWhyAndWhatWasMeant) {
+  const auto message_of = [](const std::vector<std::string>& args) {
+    try {
+      parse_service_command(args);
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.field(), "--config");
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "accepted";
+    return std::string();
+  };
+  EXPECT_NE(message_of({"--config", "/nonexistent/service.conf"})
+                .find("cannot read \"/nonexistent/service.conf\": No such file or directory"),
+            std::string::npos);
+  std::string file = write_temp("thread: 3\n");
+  EXPECT_NE(message_of({"--config", file}).find("no field named \"thread\"; did you mean 'threads'?"),
+            std::string::npos) << message_of({"--config", file});
+  file = write_temp("domain = 3\n");
+  EXPECT_NE(message_of({"--config", file}).find("this file is protobuf text format, `name: value`"),
+            std::string::npos) << message_of({"--config", file});
   std::remove(file.c_str());
 }
 

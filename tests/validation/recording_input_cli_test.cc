@@ -117,8 +117,23 @@ TEST(RecordingInputCli, AColumnWithoutItsUnitAMissingFileAndAMisspeltModelSayWha
             std::string::npos) << missing.err;
   const ProcessResult misspelt = run_gearcoupling({"validate", "--data", kSweep, "--model", "papr"});
   EXPECT_EQ(misspelt.exit_code, 2) << misspelt.err;
-  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind)"),
+  EXPECT_NE(misspelt.err.find("--model 'papr': no such bundled model (paper, paper_downwind) nor a "
+                             ".textproto file; did you mean 'paper'?"),
             std::string::npos) << misspelt.err;
+  const ProcessResult unwritable = run_gearcoupling(
+      {"synth", "--model", "paper", "--out", "/nonexistent/dir/out.csv"});
+  EXPECT_EQ(unwritable.exit_code, 1) << unwritable.err;
+  EXPECT_NE(unwritable.err.find("cannot write --out /nonexistent/dir/out.csv: No such file or directory"),
+            std::string::npos) << unwritable.err;
+  const ProcessResult effect = run_gearcoupling({"validate", "--data", kSweep, "--model", "paper",
+                                                 "--add", "eccentricty"});
+  EXPECT_EQ(effect.exit_code, 2) << effect.err;
+  EXPECT_NE(effect.err.find("unknown effect; the library has: "), std::string::npos) << effect.err;
+  EXPECT_NE(effect.err.find("; did you mean 'eccentricity'?"), std::string::npos) << effect.err;
+  const ProcessResult coupling = run_gearcoupling({"jam-angle", "--coupling", "nrel_dowwind"});
+  EXPECT_EQ(coupling.exit_code, 2) << coupling.err;
+  EXPECT_NE(coupling.err.find("(known: nrel_downwind, nrel_upwind); did you mean 'nrel_downwind'?"),
+            std::string::npos) << coupling.err;
 }
 
 // A dyno that logs the drive torque negative: refused with what to do, and --negate torque reads

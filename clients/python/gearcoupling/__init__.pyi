@@ -49,16 +49,23 @@ class Coupling:
 CouplingSource = Union[Coupling, str, os.PathLike[str], Mapping[str, Any]]
 ArrayLike = Union[float, Sequence[float], Sequence[Sequence[float]], npt.NDArray[np.float64]]
 Errors = Literal["raise", "mask"]
+# Renames: "msy_knm=Ch3_kNm,..." as validate --columns, or {"msy_knm": "Ch3_kNm"}.
+Columns = Union[str, Mapping[str, str], None]
+# Quantities read with the sign flipped: "torque,msy" as validate --negate, or ["torque"].
+Negate = Union[str, Sequence[str], None]
 
 class CaseTable(dict[str, np.ndarray]):
     """A vectorised call's columns, each an array of the inputs' broadcast shape."""
     inputs: dict[str, np.ndarray]
+    index: Any  # pandas.Index of the first Series input, or None
     def __init__(self, columns: Mapping[str, np.ndarray],
-                 inputs: Mapping[str, np.ndarray] | None = None) -> None: ...
+                 inputs: Mapping[str, np.ndarray] | None = None, index: Any = None) -> None: ...
     @property
     def shape(self) -> tuple[int, ...]: ...
     def to_frame(self) -> Any:  # pandas.DataFrame
-        """One row per case (C order): the inputs, then the columns."""
+        """One row per case (C order): the inputs, then the columns; indexed by ``index``."""
+    def series(self, name: str) -> Any:  # pandas.Series
+        """One column with the inputs' index."""
 
 CaseArrays = CaseTable
 
@@ -197,8 +204,8 @@ class Model:
     def effects(self) -> list[str]: ...
     def effect_parameters(self, name: str) -> dict[str, float]: ...
     def with_effect(self, spec: str) -> Model: ...
-    def predict(self, recording: RecordingSource, *, columns: str | None = None,
-                threads: int = 0) -> CaseTable:
+    def predict(self, recording: RecordingSource, *, columns: Columns = None,
+                negate: Negate = None, threads: int = 0) -> CaseTable:
         """Every sample's prediction and residual (predicted - measured) [N·m]."""
     def to_text(self) -> str: ...
     def write(self, path: Union[str, os.PathLike[str]]) -> None: ...
@@ -221,14 +228,16 @@ class Recording:
 RecordingSource = Union[Recording, str, os.PathLike[str], Any]  # Any: a pandas.DataFrame
 ModelSource = Union[Model, str, os.PathLike[str], Mapping[str, Any]]
 
-def read_recording(source: RecordingSource, *, columns: str | None = None) -> Recording: ...
+def read_recording(source: RecordingSource, *, columns: Columns = None,
+                   negate: Negate = None) -> Recording: ...
 def validate(recording: RecordingSource, model: ModelSource, *, add: str = "",
-             reference_torque_nm: float = 1.5e6, threads: int = 0, columns: str | None = None,
-             html: Union[str, os.PathLike[str], None] = None,
+             reference_torque_nm: float = 1.5e6, threads: int = 0, columns: Columns = None,
+             negate: Negate = None, html: Union[str, os.PathLike[str], None] = None,
              force_scale: bool = False) -> ValidationResult: ...
 def diagnose(recording: RecordingSource, model: ModelSource, *,
              write_model: Union[str, os.PathLike[str], None] = None, threads: int = 0,
-             columns: str | None = None, force_scale: bool = False) -> DiagnosisResult: ...
+             columns: Columns = None, negate: Negate = None,
+             force_scale: bool = False) -> DiagnosisResult: ...
 
 class Client:
     """The same calculations through gearcoupling-service over DDS ($CYCLONEDDS_URI)."""

@@ -137,11 +137,16 @@ class Result:
 class CaseTable(dict):
     """What a vectorised call returns: a dict of column name -> numpy array, every array of the
     inputs' broadcast shape (units end the names, as in the batch CSV), and ``inputs``, the
-    arguments broadcast to that shape. ``to_frame()`` makes it one pandas DataFrame."""
+    arguments broadcast to that shape. ``to_frame()`` makes it one pandas DataFrame.
 
-    def __init__(self, columns: dict, inputs: dict | None = None) -> None:
+    ``index``: the pandas index of the first input given as a Series, when the cases are that
+    Series' rows (else None); ``to_frame()`` and ``series()`` keep it, so results line up with
+    the frame the inputs came from."""
+
+    def __init__(self, columns: dict, inputs: dict | None = None, index: Any = None) -> None:
         super().__init__(columns)
         self.inputs = dict(inputs or {})
+        self.index = index
 
     @property
     def shape(self) -> tuple:
@@ -157,7 +162,14 @@ class CaseTable(dict):
         data = {}
         for name, value in list(self.inputs.items()) + list(self.items()):
             data[name] = value.reshape(-1)
-        return pandas.DataFrame(data)
+        return pandas.DataFrame(data, index=self.index)
+
+    def series(self, name: str):
+        """Column ``name`` as a pandas Series with the inputs' index (``index``, else 0..n-1)."""
+        pandas = _pandas()
+        if name not in self:
+            raise KeyError(f"{name!r} is not a column (columns: {', '.join(self)})")
+        return pandas.Series(self[name].reshape(-1), index=self.index, name=name)
 
 
 def _samples(result: Result, model: int | str = 0, threads: int = 0):

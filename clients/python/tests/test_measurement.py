@@ -120,3 +120,52 @@ def test_a_thousandfold_unit_slip_is_refused_as_validate_refuses_it():
         assert "columns={'msy_knm': 'HEADER'}" in message and "force_scale=True" in message, message
     forced = gc.validate(frame, "paper", force_scale=True).to_dict()
     assert any("by about 1000" in w for w in forced["warnings"])
+
+
+# ---- issue 39, rough edges ------------------------------------------------------------------
+
+def test_columns_takes_a_dict_of_our_names_to_the_users_headers():
+    # Headers with a comma or '=' (a spreadsheet's "Ch3 [N·m], filtered") need no quoting.
+    frame = pd.read_csv(SWEEP, float_precision="round_trip").rename(
+        columns={"msy_nm": "Ch3 [Nm], filtered", "msz_nm": "Ch4=z"})
+    by_dict = gc.validate(frame, "paper", columns={"msy_nm": "Ch3 [Nm], filtered", "msz_nm": "Ch4=z"})
+    plain = gc.validate(SWEEP, "paper")
+    assert by_dict.models[0].overall.msy.rmse_nm == plain.models[0].overall.msy.rmse_nm
+    assert by_dict.models[0].overall.msz.rmse_nm == plain.models[0].overall.msz.rmse_nm
+    # A key that is none of our names is named, with the names there are.
+    with pytest.raises(gc.InvalidInput) as error:
+        gc.read_recording(frame, columns={"moment_y": "Ch3 [Nm], filtered"})
+    assert error.value.field == "columns"
+    assert "key 'moment_y' is not a column name" in str(error.value) and "msy_nm" in str(error.value)
+    with pytest.raises(gc.InvalidInput) as error:
+        gc.read_recording(frame, columns=["msy_nm"])
+    assert error.value.field == "columns" and "dict {name: header}" in str(error.value)
+
+
+def test_negate_reads_a_negative_torque_as_the_cli_does():
+    frame = pd.read_csv(SWEEP, float_precision="round_trip")
+    negative = frame.assign(torque_nm=-frame["torque_nm"])
+    with pytest.raises(gc.InvalidInput) as refused:
+        gc.validate(negative, "paper")
+    assert 'read the column with negate="torque"' in str(refused.value), str(refused.value)
+    plain = gc.validate(SWEEP, "paper")
+    for negate in ("torque", ["torque"]):
+        negated = gc.validate(negative, "paper", negate=negate)
+        assert negated.models[0].overall.msy.rmse_nm == plain.models[0].overall.msy.rmse_nm
+    assert (negated.samples()["torque_nm"] > 0).all()   # samples() reads it as validate did
+    assert gc.diagnose(negative, "paper", negate="torque").to_dict()["recording"] == "<DataFrame>"
+    assert (gc.read_recording(negative, negate="torque").to_arrays()["torque_nm"] > 0).all()
+    with pytest.raises(ValueError) as error:
+        gc.read_recording(SWEEP, negate=["torq"])
+    assert "'torq' is no quantity" in str(error.value)
+
+
+def test_a_data_frames_errors_name_the_data_frame_not_a_scratch_file():
+    frame = pd.read_csv(SWEEP, float_precision="round_trip")
+    for run in (gc.read_recording, lambda f: gc.validate(f, "paper")):
+        with pytest.raises(gc.InvalidInput) as error:
+            run(frame.rename(columns={"msy_nm": "msy"}))
+        message = str(error.value)
+        assert message.startswith("recording.msy: <DataFrame>:1: required column msy missing"), message
+        assert "column 5 'msy' has no unit: name it msy_nm" in message, message
+        assert "gearcoupling-recording-" not in message and ".csv" not in message, message

@@ -258,3 +258,24 @@ def test_pip_install_is_documented_as_debian_12_allows_it():
                                 timeout=60).stdout
         assert "Candidate:" not in policy or "Candidate: (none)" in policy, (
             f"Debian now packages {package}: make `pip install .` work (docs/python.md)")
+
+
+# ---- a Series keeps its index (issue 39) ----------------------------------------------------
+
+def test_a_series_input_gives_results_with_its_index():
+    cases = pd.DataFrame({"torque_nm": [1e6, 1.5e6, 2e6], "misalignment_deg": [0.1, 0.2, 0.3]},
+                         index=pd.Index(["run-a", "run-b", "run-c"], name="run"))
+    out = gc.induced_moments_many("nrel_upwind", cases["torque_nm"],
+                                  np.radians(cases["misalignment_deg"]), mu=0.1)
+    assert out.index.equals(cases.index)
+    frame = out.to_frame()
+    assert frame.index.equals(cases.index)
+    assert frame.loc["run-b", "magnitude_nm"] == gc.induced_moments(
+        "nrel_upwind", 1.5e6, np.radians(0.2), mu=0.1).magnitude_nm
+    joined = cases.join(out.series("magnitude_nm"))   # lines up by the index, not by position
+    assert joined["magnitude_nm"].notna().all()
+    # Arrays (no index), or a grid that is not the Series' rows: 0..n-1 as before.
+    assert gc.induced_moments_many("nrel_upwind", np.array([1e6, 2e6]), 0.001, mu=0.1).index is None
+    grid = gc.induced_moments_many("nrel_upwind", cases["torque_nm"].to_numpy()[:, None],
+                                   np.array([0.001, 0.002]), mu=0.1)
+    assert grid.index is None and list(grid.to_frame().index) == list(range(6))
