@@ -31,21 +31,35 @@ std::optional<SurrogateDesign> formula_design(const CandidateScore& formula, con
   extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
   TermDesign design = term_design(observations, rows, base, extra);
   if (design.columns.cols() == 0) return std::nullopt;
+  // The formula's terms that are more than a level (the test judges what varies about the levels).
   const Eigen::Index n = base.rows();
-  Eigen::MatrixXd levels = Eigen::MatrixXd::Zero(2 * n, 2);
-  levels.col(0).head(n).setOnes();
-  levels.col(1).tail(n).setOnes();
-  // The formula's terms that are more than a level: the number chosen beside the levels.
   int beyond_levels = 0;
   for (const ParameterEstimate& p : formula.fit->parameters) {
     const auto it = std::find(design.terms.begin(), design.terms.end(), p.name);
     if (it == design.terms.end()) continue;
     const Eigen::VectorXd column = design.columns.col(it - design.terms.begin());
-    const Eigen::VectorXd within = column - levels * (levels.transpose() * column) / static_cast<double>(n);
+    Eigen::VectorXd within = column;
+    within.head(n).array() -= column.head(n).mean();
+    within.tail(n).array() -= column.tail(n).mean();
     if (within.norm() > 1e-9 * column.norm()) ++beyond_levels;
   }
-  if (beyond_levels == 0) return SurrogateDesign{std::move(levels), 0, {}};
-  return SurrogateDesign{std::move(design.columns), beyond_levels, std::move(levels)};
+  const bool level = beyond_levels < static_cast<int>(formula.fit->parameters.size());
+  if (beyond_levels == 0) return SurrogateDesign{Eigen::MatrixXd(2 * n, 0), 0, true};
+  return SurrogateDesign{std::move(design.columns), beyond_levels, level};
+}
+
+/// Whether the span of `columns` (2n stacked) holds a channel's level: an offset among its
+/// parameters.
+bool moves_a_level(const Eigen::MatrixXd& columns, Eigen::Index n) {
+  if (columns.cols() == 0) return false;
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(columns);
+  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(columns.rows(), qr.rank());
+  for (int c = 0; c < 2; ++c) {
+    Eigen::VectorXd level = Eigen::VectorXd::Zero(2 * n);
+    level.segment(c * n, n).setConstant(1.0 / std::sqrt(static_cast<double>(n)));
+    if ((basis.transpose() * level).squaredNorm() > 0.5) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -75,6 +89,7 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
   }
   SurrogateDesign design{Eigen::MatrixXd(2 * base.rows(), static_cast<Eigen::Index>(columns.size())), 0};
   for (std::size_t j = 0; j < columns.size(); ++j) design.columns.col(static_cast<Eigen::Index>(j)) = columns[j];
+  design.level = moves_a_level(design.columns, base.rows());
   return design;
 }
 

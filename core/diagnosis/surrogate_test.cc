@@ -12,18 +12,46 @@
 namespace gc {
 namespace {
 
-/// The lowest frequencies whose power stands for the power at zero frequency: a few bins, more on
-/// a long recording, where each bin is narrower.
-std::size_t low_bins(std::size_t n) { return std::clamp<std::size_t>(n / 200, 3, std::max<std::size_t>(3, n / 2 - 1)); }
-
-/// The most power of the lowest frequencies of `spectrum`: a wander whose time scale is a good part
-/// of the recording has more power at zero frequency than at the first bins (an Ornstein-Uhlenbeck
-/// zero of tau 12 s over 28 s left a 3 kN·m level that their mean called an offset).
-double low_frequency_power(const std::vector<std::complex<double>>& spectrum) {
+/// The variance of a rise from the first row to the last: the increments' power at the lowest
+/// frequencies (their sum is the rise). A random walk's increments are white, and it rises by
+/// about its step times the root of its length; a stationary noise's increments have next to no
+/// power there, and it rises by little.
+double increments_low_power(const Eigen::VectorXd& x) {
+  const Eigen::Index m = x.size() - 1;
+  if (m < 8) return 0.0;
+  const Eigen::VectorXd d = x.tail(m) - x.head(m);
   double power = 0.0;
-  const std::size_t bins = std::min(low_bins(spectrum.size()), spectrum.size() / 2);
-  for (std::size_t k = 1; k <= bins; ++k) power = std::max(power, std::norm(spectrum[k]));
+  for (int k = 1; k <= 3; ++k) {
+    std::complex<double> sum = 0.0;
+    for (Eigen::Index j = 0; j < m; ++j) sum += d(j) * std::polar(1.0, -2.0 * std::numbers::pi * k * j / static_cast<double>(m));
+    power = std::max(power, std::norm(sum));
+  }
   return power;
+}
+
+/// A bin this many times the median power about it is a line (a cycle, or a test programme that
+/// repeats), not the noise's continuum.
+constexpr double kLineRatio = 10.0;
+
+/// `spectrum`'s amplitudes for k = 0..n/2, each line brought down to the median about it (bins
+/// k/2..2k): a surrogate keeps the noise's continuum but not a line, which a design in phase with
+/// it would otherwise explain in many surrogates as well as in the residual (a hysteresis on
+/// repeated misalignment sweeps lost its claim that way).
+std::vector<double> without_lines(const std::vector<std::complex<double>>& spectrum) {
+  const std::size_t half = spectrum.size() / 2;
+  std::vector<double> power(half + 1), amplitude(half + 1);
+  for (std::size_t k = 0; k <= half; ++k) power[k] = std::norm(spectrum[k]);
+  for (std::size_t k = 0; k <= half; ++k) {
+    amplitude[k] = std::sqrt(power[k]);
+    if (k == 0) continue;
+    std::vector<double> about(power.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(1, k / 2)),
+                              power.begin() + static_cast<std::ptrdiff_t>(std::min(half, 2 * k) + 1));
+    if (about.size() < 5) continue;
+    std::nth_element(about.begin(), about.begin() + static_cast<std::ptrdiff_t>(about.size() / 2), about.end());
+    const double median = about[about.size() / 2];
+    if (power[k] > kLineRatio * median) amplitude[k] = std::sqrt(median);
+  }
+  return amplitude;
 }
 
 /// The largest length up to `n` whose only prime factors are 2, 3 and 5.
@@ -47,18 +75,18 @@ Eigen::VectorXd stacked(const Eigen::MatrixX2d& m) {
 /// One design made ready to project many right-hand sides.
 class Projector {
  public:
-  explicit Projector(const SurrogateDesign& design) : choose_(design.choose) {
-    if (design.forced.cols() > 0) forced_ = orthonormal(design.forced);
+  /// `rows`: the rows of each channel (the design has 2 * rows).
+  Projector(const SurrogateDesign& design, Eigen::Index rows) : choose_(design.choose), levels_(levels(rows)) {
     if (choose_ <= 0) {
-      basis_ = orthonormal(design.forced.cols() > 0 ? concatenated(design.forced, design.columns) : design.columns);
+      basis_ = orthonormal(concatenated(levels_, design.columns));
       return;
     }
     normalised_ = design.columns;
-    if (forced_.cols() > 0) normalised_ -= forced_ * (forced_.transpose() * normalised_);
+    normalised_ -= levels_ * (levels_.transpose() * normalised_);
     for (Eigen::Index j = 0; j < normalised_.cols(); ++j) {
       const double norm = normalised_.col(j).norm();
       const double before = design.columns.col(j).norm();
-      // A term some row cannot evaluate, or one the forced columns already span, is never chosen.
+      // A term some row cannot evaluate, or a level, is never chosen.
       if (std::isfinite(norm) && norm > 1e-9 * before) {
         normalised_.col(j) /= norm;
       } else {
@@ -67,17 +95,13 @@ class Projector {
     }
   }
 
+  /// The share of what varies about each channel's level that the design explains beyond it.
   double share(const Eigen::VectorXd& y) const {
-    const double total = y.squaredNorm();
+    const double level = (levels_.transpose() * y).squaredNorm();
+    const double total = y.squaredNorm() - level;
     if (!(total > 0.0)) return 0.0;
-    if (choose_ <= 0) return std::min(1.0, (basis_.transpose() * y).squaredNorm() / total);
-    return std::min(1.0, fitted(y).squaredNorm() / total);
-  }
-
-  /// The least-squares fit of `y` on the design (on the columns chosen for `y`).
-  Eigen::VectorXd fitted(const Eigen::VectorXd& y) const {
-    if (choose_ <= 0) return basis_ * (basis_.transpose() * y);
-    return greedy_fit(y);
+    const double fit = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() : greedy_fit(y).squaredNorm();
+    return std::clamp((fit - level) / total, 0.0, 1.0);
   }
 
  private:
@@ -85,9 +109,9 @@ class Projector {
   /// what the chosen ones leave; returns the fit.
   Eigen::VectorXd greedy_fit(const Eigen::VectorXd& y) const {
     const Eigen::Index steps = std::min<Eigen::Index>(choose_, normalised_.cols());
-    Eigen::MatrixXd basis(y.size(), forced_.cols() + steps);
-    basis.leftCols(forced_.cols()) = forced_;
-    Eigen::Index kept = forced_.cols();
+    Eigen::MatrixXd basis(y.size(), levels_.cols() + steps);
+    basis.leftCols(levels_.cols()) = levels_;
+    Eigen::Index kept = levels_.cols();
     Eigen::VectorXd left = y - basis.leftCols(kept) * (basis.leftCols(kept).transpose() * y);
     std::vector<bool> taken(static_cast<std::size_t>(normalised_.cols()), false);
     for (Eigen::Index step = 0; step < steps; ++step) {
@@ -108,6 +132,15 @@ class Projector {
     return y - left;
   }
 
+  /// Each channel's level, as orthonormal columns.
+  static Eigen::MatrixXd levels(Eigen::Index rows) {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(2 * rows, 2);
+    const double unit = 1.0 / std::sqrt(static_cast<double>(std::max<Eigen::Index>(rows, 1)));
+    out.col(0).head(rows).setConstant(unit);
+    out.col(1).tail(rows).setConstant(unit);
+    return out;
+  }
+
   static Eigen::MatrixXd concatenated(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
     Eigen::MatrixXd out(a.rows(), a.cols() + b.cols());
     out << a, b;
@@ -124,9 +157,9 @@ class Projector {
   }
 
   int choose_;
-  Eigen::MatrixXd basis_;       ///< orthonormal columns spanning the design (choose_ 0)
-  Eigen::MatrixXd normalised_;  ///< unit columns, less what forced_ spans (choose_ > 0)
-  Eigen::MatrixXd forced_;      ///< orthonormal columns spanning the forced ones
+  Eigen::MatrixXd levels_;      ///< each channel's level, orthonormal
+  Eigen::MatrixXd basis_;       ///< orthonormal columns spanning the levels and the design (choose_ 0)
+  Eigen::MatrixXd normalised_;  ///< unit columns, less the levels (choose_ > 0)
 };
 
 }  // namespace
@@ -140,12 +173,18 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
   // a surrogate is circular, so it wraps to the n rows.
   const Eigen::Index m = smooth_length(n);
   Eigen::FFT<double> fft;
-  std::array<std::vector<std::complex<double>>, 2> spectra;
-  std::array<double, 2> level_power{};
+  std::array<std::vector<double>, 2> amplitudes;
+  std::array<double, 2> rise_power{};
   for (int c = 0; c < 2; ++c) {
-    const Eigen::VectorXd tail = residual.col(c).tail(m);
-    fft.fwd(spectra[static_cast<std::size_t>(c)], std::vector<double>(tail.data(), tail.data() + m));
-    level_power[static_cast<std::size_t>(c)] = low_frequency_power(spectra[static_cast<std::size_t>(c)]);
+    // End-matched: less the line from its first to its last value, which a circular surrogate
+    // cannot hold; a rise of its own is drawn for each surrogate instead (rise_power).
+    Eigen::VectorXd tail = residual.col(c).tail(m);
+    const double first = tail(0), last = tail(m - 1);
+    for (Eigen::Index i = 0; i < m; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m - 1);
+    std::vector<std::complex<double>> spectrum;
+    fft.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m));
+    amplitudes[static_cast<std::size_t>(c)] = without_lines(spectrum);
+    rise_power[static_cast<std::size_t>(c)] = increments_low_power(residual.col(c));
   }
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
@@ -157,8 +196,8 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
     for (Eigen::Index k = 1; k <= m / 2; ++k) rotation[static_cast<std::size_t>(k)] = std::polar(1.0, phase(random));
     Eigen::MatrixX2d surrogate(n, 2);
     for (int c = 0; c < 2; ++c) {
-      const auto& x = spectra[static_cast<std::size_t>(c)];
-      turned[0] = normal(random) * std::sqrt(level_power[static_cast<std::size_t>(c)]);
+      const std::vector<double>& x = amplitudes[static_cast<std::size_t>(c)];
+      turned[0] = 0.0;  // the level is not judged (Projector::share)
       for (Eigen::Index k = 1; k <= (m - 1) / 2; ++k) {
         const std::complex<double> v = x[static_cast<std::size_t>(k)] * rotation[static_cast<std::size_t>(k)];
         turned[static_cast<std::size_t>(k)] = v;
@@ -169,7 +208,10 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
             x[static_cast<std::size_t>(m / 2)] * (rotation[static_cast<std::size_t>(m / 2)].real() < 0.0 ? -1.0 : 1.0);
       }
       fft.inv(back, turned);
-      for (Eigen::Index i = 0; i < n; ++i) surrogate(i, c) = back[static_cast<std::size_t>(i % m)];
+      const double rise = normal(random) * std::sqrt(rise_power[static_cast<std::size_t>(c)]);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        surrogate(i, c) = back[static_cast<std::size_t>(i % m)] + rise * (static_cast<double>(i) / static_cast<double>(n - 1) - 0.5);
+      }
     }
     out.push_back(std::move(surrogate));
   }
@@ -177,7 +219,24 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
 }
 
 double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& residual) {
-  return Projector(design).share(stacked(residual));
+  return Projector(design, residual.rows()).share(stacked(residual));
+}
+
+double level_p_value(const Eigen::MatrixX2d& residual) {
+  double p = 1.0;
+  for (int c = 0; c < 2; ++c) {
+    const Eigen::VectorXd x = residual.col(c);
+    const Eigen::Index n = x.size(), parts = 5;
+    if (n < parts) continue;
+    Eigen::VectorXd means(parts);
+    for (Eigen::Index k = 0; k < parts; ++k) means(k) = x.segment(k * n / parts, (k + 1) * n / parts - k * n / parts).mean();
+    const double spread = std::sqrt((means.array() - means.mean()).square().sum() / (parts - 1.0));
+    const double t = spread > 0.0 ? std::abs(x.mean()) / spread : (x.mean() != 0.0 ? 1e300 : 0.0);
+    // Student's t with 4 degrees of freedom, two-sided: 1 - F(t) + F(-t), x = t / sqrt(t^2 + 4).
+    const double u = t / std::sqrt(t * t + 4.0);
+    p = std::min(p, std::clamp(1.0 - 1.5 * u + 0.5 * u * u * u, 0.0, 1.0));
+  }
+  return std::min(1.0, 2.0 * p);  // either channel
 }
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
@@ -185,26 +244,31 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   std::vector<double> adjusted(designs.size(), 1.0);
   if (designs.empty() || !(level > 0.0)) return adjusted;
   const double family = static_cast<double>(designs.size());
-  // Enough surrogates that the smallest p-value, times the family, is half the level.
-  const int count = std::max(199, static_cast<int>(std::ceil(2.0 * family / level)) - 1);
+  // Enough surrogates that the smallest p-value, times the family and the two parts of a design
+  // (what varies, its level), is half the level.
+  const int count = std::max(199, static_cast<int>(std::ceil(4.0 * family / level)) - 1);
   // Besag and Clifford's sequential stop: once this many surrogates are explained as well, the
-  // p-value is above level / family whatever the rest say.
-  const int enough = static_cast<int>(std::ceil(level / family * (count + 1.0)));
+  // p-value is above level / (2 family) whatever the rest say.
+  const int enough = static_cast<int>(std::ceil(level / (2.0 * family) * (count + 1.0)));
   const Eigen::VectorXd y = stacked(residual);
   // Under the null the residual is the noise: its own spectrum, no relation to the inputs. Every
   // design is judged on the same surrogates.
-  const std::vector<Eigen::MatrixX2d> all_surrogates = phase_randomised_surrogates(residual, count, seed);
+  const std::vector<Eigen::MatrixX2d> surrogates = phase_randomised_surrogates(residual, count, seed);
+  const double level_p = level_p_value(residual);
   for (std::size_t d = 0; d < designs.size(); ++d) {
-    const Projector projector(designs[d]);
-    const double observed = projector.share(y);
-    const std::vector<Eigen::MatrixX2d>& surrogates = all_surrogates;
-    int as_well = 0, drawn = 0;
-    for (const Eigen::MatrixX2d& s : surrogates) {
-      ++drawn;
-      if (projector.share(stacked(s)) >= observed && ++as_well >= enough) break;
+    double p = 1.0;
+    if (designs[d].columns.cols() > 0) {
+      const Projector projector(designs[d], residual.rows());
+      const double observed = projector.share(y);
+      int as_well = 0, drawn = 0;
+      for (const Eigen::MatrixX2d& s : surrogates) {
+        ++drawn;
+        if (projector.share(stacked(s)) >= observed && ++as_well >= enough) break;
+      }
+      p = as_well >= enough ? 1.0 : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
     }
-    const double p = as_well >= enough ? 1.0 : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
-    adjusted[d] = std::min(1.0, family * p);
+    if (designs[d].level) p = std::min(p, level_p);
+    adjusted[d] = std::min(1.0, 2.0 * family * p);
   }
   return adjusted;
 }

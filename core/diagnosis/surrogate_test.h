@@ -7,17 +7,20 @@
 // the textbook spurious regression (Granger and Newbold, 1974), and interleaved cross-validation
 // cannot see it, since every held-out block has fitted neighbours.
 //
-// The statistic is the same on the residual and on every surrogate: the share of the residual's
-// sum of squares that least squares on the candidate's design removes. An effect's design is its
-// correction at the fit and its Jacobian there (the directions it can move in); a formula's is the
-// catalogue, of which the same number of terms is chosen greedily on each surrogate as on the
-// residual (the search's selection is part of the null; the formula's per-channel levels are taken
-// first, as the search takes them). The surrogates are of the residual itself: under the null it is
-// the noise. Surrogates of what a candidate leaves were tried and are too lenient: a gain and
-// offset that follow a random walk take its slowest modes, and what they leave is a faster noise
-// (a brown noise's offsets were claimed at p = 0.005; of the residual, p > 0.01). Several candidates
-// are tested at once, Bonferroni over the family, so the chance that such noise gives any claim is
-// at most the level.
+// The statistic is the same on the residual and on every surrogate: the share of what varies about
+// each channel's level that least squares on the candidate's design removes. An effect's design is
+// its correction at the fit and its Jacobian there (the directions it can move in); a formula's is
+// the catalogue, of which the same number of terms is chosen greedily on each surrogate as on the
+// residual (the search's selection is part of the null). The level itself is not judged: a walk's
+// mean is as uncertain as the walk, and surrogates whose level was drawn from the lowest
+// frequencies' power let a level and a staircase fit 198 of 300 random walks better than all of
+// them. The surrogates are of the residual itself (under the null it is the noise), with its lines
+// (a cycle, a test programme that repeats) brought down to the continuum about them, since a
+// surrogate that keeps a line in a random phase is explained as well by a design in phase with it
+// often enough to cost a real hysteresis its claim. Surrogates of what a candidate leaves were
+// tried and are too lenient: a gain and offset that follow a random walk take its slowest modes,
+// and what they leave is a faster noise. Several candidates are tested at once, Bonferroni over the
+// family, so the chance that such noise gives any claim is at most the level.
 #pragma once
 
 #include <cstdint>
@@ -28,9 +31,8 @@
 namespace gc {
 
 /// `count` surrogates of `residual` (rows in time order, one column per moment channel): each
-/// channel's periodogram kept, the same random phase added to both channels at each frequency (their
-/// cross-spectrum kept), and each channel's mean drawn from its power at the lowest frequencies
-/// rather than kept: a level is what a slow noise wanders to as much as a calibration offset.
+/// channel's periodogram kept but for its lines, the same random phase added to both channels at
+/// each frequency (their cross-spectrum kept), each channel's mean zero.
 std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
                                                           std::uint64_t seed);
 
@@ -40,16 +42,24 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
 struct SurrogateDesign {
   Eigen::MatrixXd columns;  ///< 2n x p [N·m per unit of each column's coefficient]
   int choose = 0;
-  /// Columns always in the fit, the choice made on what they leave (2n x q; may be empty): a
-  /// formula's per-channel levels, as the formula search takes intercepts before any term.
-  Eigen::MatrixXd forced;
+  /// The design moves a channel's level too (an offset, a constant term): judged by level_p_value
+  /// beside what it explains of the variation.
+  bool level = false;
 };
 
 /// Share of the stacked `residual`'s sum of squares that least squares on `design` removes, in [0, 1].
 double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& residual);
 
+/// The p-value that a channel's level is no more than its wander: the mean against the spread of
+/// the means of five contiguous fifths, as Student's t with 4 degrees of freedom, the smaller of
+/// the two channels' doubled. Not the mean's standard error: a walk's fifths wander together, and
+/// its mean is as far from zero as they wander (a random walk's level is no offset); an offset of
+/// a calibration stands far out of any noise's fifths.
+double level_p_value(const Eigen::MatrixX2d& residual);
+
 /// Per design, the p-value that noise with the residual's spectrum is explained as well, times the
-/// number of designs (Bonferroni over the family): (1 + surrogates
+/// number of designs and by 2 (Bonferroni over the family and a design's two parts: what it explains
+/// of the variation about the levels, by the surrogates, and a level it moves, by level_p_value): (1 + surrogates
 /// explained at least as well) / (1 + surrogates drawn). Enough surrogates are drawn for a p-value
 /// of half `level`, fewer once the p-value is sure to be above it (Besag and Clifford, 1991).
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
