@@ -8,12 +8,15 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
+#include "protocol/batch.h"
 #include "protocol/jam_angle_result.h"
 
 namespace gc::protocol {
 
 void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out);
 ToothContact from_wire(const gearcoupling_ToothContactResult& in);
+/// Every member but the teeth (left empty): a batch's load case (protocol/batch.h).
+void to_wire_without_teeth(const ToothContact& in, gearcoupling_ToothContactResult& out);
 
 void to_wire(const protocol::JamAngleResult& in, gearcoupling_JamAngleResult& out);
 protocol::JamAngleResult from_wire(const gearcoupling_JamAngleResult& in);
@@ -26,5 +29,10 @@ RestoringTorque from_wire(const gearcoupling_RestoringTorqueResult& in);
 
 void to_wire(const FrictionEstimate& in, gearcoupling_FrictionEstimateResult& out);
 FrictionEstimate from_wire(const gearcoupling_FrictionEstimateResult& in);
+
+/// A batch's answers (wire_batch.cc). to_wire cuts each case's field and message to
+/// kMaxBatchCaseTextBytes.
+void to_wire(const BatchResult& in, gearcoupling_BatchResult& out);
+BatchResult from_wire(const gearcoupling_BatchResult& in);
 
 }  // namespace gc::protocol

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
@@ -29,6 +30,8 @@ using analysis::batch_output_header;
 using analysis::describe_row_error;
 using analysis::parse_batch_header;
 using analysis::parse_batch_row;
+using calculators::LoadCaseInput;
+using calculators::LoadCaseOutcome;
 namespace {
 
 // Lines each thread takes per chunk: large enough to amortise starting the threads, small
@@ -63,25 +66,30 @@ struct ChunkPart {
   long failed_rows = 0;
 };
 
-void evaluate_line(std::string_view line, long number, const BatchJob& job, BatchRow& row,
-                   ChunkPart& part) {
-  std::string reason;
-  if (auto bad_row = parse_batch_row(line, job.columns, job.default_coupling, row)) {
-    reason = std::move(*bad_row);
-  } else {
-    try {
-      append_result_row(part.output, number, row.coupling,
-                        job.calculator.load_case(row.coupling, row.point, job.options));
-      return;
-    } catch (const InvalidInput& error) {
-      reason = describe_row_error(error, job.columns, row);
-    } catch (const std::exception& error) {  // NotConverged, or anything else: the row fails
-      reason = error.what();
-    }
-  }
-  append_error_row(part.output, number, row.coupling, reason);
+// Rows a thread hands to the calculator at once (Calculator::load_cases): over DDS, a batch of
+// this many cases per request (protocol::kMaxBatchCases allows 4096; 1024 lets the threads'
+// parsing and printing overlap the service's computing). In process the size does not matter.
+constexpr std::size_t kCasesPerCall = 1024;
+
+void append_failed_row(std::string_view coupling, long number, const std::string& reason,
+                       ChunkPart& part) {
+  append_error_row(part.output, number, coupling, reason);
   part.errors += fmt::format("gearcoupling batch: line {}: {}\n", number, reason);
   ++part.failed_rows;
+}
+
+// The reason a computed row failed, as the user wrote it: `row` is parsed again from `line`
+// (only for failed rows) so the error can quote its fields.
+std::string failure_reason(std::exception_ptr error, std::string_view line, const BatchJob& job,
+                           BatchRow& row) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InvalidInput& e) {
+    parse_batch_row(line, job.columns, job.default_coupling, row);
+    return describe_row_error(e, job.columns, row);
+  } catch (const std::exception& e) {  // NotConverged, or anything else: the row fails
+    return e.what();
+  }
 }
 
 // A chunk of input lines with their line numbers (blank lines are skipped, so they need not
@@ -91,14 +99,45 @@ struct InputLines {
   std::vector<long> numbers;
 };
 
+// Lines [begin, end): parsed, computed kCasesPerCall at a time through the calculator, written
+// in input order (a row that does not parse, or whose case fails, as an error row).
 void evaluate_lines(const InputLines& lines, std::size_t begin, std::size_t end,
                     const BatchJob& job, ChunkPart& part) {
   part.output.clear();
   part.errors.clear();
   part.failed_rows = 0;
   BatchRow row;
-  for (std::size_t i = begin; i < end; ++i) {
-    evaluate_line(lines.text[i], lines.numbers[i], job, row, part);
+  std::vector<LoadCaseInput> cases;
+  std::vector<std::optional<std::string>> bad_rows;  // per line of the call: why it did not parse
+  for (std::size_t first = begin; first < end; first += kCasesPerCall) {
+    const std::size_t last = std::min(end, first + kCasesPerCall);
+    cases.clear();
+    bad_rows.assign(last - first, std::nullopt);
+    for (std::size_t i = first; i < last; ++i) {
+      if (auto bad_row = parse_batch_row(lines.text[i], job.columns, job.default_coupling, row)) {
+        bad_rows[i - first] = std::move(*bad_row);
+      } else {
+        cases.push_back({std::string(row.coupling), row.point});
+      }
+    }
+    const std::vector<LoadCaseOutcome> outcomes = job.calculator.load_cases(cases, job.options);
+    std::size_t k = 0;
+    for (std::size_t i = first; i < last; ++i) {
+      const long number = lines.numbers[i];
+      if (const auto& bad_row = bad_rows[i - first]) {
+        parse_batch_row(lines.text[i], job.columns, job.default_coupling, row);
+        append_failed_row(row.coupling, number, *bad_row, part);
+        continue;
+      }
+      const LoadCaseOutcome& outcome = outcomes[k];
+      const std::string& coupling = cases[k++].coupling;
+      if (outcome.result) {
+        append_result_row(part.output, number, coupling, *outcome.result);
+      } else {
+        append_failed_row(coupling, number,
+                          failure_reason(outcome.error, lines.text[i], job, row), part);
+      }
+    }
   }
 }
 
