@@ -17,11 +17,12 @@ static_assert(kMaxBatchCouplings == gearcoupling_BATCH_MAX_COUPLINGS);
 static_assert(kMaxBatchCaseTextBytes == gearcoupling_BATCH_MAX_CASE_TEXT_BYTES);
 static_assert(gearcoupling_STATUS_OK == kCaseOk);
 
+// A sequence of `count` elements; `zeroed` for elements the caller does not set member by member.
 template <typename Element, typename Sequence>
-void allocate(Sequence& sequence, std::size_t count) {
+void allocate(Sequence& sequence, std::size_t count, bool zeroed) {
   sequence._buffer =
       count == 0 ? nullptr : static_cast<Element*>(dds_alloc(count * sizeof(Element)));
-  if (count > 0) std::memset(sequence._buffer, 0, count * sizeof(Element));
+  if (count > 0 && zeroed) std::memset(sequence._buffer, 0, count * sizeof(Element));
   sequence._length = sequence._maximum = static_cast<std::uint32_t>(count);
   sequence._release = true;
 }
@@ -59,10 +60,15 @@ void refuse_count(const char* field, std::size_t count, std::size_t lo, std::siz
 void case_to_wire(const BatchCaseReply& in, gearcoupling_BatchCaseReply& out,
                   gearcoupling_BatchCalculation calculation) {
   out.status = static_cast<gearcoupling_ReplyStatus>(in.status);
-  out.field = wire_string(echo_text(in.field, kMaxBatchCaseTextBytes));
-  out.message = wire_string(echo_text(in.message, kMaxBatchCaseTextBytes));
+  // A null string is written as "" (Cyclone's dds_stream_write_string) and freed as nothing:
+  // a good case costs no allocation for its empty field and message.
+  out.field = in.field.empty() ? nullptr : wire_string(echo_text(in.field, kMaxBatchCaseTextBytes));
+  out.message =
+      in.message.empty() ? nullptr : wire_string(echo_text(in.message, kMaxBatchCaseTextBytes));
   out.result._d = calculation;
-  if (const auto* value = std::get_if<ContactAndMoments>(&in.value)) {
+  if (std::holds_alternative<std::monostate>(in.value)) {
+    std::memset(&out.result._u, 0, sizeof(out.result._u));
+  } else if (const auto* value = std::get_if<ContactAndMoments>(&in.value)) {
     to_wire_without_teeth(value->contact, out.result._u.load_case.contact);
     to_wire(value->moments, out.result._u.load_case.moments);
   } else if (const auto* moments = std::get_if<InducedMoments>(&in.value)) {
@@ -100,12 +106,12 @@ BatchCaseReply case_from_wire(const gearcoupling_BatchCaseReply& in) {
 
 void to_wire(const BatchRequest& in, gearcoupling_BatchRequest& out) {
   out.calculation = calculation_to_wire(in.calculation);
-  allocate<gearcoupling_CouplingRef>(out.couplings, in.couplings.size());
+  allocate<gearcoupling_CouplingRef>(out.couplings, in.couplings.size(), true);
   for (std::size_t i = 0; i < in.couplings.size(); ++i) {
     to_wire(in.couplings[i], out.couplings._buffer[i]);
   }
   to_wire(in.options, out.options);
-  allocate<gearcoupling_BatchCase>(out.cases, in.cases.size());
+  allocate<gearcoupling_BatchCase>(out.cases, in.cases.size(), false);
   for (std::size_t i = 0; i < in.cases.size(); ++i) {
     out.cases._buffer[i].coupling = in.cases[i].coupling;
     to_wire(in.cases[i].operating_point, out.cases._buffer[i].operating_point);
@@ -136,7 +142,7 @@ BatchRequest from_wire(const gearcoupling_BatchRequest& in) {
 }
 
 void to_wire(const BatchResult& in, gearcoupling_BatchResult& out) {
-  allocate<gearcoupling_BatchCaseReply>(out.cases, in.cases.size());
+  allocate<gearcoupling_BatchCaseReply>(out.cases, in.cases.size(), false);
   // Every case's union carries the batch's calculation; a failed case's result stays zero.
   const gearcoupling_BatchCalculation calculation = calculation_to_wire(in.calculation);
   for (std::size_t i = 0; i < in.cases.size(); ++i) {
