@@ -86,8 +86,15 @@ std::vector<LoadCaseOutcome> RemoteCalculator::load_cases(const std::vector<Load
     batch.push_back({it->second, cases[i].point});
     positions.push_back(i);
   }
-  std::vector<protocol::BatchCaseReply> replies = client_.call_many(
-      protocol::BatchCalculation::kLoadCase, couplings, options, batch, call_deadline());
+  std::vector<protocol::BatchCaseReply> replies;
+  try {
+    replies = client_.call_many(protocol::BatchCalculation::kLoadCase, couplings, options, batch,
+                                call_deadline());
+  } catch (...) {  // a whole batch failed (Timeout, ...): the error of each of its cases
+    const std::exception_ptr error = std::current_exception();
+    for (std::size_t position : positions) out[position].error = error;
+    return out;
+  }
   for (std::size_t k = 0; k < replies.size(); ++k) {
     auto outcome = client::outcome_of<protocol::ContactAndMoments>(std::move(replies[k]));
     LoadCaseOutcome& o = out[positions[k]];
