@@ -59,6 +59,16 @@ protocol::BatchResult compute_batch(const Catalogue& catalogue,
     }
   }
 
+  // The deadline's predicate reads the clock; asked before every case and every load-sharing
+  // iteration it cost 4 % of a batch. Every 16th question reads it: a default case takes a few
+  // iterations, the costliest allowed iteration about 0.1 ms, so the deadline is seen within
+  // about 2 ms at worst.
+  std::uint32_t questions = 0;
+  const CancelPredicate throttled = [&cancelled, &questions] {
+    return (++questions & 15u) == 0 && cancelled();
+  };
+  const CancelPredicate& stop = cancelled ? throttled : cancelled;
+
   protocol::BatchResult result;
   result.calculation = request.calculation;
   result.cases.resize(request.cases.size());
@@ -66,7 +76,7 @@ protocol::BatchResult compute_batch(const Catalogue& catalogue,
   for (std::size_t i = 0; i < request.cases.size(); ++i) {
     BatchCaseReply& reply = result.cases[i];
     const protocol::BatchCase& c = request.cases[i];
-    if (!stopped && cancelled && cancelled()) stopped = protocol::reply_error_from(deadline_error());
+    if (!stopped && stop && stop()) stopped = protocol::reply_error_from(deadline_error());
     if (stopped) {
       set_error(reply, *stopped);
       continue;
@@ -83,7 +93,7 @@ protocol::BatchResult compute_batch(const Catalogue& catalogue,
       continue;
     }
     try {
-      compute_case(*couplings[c.coupling], request, c.operating_point, cancelled, reply);
+      compute_case(*couplings[c.coupling], request, c.operating_point, stop, reply);
     } catch (const Cancelled&) {
       stopped = protocol::reply_error_from(deadline_error());
       set_error(reply, *stopped);

@@ -15,7 +15,8 @@ namespace gc::service {
 /// The answer to every case of `request`, in order. Each coupling is resolved once (an unknown
 /// name or an invalid inline definition is the error of every case naming it); a case whose
 /// coupling index is out of range is refused in place (field "coupling"). Once `cancelled`
-/// says so (the service's deadline), the case being computed and every later one get
+/// says so (the service's deadline; asked every 16th time the core or the loop would ask), the
+/// case being computed and every later one get
 /// `deadline_error()`'s error; the cases computed before keep their results.
 protocol::BatchResult compute_batch(const Catalogue& catalogue,
                                     const protocol::BatchRequest& request,
