@@ -57,24 +57,17 @@ void refuse_count(const char* field, std::size_t count, std::size_t lo, std::siz
                                         count, lo, hi, limit));
 }
 
-// A bounded string of the IDL (char[N + 1]): `text` cut to N bytes (echo_text) and terminated.
-template <std::size_t kSize>
-void copy_text(const std::string& text, char (&out)[kSize]) {
-  static_assert(kSize == kMaxBatchCaseTextBytes + 1);
-  if (text.empty()) {
-    out[0] = '\0';
-    return;
-  }
-  const std::string cut = echo_text(text, kMaxBatchCaseTextBytes);
-  std::memcpy(out, cut.data(), cut.size());
-  out[cut.size()] = '\0';
-}
-
 void case_to_wire(const BatchCaseReply& in, gearcoupling_BatchCaseReply& out,
                   gearcoupling_BatchCalculation calculation) {
   out.status = static_cast<gearcoupling_ReplyStatus>(in.status);
-  copy_text(in.field, out.field);
-  copy_text(in.message, out.message);
+  // A null string is written as "" (Cyclone's dds_stream_write_string) and freed as nothing:
+  // a good case costs no allocation for its empty field and message. (Bounded strings,
+  // string<256>, cost the receiver no allocation either, but made the sample 520 bytes larger
+  // per case, and the service, which maps each reply of over 128 kB afresh (service/main.cc),
+  // more in page faults than the client saved: 1.92 against 1.80 s of CPU per 200,000 cases.)
+  out.field = in.field.empty() ? nullptr : wire_string(echo_text(in.field, kMaxBatchCaseTextBytes));
+  out.message =
+      in.message.empty() ? nullptr : wire_string(echo_text(in.message, kMaxBatchCaseTextBytes));
   out.result._d = calculation;
   if (std::holds_alternative<std::monostate>(in.value)) {
     std::memset(&out.result._u, 0, sizeof(out.result._u));
@@ -93,8 +86,8 @@ void case_to_wire(const BatchCaseReply& in, gearcoupling_BatchCaseReply& out,
 BatchCaseReply case_from_wire(const gearcoupling_BatchCaseReply& in) {
   BatchCaseReply out;
   out.status = static_cast<CaseStatus>(in.status);
-  out.field = in.field;
-  out.message = in.message;
+  out.field = in.field != nullptr ? in.field : "";
+  out.message = in.message != nullptr ? in.message : "";
   if (out.status != kCaseOk) return out;
   switch (in.result._d) {
     case gearcoupling_BATCH_LOAD_CASE:
