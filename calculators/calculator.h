@@ -54,9 +54,9 @@ class Calculator {
   virtual LoadCase load_case(std::string_view coupling, const OperatingPoint& point,
                              const ContactOptions& options) const = 0;
   /// load_case() for every case, in order, each case's error in place (never thrown). Every
-  /// result's contact carries all members but the teeth, left empty (the batch CSV's row needs
-  /// none, and over DDS a batch does not carry them: docs/protocol.md, "Batches"). In process:
-  /// one case after another on the calling thread; RemoteCalculator: in batches.
+  /// result's contact carries at least protocol::ContactSummary's members (what a batch CSV row
+  /// reads; over DDS a batch carries no more: docs/protocol.md, "Batches"), and no teeth. In
+  /// process: one case after another on the calling thread; RemoteCalculator: in batches.
   virtual std::vector<LoadCaseOutcome> load_cases(const std::vector<LoadCaseInput>& cases,
                                                   const ContactOptions& options) const;
   /// Eqs 23-35.

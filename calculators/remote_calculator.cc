@@ -101,7 +101,7 @@ std::vector<LoadCaseOutcome> RemoteCalculator::load_cases(const std::vector<Load
     if (outcome.error) {
       o.error = outcome.error;
     } else {
-      o.result = LoadCase{std::move(outcome.result->contact), outcome.result->moments};
+      o.result = LoadCase{protocol::contact_of(outcome.result->contact), outcome.result->moments};
     }
   }
   return out;

@@ -12,6 +12,7 @@
 #include "core/induced_moments.h"
 #include "core/operating_point.h"
 #include "core/restoring_torque.h"
+#include "core/stress.h"
 #include "core/tooth_contact.h"
 #include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"
@@ -30,16 +31,47 @@ inline constexpr std::size_t kMaxBatchCaseTextBytes = 256;
 
 /// What each case of a batch computes (the IDL's BatchCalculation).
 enum class BatchCalculation {
-  kLoadCase,         ///< tooth contact without its teeth, and the induced moments (eqs 5-48)
+  kLoadCase,         ///< the tooth contact's summary and the induced moments (eqs 5-48)
   kInducedMoments,   ///< eqs 36-48
   kJamAngle,         ///< eqs 23-35: reads only the coupling
   kRestoringTorque,  ///< eqs 49-53: reads only the coupling
 };
 
-/// Tooth contact and the moments computed from it: one row of `gearcoupling batch`. Over the
-/// wire `contact.teeth` is empty; every other member is the single request's, bit for bit.
-struct ContactAndMoments {
+/// What one row of `gearcoupling batch` takes of a tooth contact (eqs 5-22), member for member
+/// ToothContact's of the same names: the load sharing, the teeth in contact, the most loaded
+/// tooth and its stress. A batch carries this rather than the whole contact: a third of the
+/// members, and so about a third of the serialising and checking per case at either end.
+struct ContactSummary {
+  LoadSharing load_sharing;
+  int teeth_in_contact = 0;
+  int max_load_tooth = 0;
+  double max_tooth_load_n = 0.0;
+  bool edge_loaded = false;
+  ToothStress max_stress;
+};
+
+inline ContactSummary summary_of(const ToothContact& contact) {
+  return {contact.load_sharing,     contact.teeth_in_contact, contact.max_load_tooth,
+          contact.max_tooth_load_n, contact.edge_loaded,      contact.max_stress};
+}
+
+/// A ToothContact with the summary's members, the others zero and no teeth: what a batch CSV
+/// row or a CaseTable of load cases reads.
+inline ToothContact contact_of(const ContactSummary& summary) {
   ToothContact contact;
+  contact.load_sharing = summary.load_sharing;
+  contact.teeth_in_contact = summary.teeth_in_contact;
+  contact.max_load_tooth = summary.max_load_tooth;
+  contact.max_tooth_load_n = summary.max_tooth_load_n;
+  contact.edge_loaded = summary.edge_loaded;
+  contact.max_stress = summary.max_stress;
+  return contact;
+}
+
+/// Tooth contact and the moments computed from it: one row of `gearcoupling batch`, each member
+/// the single requests' (ToothContactRequest, InducedMomentsRequest) bit for bit.
+struct ContactAndMoments {
+  ContactSummary contact;
   InducedMoments moments;
 };
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/model_error.h"
+#include "protocol/field_copy.h"
 #include "protocol/reply_status.h"
 #include "protocol/wire_inputs.h"
 #include "protocol/wire_requests.h"
@@ -57,6 +58,23 @@ void refuse_count(const char* field, std::size_t count, std::size_t lo, std::siz
                                         count, lo, hi, limit));
 }
 
+// A load case's contact, one field list for both directions (as wire_results.cc).
+template <typename Core, typename Wire, typename Copy>
+void contact_fields(Core& core, Wire& wire, Copy copy) {
+  copy(core.load_sharing.q, wire.load_sharing.q);
+  copy(core.load_sharing.ze_over_zo, wire.load_sharing.ze_over_zo);
+  copy(core.load_sharing.iterations, wire.load_sharing.iterations);
+  copy(core.teeth_in_contact, wire.teeth_in_contact);
+  copy(core.max_load_tooth, wire.max_load_tooth);
+  copy(core.max_tooth_load_n, wire.max_tooth_load_n);
+  copy(core.edge_loaded, wire.edge_loaded);
+  copy(core.max_stress.contact_stress_pa, wire.max_stress.contact_stress_pa);
+  copy(core.max_stress.contact_half_width_m, wire.max_stress.contact_half_width_m);
+  copy(core.max_stress.bending_stress_pa, wire.max_stress.bending_stress_pa);
+  copy(core.max_stress.contact_safety_factor, wire.max_stress.contact_safety_factor);
+  copy(core.max_stress.bending_safety_factor, wire.max_stress.bending_safety_factor);
+}
+
 void case_to_wire(const BatchCaseReply& in, gearcoupling_BatchCaseReply& out,
                   gearcoupling_BatchCalculation calculation) {
   out.status = static_cast<gearcoupling_ReplyStatus>(in.status);
@@ -72,7 +90,7 @@ void case_to_wire(const BatchCaseReply& in, gearcoupling_BatchCaseReply& out,
   if (std::holds_alternative<std::monostate>(in.value)) {
     std::memset(&out.result._u, 0, sizeof(out.result._u));
   } else if (const auto* value = std::get_if<ContactAndMoments>(&in.value)) {
-    to_wire_without_teeth(value->contact, out.result._u.load_case.contact);
+    contact_fields(value->contact, out.result._u.load_case.contact, kToWire);
     to_wire(value->moments, out.result._u.load_case.moments);
   } else if (const auto* moments = std::get_if<InducedMoments>(&in.value)) {
     to_wire(*moments, out.result._u.induced_moments);
@@ -91,8 +109,9 @@ BatchCaseReply case_from_wire(const gearcoupling_BatchCaseReply& in) {
   if (out.status != kCaseOk) return out;
   switch (in.result._d) {
     case gearcoupling_BATCH_LOAD_CASE:
-      out.value = ContactAndMoments{from_wire(in.result._u.load_case.contact),
-                                    from_wire(in.result._u.load_case.moments)};
+      out.value = ContactAndMoments{{}, from_wire(in.result._u.load_case.moments)};
+      contact_fields(std::get<ContactAndMoments>(out.value).contact, in.result._u.load_case.contact,
+                     kFromWire);
       break;
     case gearcoupling_BATCH_INDUCED_MOMENTS:
       out.value = from_wire(in.result._u.induced_moments);

@@ -72,11 +72,6 @@ void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out) {
   for (std::uint32_t j = 0; j < teeth; ++j) tooth_fields(in.teeth[j], out.teeth._buffer[j], kToWire);
 }
 
-void to_wire_without_teeth(const ToothContact& in, gearcoupling_ToothContactResult& out) {
-  tooth_contact_scalars(in, out, kToWire);
-  out.teeth = {};
-}
-
 ToothContact from_wire(const gearcoupling_ToothContactResult& in) {
   ToothContact out;
   tooth_contact_scalars(out, in, kFromWire);

@@ -15,8 +15,6 @@ namespace gc::protocol {
 
 void to_wire(const ToothContact& in, gearcoupling_ToothContactResult& out);
 ToothContact from_wire(const gearcoupling_ToothContactResult& in);
-/// Every member but the teeth (left empty): a batch's load case (protocol/batch.h).
-void to_wire_without_teeth(const ToothContact& in, gearcoupling_ToothContactResult& out);
 
 void to_wire(const protocol::JamAngleResult& in, gearcoupling_JamAngleResult& out);
 protocol::JamAngleResult from_wire(const gearcoupling_JamAngleResult& in);

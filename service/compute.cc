@@ -43,11 +43,8 @@ protocol::ContactAndMoments compute_load_case(const CouplingGeometry& coupling,
                                               const OperatingPoint& point,
                                               const ContactOptions& options,
                                               const CancelPredicate& cancelled) {
-  protocol::ContactAndMoments out{tooth_contact(coupling, point, cancellable(options, cancelled)),
-                                  {}};
-  out.moments = induced_moments(coupling, point, out.contact);
-  out.contact.teeth = {};  // not on the wire (protocol/batch.h); freed here, not after the batch
-  return out;
+  const ToothContact contact = tooth_contact(coupling, point, cancellable(options, cancelled));
+  return {protocol::summary_of(contact), induced_moments(coupling, point, contact)};
 }
 
 }  // namespace gc::service

@@ -243,7 +243,7 @@ CaseTableObject induced_moments_many(const Client& self, const CouplingArgument&
         if (outcome.error) {
           arrays.fail(start + k, outcome.error);
         } else {
-          arrays.set(start + k, analysis::LoadCase{std::move(outcome.result->contact),
+          arrays.set(start + k, analysis::LoadCase{protocol::contact_of(outcome.result->contact),
                                                    outcome.result->moments});
         }
       }
