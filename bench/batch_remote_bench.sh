@@ -4,7 +4,7 @@
 # upwind coupling, as bench/batch_throughput.sh makes them) through
 #   gearcoupling batch -j JOBS                       (in process, every core)
 #   gearcoupling batch --remote -j REMOTE_JOBS       (gearcoupling-service on this host, loopback,
-#                                                     1024 cases per request)
+#                                                     512 cases per request)
 # alternately, ROUNDS rounds; wall time of each, cases/s, the ratio remote/in-process per round and
 # of the medians, and whether the two outputs are byte for byte the same.
 #

@@ -69,9 +69,13 @@ struct ChunkPart {
 };
 
 // Rows a thread hands to the calculator at once (Calculator::load_cases): over DDS, a batch of
-// this many cases per request (protocol::kMaxBatchCases allows 4096; 1024 lets the threads'
-// parsing and printing overlap the service's computing). In process the size does not matter.
-constexpr std::size_t kCasesPerCall = 1024;
+// this many cases per request (protocol::kMaxBatchCases allows 4096). 512 cost the least CPU of
+// 256, 512 and 1024 (client and service together, 200,000 cases: 1.55, 1.55-1.6 and 1.63 s):
+// a batch's replies of 1024 cases passed 128 kB, which the service maps afresh every time
+// (service/main.cc), and at 256 the client paid more per request. Small batches also let the
+// threads' parsing and printing overlap the service's computing. In process the size does not
+// matter.
+constexpr std::size_t kCasesPerCall = 512;
 
 void append_failed_row(std::string_view coupling, long number, const std::string& reason,
                        ChunkPart& part) {

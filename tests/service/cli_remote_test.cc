@@ -94,7 +94,7 @@ TEST(RemoteCli, BatchWithRequestsInFlightPrintsWhatItPrintsInProcess) {
   EXPECT_GT(local.out.size(), 400u * 50u);
 }
 
-// Issue 40: batch --remote sends its rows as batches of cases (1024 a request), not a request per
+// Issue 40: batch --remote sends its rows as batches of cases (512 a request), not a request per
 // row, and prints byte for byte what batch prints in process (tolerance: none; the same core
 // calls), bad rows included: one that does not parse, a negative torque, a misalignment beyond
 // the jam angle; over two catalogue couplings and a coupling file (sent inline).
@@ -122,7 +122,8 @@ TEST(RemoteCli, BatchSendsRowsInBatchesAndPrintsWhatItPrintsInProcess) {
   EXPECT_EQ(over_dds.err, local.err);
   EXPECT_NE(local.err.find("3 of 5003 rows failed"), std::string::npos) << local.err;
 
-  // The service saw a few batches (5003 rows in chunks of 1024 per thread) and no single request.
+  // The service saw a few batches (5003 rows: 2502 and 2501 per thread, 5 batches of at most 512
+  // each) and no single request.
   client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(10)});
   ASSERT_TRUE(client.wait_for_service(protocol::Calculation::kBatch, std::chrono::seconds(10)));
   std::uint64_t batches = 0;
@@ -137,8 +138,7 @@ TEST(RemoteCli, BatchSendsRowsInBatchesAndPrintsWhatItPrintsInProcess) {
         return batches > 0;
       },
       std::chrono::steady_clock::now() + std::chrono::seconds(5)));
-  EXPECT_GE(batches, 5u);
-  EXPECT_LE(batches, 8u);
+  EXPECT_EQ(batches, 10u);
 }
 
 // Issue 24: `moments --remote --timeout-s 2` with no service took 4.0 s: its two requests each
