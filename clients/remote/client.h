@@ -18,6 +18,11 @@
 //         std::printf("jam angle %g rad\n", outcome.result->jam.angle_rad);
 //       });
 //   gc::InducedMoments moments = future.get();   // or throws the error
+//   std::vector<gc::protocol::BatchCaseReply> many = client.call_many(   // one request, 2 cases
+//       gc::protocol::BatchCalculation::kInducedMoments, {gc::protocol::CatalogueName{"nrel_upwind"}},
+//       {}, {{0, {1.5e6, 0.005, 0.0, 0.1}}, {0, {-5.0, 0.005, 0.0, 0.1}}});
+//   gc::client::Outcome<gc::InducedMoments> second =   // its error: InvalidInput, torque_nm
+//       gc::client::outcome_of<gc::InducedMoments>(many[1]);
 //
 // Discovery is handled: instances are found through the status topic, and no request is
 // written to an instance before this client's request writer has matched the instance's
