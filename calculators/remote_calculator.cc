@@ -56,6 +56,57 @@ LoadCase RemoteCalculator::load_case(std::string_view coupling, const OperatingP
   return {contact.get(), moments.get()};
 }
 
+std::vector<LoadCaseOutcome> RemoteCalculator::load_cases(const std::vector<LoadCaseInput>& cases,
+                                                          const ContactOptions& options) const {
+  std::vector<LoadCaseOutcome> out(cases.size());
+  // Each distinct reference once: a coupling of the batch, or the error of every case naming it
+  // (a file that does not read).
+  std::map<std::string_view, std::uint32_t> index;
+  std::vector<protocol::CouplingRef> couplings;
+  std::vector<std::exception_ptr> reference_errors;
+  std::vector<protocol::BatchCase> batch;
+  std::vector<std::size_t> positions;
+  batch.reserve(cases.size());
+  positions.reserve(cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    auto [it, added] = index.emplace(cases[i].coupling, static_cast<std::uint32_t>(couplings.size()));
+    if (added) {
+      reference_errors.emplace_back();
+      try {
+        couplings.push_back(reference(cases[i].coupling));
+      } catch (...) {
+        couplings.push_back(protocol::CatalogueName{});
+        reference_errors.back() = std::current_exception();
+      }
+    }
+    if (reference_errors[it->second]) {
+      out[i].error = reference_errors[it->second];
+      continue;
+    }
+    batch.push_back({it->second, cases[i].point});
+    positions.push_back(i);
+  }
+  std::vector<protocol::BatchCaseReply> replies;
+  try {
+    replies = client_.call_many(protocol::BatchCalculation::kLoadCase, couplings, options, batch,
+                                call_deadline());
+  } catch (...) {  // a whole batch failed (Timeout, ...): the error of each of its cases
+    const std::exception_ptr error = std::current_exception();
+    for (std::size_t position : positions) out[position].error = error;
+    return out;
+  }
+  for (std::size_t k = 0; k < replies.size(); ++k) {
+    auto outcome = client::outcome_of<protocol::ContactAndMoments>(std::move(replies[k]));
+    LoadCaseOutcome& o = out[positions[k]];
+    if (outcome.error) {
+      o.error = outcome.error;
+    } else {
+      o.result = LoadCase{protocol::contact_of(outcome.result->contact), outcome.result->moments};
+    }
+  }
+  return out;
+}
+
 JamAngleReport RemoteCalculator::jam_angle(std::string_view coupling) const {
   const protocol::JamAngleResult result =
       client_.call<Calculation::kJamAngle>({reference(coupling)}, call_deadline());

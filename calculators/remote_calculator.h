@@ -35,6 +35,9 @@ class RemoteCalculator final : public Calculator {
                              const ContactOptions& options) const override;
   LoadCase load_case(std::string_view coupling, const OperatingPoint& point,
                      const ContactOptions& options) const override;
+  /// Batches of up to protocol::kMaxBatchCases cases (Client::call_many), one deadline for all.
+  std::vector<LoadCaseOutcome> load_cases(const std::vector<LoadCaseInput>& cases,
+                                          const ContactOptions& options) const override;
   JamAngleReport jam_angle(std::string_view coupling) const override;
   RestoringTorque restoring_torque(std::string_view coupling) const override;
   FrictionEstimate estimate_friction(std::string_view coupling,

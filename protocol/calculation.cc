@@ -9,6 +9,7 @@ std::string_view to_string(Calculation calculation) {
     case Calculation::kInducedMoments: return "induced_moments";
     case Calculation::kRestoringTorque: return "restoring_torque";
     case Calculation::kFrictionEstimate: return "friction_estimate";
+    case Calculation::kBatch: return "batch";
   }
   return "unknown";
 }

@@ -13,17 +13,22 @@ enum class Calculation {
   kInducedMoments,
   kRestoringTorque,
   kFrictionEstimate,
+  kBatch,  ///< many cases of one of the others in one request (protocol/batch.h, issue 40)
 };
 
-inline constexpr std::array<Calculation, 5> kAllCalculations = {
-    Calculation::kToothContact, Calculation::kJamAngle, Calculation::kInducedMoments,
-    Calculation::kRestoringTorque, Calculation::kFrictionEstimate};
+/// How many calculations (request/reply topic pairs) there are.
+inline constexpr std::size_t kCalculationCount = 6;
 
-/// "tooth_contact", "jam_angle", "induced_moments", "restoring_torque", "friction_estimate":
+inline constexpr std::array<Calculation, kCalculationCount> kAllCalculations = {
+    Calculation::kToothContact,    Calculation::kJamAngle,         Calculation::kInducedMoments,
+    Calculation::kRestoringTorque, Calculation::kFrictionEstimate, Calculation::kBatch};
+
+/// "tooth_contact", "jam_angle", "induced_moments", "restoring_torque", "friction_estimate",
+/// "batch":
 /// the middle part of the topic names and the name in the status topic and the logs.
 std::string_view to_string(Calculation calculation);
 
-/// Index 0..4 of `calculation` in kAllCalculations.
+/// Index 0..5 of `calculation` in kAllCalculations.
 constexpr std::size_t index_of(Calculation calculation) {
   return static_cast<std::size_t>(calculation);
 }

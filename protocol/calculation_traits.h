@@ -38,10 +38,11 @@ GC_PROTOCOL_CALCULATION_TRAITS(kJamAngle, JamAngle)
 GC_PROTOCOL_CALCULATION_TRAITS(kInducedMoments, InducedMoments)
 GC_PROTOCOL_CALCULATION_TRAITS(kRestoringTorque, RestoringTorque)
 GC_PROTOCOL_CALCULATION_TRAITS(kFrictionEstimate, FrictionEstimate)
+GC_PROTOCOL_CALCULATION_TRAITS(kBatch, Batch)
 
 #undef GC_PROTOCOL_CALCULATION_TRAITS
 
-/// Calls f(std::integral_constant<Calculation, c>{}) for each of the five calculations.
+/// Calls f(std::integral_constant<Calculation, c>{}) for each of the six calculations.
 template <typename Function>
 void for_each_calculation(Function&& f) {
   f(std::integral_constant<Calculation, Calculation::kToothContact>{});
@@ -49,6 +50,7 @@ void for_each_calculation(Function&& f) {
   f(std::integral_constant<Calculation, Calculation::kInducedMoments>{});
   f(std::integral_constant<Calculation, Calculation::kRestoringTorque>{});
   f(std::integral_constant<Calculation, Calculation::kFrictionEstimate>{});
+  f(std::integral_constant<Calculation, Calculation::kBatch>{});
 }
 
 }  // namespace gc::protocol

@@ -6,6 +6,7 @@
 #include "core/induced_moments.h"
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
+#include "protocol/batch.h"
 #include "protocol/calculation.h"
 #include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"
@@ -39,6 +40,11 @@ template <>
 struct CalculationTypes<Calculation::kFrictionEstimate> {
   using Request = FrictionEstimateRequest;
   using Result = gc::FrictionEstimate;
+};
+template <>
+struct CalculationTypes<Calculation::kBatch> {
+  using Request = BatchRequest;
+  using Result = BatchResult;
 };
 
 }  // namespace gc::protocol

@@ -16,7 +16,11 @@ Qos request_reply_qos(double max_blocking_s) {
 }
 
 std::int32_t reply_history_depth(Calculation calculation) {
-  return calculation == Calculation::kToothContact ? 64 : 512;
+  switch (calculation) {
+    case Calculation::kToothContact: return 64;
+    case Calculation::kBatch: return kBatchReplyHistoryDepth;
+    default: return 512;
+  }
 }
 
 Qos tagged_reply_writer_qos(const std::string& tag, Calculation calculation, double max_blocking_s) {

@@ -21,8 +21,14 @@ Qos request_reply_qos(double max_blocking_s = 10.0);
 /// a client keeping the 256 requests in flight of docs/protocol.md rule 9 can have resent any
 /// small reply it missed; for tooth contact, shallow enough that a reader that never acknowledges
 /// holds at most 64 replies of the service's memory (370 kB with the bundled couplings, 36 MB at
-/// the largest).
+/// the largest). Batches: kBatchReplyHistoryDepth.
 std::int32_t reply_history_depth(Calculation calculation);
+
+/// A batch's reply carries up to 4096 cases (0.5 MB of load cases, at most about 2 MB of
+/// errors): 16 of them are at most 35 MB, as 64 of the largest tooth contacts. A client keeps at
+/// most this many batches in flight (docs/protocol.md, "Batches"), so a batch reply it missed is
+/// still resent.
+inline constexpr std::int32_t kBatchReplyHistoryDepth = 16;
 
 /// Reply writers: RELIABLE, KEEP_LAST reply_history_depth(calculation), VOLATILE, max blocking
 /// `max_blocking_s`, with USER_DATA = `tag`: the service tags its reply writers with its instance

@@ -9,8 +9,8 @@
 namespace gc::protocol {
 namespace {
 
-std::array<Entity, 5> make_topics(dds_entity_t participant, bool replies) {
-  std::array<Entity, 5> topics;
+std::array<Entity, gc::protocol::kCalculationCount> make_topics(dds_entity_t participant, bool replies) {
+  std::array<Entity, gc::protocol::kCalculationCount> topics;
   const Qos qos = request_reply_qos();
   for_each_calculation([&](auto calculation) {
     using T = CalculationTraits<decltype(calculation)::value>;
@@ -24,11 +24,11 @@ std::array<Entity, 5> make_topics(dds_entity_t participant, bool replies) {
 
 }  // namespace
 
-std::array<Entity, 5> make_request_topics(dds_entity_t participant) {
+std::array<Entity, gc::protocol::kCalculationCount> make_request_topics(dds_entity_t participant) {
   return make_topics(participant, false);
 }
 
-std::array<Entity, 5> make_reply_topics(dds_entity_t participant) {
+std::array<Entity, gc::protocol::kCalculationCount> make_reply_topics(dds_entity_t participant) {
   return make_topics(participant, true);
 }
 
@@ -39,8 +39,8 @@ Entity make_status_topic(dds_entity_t participant) {
                           "dds_create_topic(status)"));
 }
 
-std::array<dds_entity_t, 5> handles(const std::array<Entity, 5>& entities) {
-  std::array<dds_entity_t, 5> out{};
+std::array<dds_entity_t, gc::protocol::kCalculationCount> handles(const std::array<Entity, gc::protocol::kCalculationCount>& entities) {
+  std::array<dds_entity_t, gc::protocol::kCalculationCount> out{};
   for (std::size_t i = 0; i < entities.size(); ++i) out[i] = entities[i].get();
   return out;
 }

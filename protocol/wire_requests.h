@@ -3,6 +3,7 @@
 #pragma once
 
 #include "gearcoupling.h"
+#include "protocol/batch.h"
 #include "protocol/requests.h"
 
 namespace gc::protocol {
@@ -18,5 +19,14 @@ JamAngleRequest from_wire(const gearcoupling_JamAngleRequest& in);
 InducedMomentsRequest from_wire(const gearcoupling_InducedMomentsRequest& in);
 RestoringTorqueRequest from_wire(const gearcoupling_RestoringTorqueRequest& in);
 FrictionEstimateRequest from_wire(const gearcoupling_FrictionEstimateRequest& in);
+
+/// A batch (wire_batch.cc). from_wire refuses the whole batch, before converting any case, with
+/// InvalidInput("cases") above kMaxBatchCases, InvalidInput("couplings") with none or above
+/// kMaxBatchCouplings, InvalidInput("calculation") for a value outside BatchCalculation, and
+/// InvalidInput("couplings[i]") for a coupling reference the single requests' from_wire refuses
+/// (a name over kMaxNameBytes, an unknown CouplingSource). A case naming a coupling index out
+/// of range is answered in place by the service, not refused here.
+void to_wire(const BatchRequest& in, gearcoupling_BatchRequest& out);
+BatchRequest from_wire(const gearcoupling_BatchRequest& in);
 
 }  // namespace gc::protocol

@@ -8,6 +8,7 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
+#include "protocol/batch.h"
 #include "protocol/jam_angle_result.h"
 
 namespace gc::protocol {
@@ -26,5 +27,10 @@ RestoringTorque from_wire(const gearcoupling_RestoringTorqueResult& in);
 
 void to_wire(const FrictionEstimate& in, gearcoupling_FrictionEstimateResult& out);
 FrictionEstimate from_wire(const gearcoupling_FrictionEstimateResult& in);
+
+/// A batch's answers (wire_batch.cc). to_wire cuts each case's field and message to
+/// kMaxBatchCaseTextBytes.
+void to_wire(const BatchResult& in, gearcoupling_BatchResult& out);
+BatchResult from_wire(const gearcoupling_BatchResult& in);
 
 }  // namespace gc::protocol

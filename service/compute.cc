@@ -39,4 +39,12 @@ FrictionEstimate compute(const CouplingGeometry& coupling,
   return estimate_friction(coupling, request.measurement);
 }
 
+protocol::ContactAndMoments compute_load_case(const CouplingGeometry& coupling,
+                                              const OperatingPoint& point,
+                                              const ContactOptions& options,
+                                              const CancelPredicate& cancelled) {
+  const ToothContact contact = tooth_contact(coupling, point, cancellable(options, cancelled));
+  return {protocol::summary_of(contact), induced_moments(coupling, point, contact)};
+}
+
 }  // namespace gc::service

@@ -5,9 +5,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "core/coupling_geometry.h"
+#include "protocol/batch.h"
 #include "protocol/jam_angle_result.h"
+#include "service/catalogue.h"
 #include "protocol/requests.h"
 #include "core/friction_estimate.h"
 #include "core/induced_moments.h"
@@ -34,5 +37,20 @@ RestoringTorque compute(const CouplingGeometry& coupling,
 FrictionEstimate compute(const CouplingGeometry& coupling,
                          const protocol::FrictionEstimateRequest& request,
                          const CancelPredicate& cancelled);
+/// Tooth contact and the moments from it (eqs 5-48), as the in-process `gearcoupling batch`
+/// computes a row: a batch's load case.
+protocol::ContactAndMoments compute_load_case(const CouplingGeometry& coupling,
+                                              const OperatingPoint& point,
+                                              const ContactOptions& options,
+                                              const CancelPredicate& cancelled);
+
+/// A single request: its coupling resolved by `catalogue` (throws as Catalogue::resolve does),
+/// then compute().
+template <typename Request>
+auto compute_request(const Catalogue& catalogue, const Request& request,
+                     const CancelPredicate& cancelled) {
+  std::optional<CouplingGeometry> storage;
+  return compute(catalogue.resolve(request.coupling, storage), request, cancelled);
+}
 
 }  // namespace gc::service

@@ -40,4 +40,6 @@ bool cheap_to_answer(const protocol::FrictionEstimateRequest& request,
   return teeth_of(request.coupling, catalogue) <= kInlineTeethBound;
 }
 
+bool cheap_to_answer(const protocol::BatchRequest&, const Catalogue&) { return false; }
+
 }  // namespace gc::service

@@ -11,6 +11,7 @@
 
 #include "core/load_sharing.h"
 #include "core/tooth_contact.h"
+#include "protocol/batch.h"
 #include "protocol/requests.h"
 #include "service/catalogue.h"
 
@@ -38,5 +39,8 @@ bool cheap_to_answer(const protocol::InducedMomentsRequest& request, const Catal
 bool cheap_to_answer(const protocol::JamAngleRequest& request, const Catalogue& catalogue);
 bool cheap_to_answer(const protocol::RestoringTorqueRequest& request, const Catalogue& catalogue);
 bool cheap_to_answer(const protocol::FrictionEstimateRequest& request, const Catalogue& catalogue);
+/// Never: a batch is up to thousands of requests' work, which would hold up every other
+/// client's requests in the receive thread. Batches go to the workers.
+bool cheap_to_answer(const protocol::BatchRequest& request, const Catalogue& catalogue);
 
 }  // namespace gc::service

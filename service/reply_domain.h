@@ -19,6 +19,7 @@
 
 #include <dds/dds.h>
 
+#include "protocol/calculation.h"
 #include "protocol/dds_config.h"
 #include "protocol/dds_entity.h"
 
@@ -46,7 +47,7 @@ class ReplyDomain {
   // Declared first, deleted last: deleting it deletes everything below as well.
   protocol::Entity domain_;
   protocol::Entity participant_;
-  std::array<protocol::Entity, 5> reply_topics_;
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> reply_topics_;
 };
 
 }  // namespace gc::service

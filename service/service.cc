@@ -15,6 +15,7 @@
 #include "protocol/wire_inputs.h"
 #include "protocol/wire_requests.h"
 #include "protocol/wire_results.h"
+#include "service/batch.h"
 #include "service/compute.h"
 #include "service/inline_answer.h"
 #include "service/periodic_work.h"
@@ -79,6 +80,24 @@ auto within_deadline(Calculation calculation, double deadline_s, Clock::time_poi
   } catch (const Cancelled&) {
     throw deadline_exceeded(calculation, deadline_s, received, "while computing");
   }
+}
+
+// One line per batch with failed cases, naming the first: a batch of 4096 bad cases must not
+// write 4096 lines.
+void log_failed_cases(const gearcoupling_Correlation& correlation,
+                      const protocol::BatchResult& result) {
+  std::size_t failed = 0;
+  const protocol::BatchCaseReply* first = nullptr;
+  for (const protocol::BatchCaseReply& c : result.cases) {
+    if (c.status == protocol::kCaseOk) continue;
+    if (failed++ == 0) first = &c;
+  }
+  if (failed == 0) return;
+  spdlog::warn("batch client={} seq={}: {} of {} cases failed, the first: {} field=\"{}\": {}",
+               protocol::hex_id(correlation.client_id), correlation.sequence_number, failed,
+               result.cases.size(),
+               protocol::to_string(static_cast<gearcoupling_ReplyStatus>(first->status)),
+               first->field, first->message);
 }
 
 }  // namespace
@@ -214,11 +233,17 @@ void Service::answer(const gearcoupling_Correlation& correlation,
     const typename T::Result result =
         within_deadline(kCalculation, config_.calculation_deadline_s, received,
                         [&](const CancelPredicate& cancelled) {
-                          std::optional<CouplingGeometry> storage;
-                          const CouplingGeometry& coupling =
-                              catalogue_.resolve(request->coupling, storage);
-                          return compute(coupling, *request, cancelled);
+                          if constexpr (kCalculation == Calculation::kBatch) {
+                            return compute_batch(catalogue_, *request, cancelled, [&] {
+                              return std::make_exception_ptr(deadline_exceeded(
+                                  kCalculation, config_.calculation_deadline_s, received,
+                                  "while computing"));
+                            });
+                          } else {
+                            return compute_request(catalogue_, *request, cancelled);
+                          }
                         });
+    if constexpr (kCalculation == Calculation::kBatch) log_failed_cases(correlation, result);
     protocol::to_wire(result, reply.result);
     reply.status = gearcoupling_STATUS_OK;
     reply.field = protocol::wire_string("");

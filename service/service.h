@@ -88,9 +88,9 @@ class Service {
   /// again. Empty when Cyclone made the domain itself (CYCLONEDDS_URI, or its default).
   protocol::Entity domain_;
   protocol::Entity participant_;
-  std::array<protocol::Entity, 5> request_topics_;
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> request_topics_;
   protocol::Entity request_subscriber_;
-  std::array<protocol::Entity, 5> request_readers_;
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> request_readers_;
   protocol::Entity subscriptions_reader_;  ///< DCPSSubscription: clients' reply readers
   protocol::Entity guard_;
   protocol::Entity waitset_;

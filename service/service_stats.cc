@@ -37,14 +37,14 @@ void ServiceStats::record(protocol::Calculation calculation, ReplyOutcome outcom
   c.next = (c.next + 1) % kWindow;
 }
 
-std::array<CalculationSnapshot, 5> ServiceStats::snapshot() const {
+std::array<CalculationSnapshot, gc::protocol::kCalculationCount> ServiceStats::snapshot() const {
   // Copied under the lock, one calculation at a time into room made before, and sorted outside
   // it: record() runs on the round trip's own thread (the request listener), and a sort of
-  // 5 x 4096 service times under this lock, made by the dispatch loop once a second for the
+  // 6 x 4096 service times under this lock, made by the dispatch loop once a second for the
   // status topic, was a wait of up to a millisecond on that thread behind the dispatch loop
   // and, on a busy host, behind whatever preempted it (docs/architecture.md, "No lock of the
   // round trip held by periodic work").
-  std::array<CalculationSnapshot, 5> out;
+  std::array<CalculationSnapshot, gc::protocol::kCalculationCount> out;
   std::vector<double> window;
   window.reserve(kWindow);
   for (std::size_t i = 0; i < calculations_.size(); ++i) {

@@ -39,7 +39,7 @@ class ServiceStats {
   /// One answered request: how, and its service time (taken from the reader to reply
   /// written) [s].
   void record(protocol::Calculation calculation, ReplyOutcome outcome, double service_time_s);
-  std::array<CalculationSnapshot, 5> snapshot() const;
+  std::array<CalculationSnapshot, gc::protocol::kCalculationCount> snapshot() const;
   /// A request refused for a forged client_id (not answered, not in served or failed).
   void record_forged() { forged_ += 1; }
   std::uint64_t forged() const { return forged_; }
@@ -57,7 +57,7 @@ class ServiceStats {
     std::size_t next = 0;
   };
   mutable std::mutex mutex_;
-  std::array<PerCalculation, 5> calculations_;
+  std::array<PerCalculation, gc::protocol::kCalculationCount> calculations_;
   std::atomic<std::uint64_t> forged_{0};
   std::atomic<std::uint64_t> answered_inline_{0};
 };

@@ -201,15 +201,56 @@ CaseTableObject induced_moments_many(const Client& self, const CouplingArgument&
   const CaseInputs in({"torque_nm", "misalignment_rad", "direction_rad", "mu"},
                       {torque_nm, misalignment_rad, direction_rad, mu});
   const ContactOptions options = contact_options(slices, tolerance, max_iterations);
+  if (in_flight < 1 || in_flight > 1000000) {
+    throw InvalidInput("in_flight", static_cast<double>(in_flight), "[1, 1000000]");
+  }
   client::Client& client = *self.client;
-  return run_remote_cases(
-      client, Calculation::kInducedMoments, load_case_columns(), in, in_flight,
-      failed_cases_argument(errors), [&](std::size_t i) {
-        const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
-        auto contact = getter(client.call_async<Calculation::kToothContact>({ref, point, options}));
-        auto moments = getter(client.call_async<Calculation::kInducedMoments>({ref, point, options}));
-        return [contact, moments] { return analysis::LoadCase{contact(), moments()}; };
-      });
+  CaseArrays<analysis::LoadCase> arrays(load_case_columns(), in, failed_cases_argument(errors));
+  const std::size_t count = in.size();
+  {
+    py::gil_scoped_release release;
+    // Load cases in batches (issue 40; Client::call_many: 4096 cases a request at most), up to
+    // `in_flight` cases outstanding. After a Timeout nothing more is sent, as run_remote_cases.
+    std::exception_ptr timeout;
+    if (!client.wait_for_service(Calculation::kBatch, client.options().timeout)) {
+      timeout = std::make_exception_ptr(client::Timeout(protocol::no_instance_message(
+          client.options().domain, client.options().timeout, client.dds_configuration())));
+    }
+    std::vector<protocol::BatchCase> cases;
+    std::size_t start = 0;
+    for (; start < count && !timeout; start += in_flight) {
+      const std::size_t end = std::min(count, start + in_flight);
+      cases.clear();
+      for (std::size_t i = start; i < end; ++i) {
+        cases.push_back({0, {in(0, i), in(1, i), in(2, i), in(3, i)}});
+      }
+      std::vector<protocol::BatchCaseReply> replies;
+      try {
+        replies = client.call_many(protocol::BatchCalculation::kLoadCase, {ref}, options, cases);
+      } catch (...) {  // the whole block failed: a Timeout stops the call, anything else the block
+        const std::exception_ptr error = std::current_exception();
+        try {
+          throw;
+        } catch (const client::Timeout&) {
+          timeout = error;
+        } catch (...) {
+        }
+        for (std::size_t i = start; i < end; ++i) arrays.fail(i, error);
+        continue;
+      }
+      for (std::size_t k = 0; k < replies.size(); ++k) {
+        auto outcome = client::outcome_of<protocol::ContactAndMoments>(std::move(replies[k]));
+        if (outcome.error) {
+          arrays.fail(start + k, outcome.error);
+        } else {
+          arrays.set(start + k, analysis::LoadCase{protocol::contact_of(outcome.result->contact),
+                                                   outcome.result->moments});
+        }
+      }
+    }
+    for (; start < count; ++start) arrays.fail(start, timeout);
+  }
+  return arrays.finish();
 }
 
 CaseTableObject estimate_friction_many(const Client& self, const CouplingArgument& coupling,
@@ -254,6 +295,8 @@ py::dict counters(const Client& self) {
 
 void bind_client(py::module_& m) {
   constexpr std::size_t kInFlight = 256;
+  // induced_moments_many's cases go in batches (at most 16 of this client's in flight).
+  constexpr std::size_t kCasesInFlight = 16384;
   py::class_<Client>(m, "Client",
                      "The calculations through gearcoupling-service over DDS (the network from "
                      "$CYCLONEDDS_URI). Same calls and results as in process; thread-safe.")
@@ -279,9 +322,10 @@ void bind_client(py::module_& m) {
            "gearcoupling.tooth_contact_many on the service, in_flight cases outstanding at once.")
       .def("induced_moments_many", &induced_moments_many, py::arg("coupling"), py::arg("torque_nm"),
            py::arg("misalignment_rad"), py::arg("direction_rad") = 0.0, py::kw_only(), py::arg("mu"),
-           GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("in_flight") = kInFlight, py::arg("errors") = "raise",
-           "gearcoupling.induced_moments_many on the service, in_flight cases (two requests each) "
-           "outstanding at once.")
+           GC_PYTHON_CONTACT_OPTION_ARGS, py::arg("in_flight") = kCasesInFlight,
+           py::arg("errors") = "raise",
+           "gearcoupling.induced_moments_many on the service: in_flight cases outstanding at once, "
+           "in batches of up to 4096 cases a request.")
       .def("estimate_friction_many", &estimate_friction_many, py::arg("coupling"), py::arg("torque_nm"),
            py::arg("misalignment_rad"), py::arg("direction_rad"), py::arg("sensor_moment_y_nm"),
            py::arg("sensor_moment_z_nm"), py::kw_only(), py::arg("in_flight") = kInFlight,

@@ -18,6 +18,11 @@
 //         std::printf("jam angle %g rad\n", outcome.result->jam.angle_rad);
 //       });
 //   gc::InducedMoments moments = future.get();   // or throws the error
+//   std::vector<gc::protocol::BatchCaseReply> many = client.call_many(   // one request, 2 cases
+//       gc::protocol::BatchCalculation::kInducedMoments, {gc::protocol::CatalogueName{"nrel_upwind"}},
+//       {}, {{0, {1.5e6, 0.005, 0.0, 0.1}}, {0, {-5.0, 0.005, 0.0, 0.1}}});
+//   gc::client::Outcome<gc::InducedMoments> second =   // its error: InvalidInput, torque_nm
+//       gc::client::outcome_of<gc::InducedMoments>(many[1]);
 //
 // Discovery is handled: instances are found through the status topic, and no request is
 // written to an instance before this client's request writer has matched the instance's
@@ -43,6 +48,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "clients/remote/client_error.h"
@@ -127,6 +133,27 @@ class Client {
     return await(call_async<kCalculation>(request, deadline));
   }
 
+  /// Many cases of one calculation in few requests (docs/protocol.md, "Batches"): `cases`
+  /// (each naming a coupling by its index in `couplings`, any number of either) go out in
+  /// batches of at most protocol::kMaxBatchCases cases and kMaxBatchCouplings couplings, spread
+  /// over the instances like single calls, at most kMaxBatchesInFlight batches of this client at
+  /// once (all threads together: an instance keeps that many batch replies for resending).
+  /// Returns one reply per case, in order: its result, or the status, field and message a single
+  /// request of it gets (outcome_of() makes that the single call's Outcome); a case naming an
+  /// index beyond `couplings` is refused in place (field "coupling"). Throws what call() throws
+  /// (Timeout at `deadline`, ClientClosed, ServiceError) only when a whole batch fails.
+  std::vector<protocol::BatchCaseReply> call_many(protocol::BatchCalculation calculation,
+                                                  const std::vector<protocol::CouplingRef>& couplings,
+                                                  const ContactOptions& options,
+                                                  const std::vector<protocol::BatchCase>& cases,
+                                                  Clock::time_point deadline);
+  std::vector<protocol::BatchCaseReply> call_many(protocol::BatchCalculation calculation,
+                                                  const std::vector<protocol::CouplingRef>& couplings,
+                                                  const ContactOptions& options,
+                                                  const std::vector<protocol::BatchCase>& cases) {
+    return call_many(calculation, couplings, options, cases, Clock::now() + options_timeout());
+  }
+
   /// Waits until some instance is ready to take `calculation`; false at `timeout`.
   bool wait_for_service(protocol::Calculation calculation, std::chrono::milliseconds timeout);
   /// Live instances known from the status topic.
@@ -143,6 +170,9 @@ class Client {
   const std::string& dds_configuration() const;
 
  private:
+  struct BatchWindow;
+  std::chrono::milliseconds options_timeout() const;
+
   /// future.get(), after spinning on it for up to ClientOptions::spin_before_sleep.
   template <typename T>
   T await(std::future<T> future) const {
@@ -165,6 +195,29 @@ class Client {
   static void spin_turn(bool real_time);
 
   std::unique_ptr<ClientCore> core_;
+  std::unique_ptr<BatchWindow> batch_window_;  ///< kMaxBatchesInFlight slots
 };
+
+/// Batches of one client in flight at once, at most: an instance keeps the latest 16 batch replies
+/// per client for resending (protocol::kBatchReplyHistoryDepth, docs/protocol.md "QoS").
+inline constexpr int kMaxBatchesInFlight = 16;
+
+/// A batch case's reply as the Outcome of a single call: the result, or the exception call()
+/// throws for it (gc::InvalidInput naming the field, ...). `Result` is the batch's calculation's:
+/// protocol::ContactAndMoments, InducedMoments, protocol::JamAngleResult or RestoringTorque.
+template <typename Result>
+Outcome<Result> outcome_of(protocol::BatchCaseReply reply) {
+  Outcome<Result> outcome;
+  if (reply.status == protocol::kCaseOk && std::holds_alternative<Result>(reply.value)) {
+    outcome.result = std::move(std::get<Result>(reply.value));
+    return outcome;
+  }
+  try {
+    throw_reply_error(reply.status, reply.field.c_str(), reply.message.c_str());
+  } catch (...) {
+    outcome.error = std::current_exception();
+  }
+  return outcome;
+}
 
 }  // namespace gc::client

@@ -71,8 +71,8 @@ constexpr std::chrono::milliseconds kReadyPoll{20};
 struct ClientCore::Instance {
   InstanceInfo info;
   Entity publisher;  ///< in the instance's request partition
-  std::array<Entity, 5> writers;
-  std::array<bool, 5> ready{};  ///< both directions matched for this calculation
+  std::array<Entity, gc::protocol::kCalculationCount> writers;
+  std::array<bool, gc::protocol::kCalculationCount> ready{};  ///< both directions matched for this calculation
 };
 
 ClientCore::ClientCore(ClientOptions options)

@@ -109,11 +109,11 @@ class ClientCore {
   std::uint64_t client_id_;
   std::string dds_configuration_;  ///< protocol::describe() of the configuration joined with
   protocol::Entity participant_;
-  std::array<protocol::Entity, 5> request_topics_;
-  std::array<protocol::Entity, 5> reply_topics_;
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> request_topics_;
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> reply_topics_;
   protocol::Entity status_topic_;
   protocol::Entity reply_subscriber_;
-  std::array<protocol::Entity, 5> reply_readers_;  ///< created on first use (use_locked)
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> reply_readers_;  ///< created on first use (use_locked)
   protocol::Entity status_subscriber_;
   protocol::Entity status_reader_;
   protocol::Entity guard_;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "clients/remote/client.h"
+#include "protocol/matching.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/service_process.h"
 
@@ -90,6 +92,53 @@ TEST(RemoteCli, BatchWithRequestsInFlightPrintsWhatItPrintsInProcess) {
   EXPECT_EQ(over_dds.out, local.out);
   EXPECT_EQ(over_dds.err, local.err);
   EXPECT_GT(local.out.size(), 400u * 50u);
+}
+
+// Issue 40: batch --remote sends its rows as batches of cases (512 a request), not a request per
+// row, and prints byte for byte what batch prints in process (tolerance: none; the same core
+// calls), bad rows included: one that does not parse, a negative torque, a misalignment beyond
+// the jam angle; over two catalogue couplings and a coupling file (sent inline).
+TEST(RemoteCli, BatchSendsRowsInBatchesAndPrintsWhatItPrintsInProcess) {
+  test::ServiceProcess service({"--status-interval-s", "0.1"});
+  const std::string in = cli::testing::temp_path("remote_batches_in");
+  const std::string file = GC_SOURCE_DIR "/data/couplings/nrel_downwind.textproto";
+  std::string csv = "torque_nm,misalignment_deg,direction_deg,mu,coupling\n";
+  constexpr int kRows = 5000;
+  for (int r = 0; r < kRows; ++r) {
+    const char* coupling = r % 3 == 0 ? "nrel_upwind" : r % 3 == 1 ? "nrel_downwind" : file.c_str();
+    csv += std::to_string(2.0e5 + 611.0 * r) + "," + std::to_string(0.0001 * (r % 4000)) + "," +
+           std::to_string(r % 360) + "," + std::to_string(0.00004 * (r % 5000)) + "," + coupling +
+           "\n";
+    if (r == 1500) csv += "abc,0.1,0,0.1,nrel_upwind\n";
+    if (r == 2500) csv += "-5,0.1,0,0.1,nrel_upwind\n";
+    if (r == 3500) csv += "1.5e6,5,0,0.1,nrel_downwind\n";
+  }
+  cli::testing::write_file(in, csv);
+  const auto local = run_gearcoupling({"batch", "--in", in, "-j", "2"});
+  const auto over_dds = run_gearcoupling(remote({"batch", "--in", in, "-j", "2"}));
+  EXPECT_EQ(local.exit_code, 1);  // the three bad rows
+  EXPECT_EQ(over_dds.exit_code, local.exit_code) << over_dds.err;
+  EXPECT_EQ(over_dds.out, local.out);
+  EXPECT_EQ(over_dds.err, local.err);
+  EXPECT_NE(local.err.find("3 of 5003 rows failed"), std::string::npos) << local.err;
+
+  // The service saw a few batches (5003 rows: 2502 and 2501 per thread, 5 batches of at most 512
+  // each) and no single request.
+  client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(10)});
+  ASSERT_TRUE(client.wait_for_service(protocol::Calculation::kBatch, std::chrono::seconds(10)));
+  std::uint64_t batches = 0;
+  ASSERT_TRUE(protocol::wait_until(
+      [&] {
+        for (const client::InstanceInfo& instance : client.instances()) {
+          for (const client::CalculationStatus& c : instance.calculations) {
+            if (c.calculation == "batch") batches = c.served + c.refused + c.failed;
+            if (c.calculation != "batch") EXPECT_FALSE(c.called()) << c.calculation;
+          }
+        }
+        return batches > 0;
+      },
+      std::chrono::steady_clock::now() + std::chrono::seconds(5)));
+  EXPECT_EQ(batches, 10u);
 }
 
 // Issue 24: `moments --remote --timeout-s 2` with no service took 4.0 s: its two requests each

@@ -206,8 +206,8 @@ class RawJamAngleClient {
   std::uint64_t instance_;
   std::uint64_t client_id_ = protocol::random_id();
   Entity participant_;
-  std::array<Entity, 5> requests_;
-  std::array<Entity, 5> replies_;
+  std::array<Entity, gc::protocol::kCalculationCount> requests_;
+  std::array<Entity, gc::protocol::kCalculationCount> replies_;
   Entity publisher_;
   Entity subscriber_;
   Entity writer_;

@@ -104,8 +104,8 @@ class RawSender {
   std::uint64_t client_id_ = gc::protocol::random_id();
   std::uint64_t sequence_ = 0;
   Entity participant_;
-  std::array<Entity, 5> requests_;
-  std::array<Entity, 5> replies_;
+  std::array<Entity, gc::protocol::kCalculationCount> requests_;
+  std::array<Entity, gc::protocol::kCalculationCount> replies_;
   Entity publisher_;
   Entity subscriber_;
   Entity writer_;

@@ -50,7 +50,7 @@ class ReplyEavesdropper {
 
  private:
   Entity participant_;
-  std::array<Entity, 5> topics_;
+  std::array<Entity, gc::protocol::kCalculationCount> topics_;
   Entity subscriber_;
   Entity reader_;
   int count_ = 0;

@@ -36,7 +36,7 @@ void come_and_go(ReplyWriters& writers, std::uint64_t client_id, const Participa
 class ReplyWritersTest : public testing::Test {
  protected:
   protocol::Entity participant_{protocol::create_participant(test::test_domain(), protocol::dds_config())};
-  std::array<protocol::Entity, 5> topics_ = protocol::make_reply_topics(participant_.get());
+  std::array<protocol::Entity, gc::protocol::kCalculationCount> topics_ = protocol::make_reply_topics(participant_.get());
   const ParticipantKey owner_{1};
   ReplyWriters::MakeDomain make_domain_ = [] {
     return std::make_unique<ReplyDomain>(test::test_domain(), protocol::dds_config());

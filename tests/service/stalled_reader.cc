@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   const Entity participant(check_dds(dds_create_participant(domain, nullptr, nullptr), "participant"));
   dds_guid_t own{};
   check_dds(dds_get_guid(participant.get(), &own), "dds_get_guid");
-  const std::array<Entity, 5> topics = gc::protocol::make_reply_topics(participant.get());
+  const std::array<Entity, gc::protocol::kCalculationCount> topics = gc::protocol::make_reply_topics(participant.get());
   const Entity subscriptions(check_dds(
       dds_create_reader(participant.get(), DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr),
       "dds_create_reader(DCPSSubscription)"));

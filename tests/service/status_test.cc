@@ -49,7 +49,7 @@ TEST(Service, StatusReportsCatalogueAndRequestsServedAndRefused) {
   EXPECT_EQ(instance.threads, 2u);
   EXPECT_GT(instance.uptime_s, 0.0);
   EXPECT_EQ(instance.catalogue, (std::vector<std::string>{"nrel_downwind", "nrel_upwind"}));
-  ASSERT_EQ(instance.calculations.size(), 5u);
+  ASSERT_EQ(instance.calculations.size(), protocol::kCalculationCount);
   for (const client::CalculationStatus& c : instance.calculations) {
     EXPECT_EQ(c.called(), c.calculation == "jam_angle") << c.calculation;
     if (c.calculation != "jam_angle") continue;

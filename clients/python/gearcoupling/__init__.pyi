@@ -261,7 +261,7 @@ class Client:
     def induced_moments_many(self, coupling: CouplingSource, torque_nm: ArrayLike,
                              misalignment_rad: ArrayLike, direction_rad: ArrayLike = 0.0, *,
                              mu: ArrayLike, slices: int = 20, tolerance: float = 1e-9,
-                             max_iterations: int = 100, in_flight: int = 256,
+                             max_iterations: int = 100, in_flight: int = 16384,
                              errors: Errors = "raise") -> CaseTable: ...
     def estimate_friction_many(self, coupling: CouplingSource, torque_nm: ArrayLike,
                                misalignment_rad: ArrayLike, direction_rad: ArrayLike,

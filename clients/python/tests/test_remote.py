@@ -76,6 +76,23 @@ def test_many_equal_in_process(client):
         np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
 
 
+def test_many_load_cases_go_in_batches_with_bad_cases_in_place(client):
+    # Issue 40: 5000 cases are two requests (4096 cases at most per batch), not 10,000; a bad
+    # case fails in its place, naming its field, and its neighbours are answered.
+    torque, zeta, beta, mu = random_cases(5000, seed=11)
+    torque[17] = -5.0
+    zeta[4000] = rad(5.0)
+    sent = client.counters()["sent"]
+    remote = client.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu, errors="mask")
+    assert client.counters()["sent"] - sent == 2
+    local = gc.induced_moments_many("nrel_upwind", torque, zeta, beta, mu=mu, errors="mask")
+    for column in local:
+        np.testing.assert_array_equal(remote[column], local[column], err_msg=column)
+    assert not remote["ok"][17] and not remote["ok"][4000] and remote["ok"].sum() == 4998
+    assert "operating_point.torque_nm" in remote["error"][17]
+    assert "operating_point.misalignment_rad" in remote["error"][4000]
+
+
 def test_many_broadcast_and_mask_as_in_process(client):
     torque = np.linspace(3e5, 2.4e6, 4)[:, None]
     zeta = np.array([rad(0.1), rad(0.3), rad(5.0)])  # the last beyond the jam angle
