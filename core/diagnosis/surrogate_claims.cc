@@ -25,8 +25,16 @@ std::optional<SurrogateDesign> formula_design(const CandidateScore& formula, con
                                               std::span<const RecordedSample> observations,
                                               std::span<const std::size_t> rows, const Eigen::MatrixX2d& base) {
   if (!formula.fit || formula.fit->parameters.empty()) return std::nullopt;
-  std::vector<std::string> extra = time_terms;
-  for (const ParameterEstimate& p : formula.fit->parameters) extra.push_back(p.name);
+  // A step has its own test (change_point.h) and is not judged here: a re-zeroed bridge is one
+  // sharp rise, which no phase-randomised noise makes, but which sets the surrogates' own rise.
+  const auto is_step = [](const std::string& name) { return name.rfind("step_at_", 0) == 0; };
+  std::vector<std::string> extra;
+  for (const std::string& name : time_terms) {
+    if (!is_step(name)) extra.push_back(name);
+  }
+  for (const ParameterEstimate& p : formula.fit->parameters) {
+    if (!is_step(p.name)) extra.push_back(p.name);
+  }
   std::sort(extra.begin(), extra.end());
   extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
   TermDesign design = term_design(observations, rows, base, extra);
@@ -34,7 +42,12 @@ std::optional<SurrogateDesign> formula_design(const CandidateScore& formula, con
   // The formula's terms that are more than a level (the test judges what varies about the levels).
   const Eigen::Index n = base.rows();
   int beyond_levels = 0;
+  int steps = 0;
   for (const ParameterEstimate& p : formula.fit->parameters) {
+    if (is_step(p.name)) {
+      ++steps;
+      continue;
+    }
     const auto it = std::find(design.terms.begin(), design.terms.end(), p.name);
     if (it == design.terms.end()) continue;
     const Eigen::VectorXd column = design.columns.col(it - design.terms.begin());
@@ -43,7 +56,8 @@ std::optional<SurrogateDesign> formula_design(const CandidateScore& formula, con
     within.tail(n).array() -= column.tail(n).mean();
     if (within.norm() > 1e-9 * column.norm()) ++beyond_levels;
   }
-  const bool level = beyond_levels < static_cast<int>(formula.fit->parameters.size());
+  const bool level = beyond_levels + steps < static_cast<int>(formula.fit->parameters.size());
+  if (beyond_levels == 0 && steps > 0) return std::nullopt;
   if (beyond_levels == 0) return SurrogateDesign{Eigen::MatrixXd(2 * n, 0), 0, true};
   return SurrogateDesign{std::move(design.columns), beyond_levels, level};
 }

@@ -12,21 +12,15 @@
 namespace gc {
 namespace {
 
-/// The variance of a rise from the first row to the last: the increments' power at the lowest
-/// frequencies (their sum is the rise). A random walk's increments are white, and it rises by
-/// about its step times the root of its length; a stationary noise's increments have next to no
-/// power there, and it rises by little.
-double increments_low_power(const Eigen::VectorXd& x) {
-  const Eigen::Index m = x.size() - 1;
-  if (m < 8) return 0.0;
-  const Eigen::VectorXd d = x.tail(m) - x.head(m);
-  double power = 0.0;
-  for (int k = 1; k <= 3; ++k) {
-    std::complex<double> sum = 0.0;
-    for (Eigen::Index j = 0; j < m; ++j) sum += d(j) * std::polar(1.0, -2.0 * std::numbers::pi * k * j / static_cast<double>(m));
-    power = std::max(power, std::norm(sum));
-  }
-  return power;
+/// The variance of a rise from the first row to the last: the square of the rise from the first
+/// fifth's mean to the last's, scaled to the whole length (a fifth's mean sits a tenth of the length
+/// from its end). A random walk rises by as much again in another draw; a stationary noise's fifths
+/// hardly differ. Means, not the end rows: a spike on the first or last row would set it.
+double rise_variance(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size();
+  if (n < 10) return 0.0;
+  const double rise = 1.25 * (x.tail(n / 5).mean() - x.head(n / 5).mean());
+  return rise * rise;
 }
 
 /// A bin this many times the median power about it is a line (a cycle, or a test programme that
@@ -104,6 +98,11 @@ class Projector {
     return std::clamp((fit - level) / total, 0.0, 1.0);
   }
 
+  /// The least-squares fit of `y` on the levels and the design (the columns chosen for `y`).
+  Eigen::VectorXd fitted(const Eigen::VectorXd& y) const {
+    return choose_ <= 0 ? Eigen::VectorXd(basis_ * (basis_.transpose() * y)) : greedy_fit(y);
+  }
+
  private:
   /// Orthogonal matching pursuit: `choose_` steps, each taking the column most correlated with
   /// what the chosen ones leave; returns the fit.
@@ -165,7 +164,7 @@ class Projector {
 }  // namespace
 
 std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
-                                                          std::uint64_t seed) {
+                                                          std::uint64_t seed, std::optional<Eigen::Array2d> rises) {
   const Eigen::Index n = residual.rows();
   std::vector<Eigen::MatrixX2d> out;
   if (n < 8 || count <= 0) return out;
@@ -184,7 +183,7 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
     std::vector<std::complex<double>> spectrum;
     fft.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m));
     amplitudes[static_cast<std::size_t>(c)] = without_lines(spectrum);
-    rise_power[static_cast<std::size_t>(c)] = increments_low_power(residual.col(c));
+    rise_power[static_cast<std::size_t>(c)] = rises ? (*rises)(c) : rise_variance(residual.col(c));
   }
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
@@ -222,19 +221,43 @@ double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& re
   return Projector(design, residual.rows()).share(stacked(residual));
 }
 
-double level_p_value(const Eigen::MatrixX2d& residual) {
+/// The stacked `y` (2n) as n rows of two channels.
+static Eigen::MatrixX2d as_rows(const Eigen::VectorXd& y, Eigen::Index n) {
+  Eigen::MatrixX2d m(n, 2);
+  m.col(0) = y.head(n);
+  m.col(1) = y.tail(n);
+  return m;
+}
+
+/// Two-sided p-value of Student's t with an even number of degrees of freedom `nu`:
+/// 1 - sin(theta) (1 + cos^2/2 + 1*3/(2*4) cos^4 + ... ), theta = atan(t / sqrt(nu))
+/// (Abramowitz and Stegun 26.7.3).
+double student_two_sided_p(double t, int nu) {
+  const double theta = std::atan(std::abs(t) / std::sqrt(static_cast<double>(nu)));
+  const double c2 = std::cos(theta) * std::cos(theta);
+  double term = 1.0, sum = 1.0;
+  for (int k = 2; k <= nu - 2; k += 2) {
+    term *= c2 * (k - 1.0) / k;
+    sum += term;
+  }
+  return std::clamp(1.0 - std::sin(theta) * sum, 0.0, 1.0);
+}
+
+/// The level test's blocks: 21 contiguous ones, 20 degrees of freedom.
+constexpr Eigen::Index kLevelBlocks = 21;
+
+double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander) {
   double p = 1.0;
   for (int c = 0; c < 2; ++c) {
-    const Eigen::VectorXd x = residual.col(c);
-    const Eigen::Index n = x.size(), parts = 5;
-    if (n < parts) continue;
+    const Eigen::VectorXd x = wander.col(c);
+    const double level = residual.col(c).mean();
+    const Eigen::Index n = x.size(), parts = kLevelBlocks;
+    if (n < 2 * parts) continue;
     Eigen::VectorXd means(parts);
     for (Eigen::Index k = 0; k < parts; ++k) means(k) = x.segment(k * n / parts, (k + 1) * n / parts - k * n / parts).mean();
     const double spread = std::sqrt((means.array() - means.mean()).square().sum() / (parts - 1.0));
-    const double t = spread > 0.0 ? std::abs(x.mean()) / spread : (x.mean() != 0.0 ? 1e300 : 0.0);
-    // Student's t with 4 degrees of freedom, two-sided: 1 - F(t) + F(-t), x = t / sqrt(t^2 + 4).
-    const double u = t / std::sqrt(t * t + 4.0);
-    p = std::min(p, std::clamp(1.0 - 1.5 * u + 0.5 * u * u * u, 0.0, 1.0));
+    const double t = spread > 0.0 ? std::abs(level) / spread : (level != 0.0 ? 1e300 : 0.0);
+    p = std::min(p, student_two_sided_p(t, static_cast<int>(parts - 1)));
   }
   return std::min(1.0, 2.0 * p);  // either channel
 }
@@ -251,15 +274,19 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   // p-value is above level / (2 family) whatever the rest say.
   const int enough = static_cast<int>(std::ceil(level / (2.0 * family) * (count + 1.0)));
   const Eigen::VectorXd y = stacked(residual);
-  // Under the null the residual is the noise: its own spectrum, no relation to the inputs. Every
-  // design is judged on the same surrogates.
-  const std::vector<Eigen::MatrixX2d> surrogates = phase_randomised_surrogates(residual, count, seed);
-  const double level_p = level_p_value(residual);
+  // The rise a noise makes over the recording, from the residual's fifths (rise_variance).
+  const Eigen::Array2d rises(rise_variance(residual.col(0)), rise_variance(residual.col(1)));
   for (std::size_t d = 0; d < designs.size(); ++d) {
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
       const Projector projector(designs[d], residual.rows());
       const double observed = projector.share(y);
+      // The null is noise like what the candidate leaves, with the rise the residual's fifths show:
+      // a real effect's own spectrum (a drag that follows a speed programme, a cross-talk of the
+      // model's moments) is not noise against it, while a walk's rise, which a staircase takes out,
+      // stays in every surrogate.
+      const std::vector<Eigen::MatrixX2d> surrogates =
+          phase_randomised_surrogates(as_rows(y - projector.fitted(y), residual.rows()), count, seed + d, rises);
       int as_well = 0, drawn = 0;
       for (const Eigen::MatrixX2d& s : surrogates) {
         ++drawn;
@@ -267,7 +294,11 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       }
       p = as_well >= enough ? 1.0 : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
     }
-    if (designs[d].level) p = std::min(p, level_p);
+    if (designs[d].level) {
+      // The level against the wander of what the design leaves (its levels taken out with it).
+      const Projector projector(designs[d], residual.rows());
+      p = std::min(p, level_p_value(residual, as_rows(y - projector.fitted(y), residual.rows())));
+    }
     adjusted[d] = std::min(1.0, 2.0 * family * p);
   }
   return adjusted;

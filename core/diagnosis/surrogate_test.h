@@ -11,19 +11,21 @@
 // each channel's level that least squares on the candidate's design removes. An effect's design is
 // its correction at the fit and its Jacobian there (the directions it can move in); a formula's is
 // the catalogue, of which the same number of terms is chosen greedily on each surrogate as on the
-// residual (the search's selection is part of the null). The level itself is not judged: a walk's
-// mean is as uncertain as the walk, and surrogates whose level was drawn from the lowest
-// frequencies' power let a level and a staircase fit 198 of 300 random walks better than all of
-// them. The surrogates are of the residual itself (under the null it is the noise), with its lines
-// (a cycle, a test programme that repeats) brought down to the continuum about them, since a
-// surrogate that keeps a line in a random phase is explained as well by a design in phase with it
-// often enough to cost a real hysteresis its claim. Surrogates of what a candidate leaves were
-// tried and are too lenient: a gain and offset that follow a random walk take its slowest modes,
-// and what they leave is a faster noise. Several candidates are tested at once, Bonferroni over the
-// family, so the chance that such noise gives any claim is at most the level.
+// residual (the search's selection is part of the null). The surrogates are of what the candidate
+// leaves (the null: the residual is noise like that), end-matched, with a rise from first to last
+// row drawn from the residual's own fifths, and with their lines (a cycle, a programme that
+// repeats) brought down to the continuum about them. Surrogates of the residual itself took a
+// real effect's own spectrum for the noise's (a cross-talk of the model's moments, a drag on a
+// speed programme); circular surrogates cannot rise as a walk does (a level and a staircase fitted
+// 198 of 300 random walks better than all of them); a line kept in a random phase is explained as
+// well by a design in phase with it often enough to cost a real hysteresis its claim. A level the
+// design moves is judged apart (level_p_value), a step not at all (change_point.h judges it).
+// Several candidates are tested at once, Bonferroni over the family and a design's two parts, so
+// the chance that such noise gives any claim is at most the level.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -32,9 +34,12 @@ namespace gc {
 
 /// `count` surrogates of `residual` (rows in time order, one column per moment channel): each
 /// channel's periodogram kept but for its lines, the same random phase added to both channels at
-/// each frequency (their cross-spectrum kept), each channel's mean zero.
+/// each frequency (their cross-spectrum kept), each channel's mean zero, end-matched with a rise
+/// of its own drawn from `rise_variance` per channel [N²·m²] (by default the residual's own,
+/// rise_variance()).
 std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
-                                                          std::uint64_t seed);
+                                                          std::uint64_t seed,
+                                                          std::optional<Eigen::Array2d> rise_variance = std::nullopt);
 
 /// A candidate's design on the rows: columns stacked as the residual is (rows k for M_sy', n + k for
 /// M_sz'). `choose` 0: every column; k > 0: the k columns forward selection takes (orthogonal
@@ -50,12 +55,13 @@ struct SurrogateDesign {
 /// Share of the stacked `residual`'s sum of squares that least squares on `design` removes, in [0, 1].
 double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& residual);
 
-/// The p-value that a channel's level is no more than its wander: the mean against the spread of
-/// the means of five contiguous fifths, as Student's t with 4 degrees of freedom, the smaller of
-/// the two channels' doubled. Not the mean's standard error: a walk's fifths wander together, and
+/// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
+/// the spread of the means of 21 contiguous blocks of `wander` (what a design that moves the level
+/// leaves, so that structure it explains is not taken for wander), as Student's t with 20 degrees of freedom, the smaller of the
+/// two channels' doubled. Not the mean's standard error: a walk's fifths wander together, and
 /// its mean is as far from zero as they wander (a random walk's level is no offset); an offset of
 /// a calibration stands far out of any noise's fifths.
-double level_p_value(const Eigen::MatrixX2d& residual);
+double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander);
 
 /// Per design, the p-value that noise with the residual's spectrum is explained as well, times the
 /// number of designs and by 2 (Bonferroni over the family and a design's two parts: what it explains

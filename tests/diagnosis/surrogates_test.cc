@@ -66,9 +66,9 @@ TEST(Surrogates, KeepTheNoisesPowerButNotALine) {
 }
 
 // The size on the hardest noise: 300 fresh random walks, a level and a staircase on each channel
-// (the spurious regression that interleaved cross-validation passed). Measured 1 of 300; the bound
-// is 2 %, the level of 1 % with room for 300 draws' scatter. Before the surrogates were end-matched
-// with a rise of their own, and the level judged against the fifths' wander, it was 198 of 300.
+// (the spurious regression that interleaved cross-validation passed). The bound is 2 %, the level
+// of 1 % with room for 300 draws' scatter. With circular surrogates of the residual it was 198 of
+// 300; with surrogates of the leftover whose rise came from the leftover, 20 of 300.
 TEST(Surrogates, OnRandomWalksASlowDesignIsClaimedAtMostAtTheLevel) {
   std::mt19937_64 random(20261128);
   const SurrogateDesign design = offset_and_staircase();

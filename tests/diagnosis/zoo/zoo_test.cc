@@ -78,11 +78,11 @@ TEST(NoiseZoo, FiftyNoiseOnlyDrawsClaimNothing) {
   std::printf("noise zoo: %zu false claims and %zu errors in %zu draws (master seed %llu; 95 %% upper bound %.1f %%)\n",
               claims, errors, kDraws, static_cast<unsigned long long>(kMasterSeed),
               100 * clopper_pearson_upper(claims, kDraws - errors));
-  // The target is 0 (issue 37). This sample measured 10 claims and 1 error (draw 40: the data-quality
+  // The target is 0 (issue 37). This sample measured 5 claims and 1 error (draw 40: the data-quality
   // stage excluded all but 358 of 9,768 rows of white noise on an ADC step as large as the noise)
-  // after the issue-37 session's claim rule: a ratchet with two draws of slack for a borderline
-  // draw, which fails on anything clearly worse; not the goal.
-  constexpr std::size_t kMostClaimsToday = 12;
+  // with the claim rule's surrogate test (10 before it): a ratchet with slack for a borderline draw
+  // on another machine's floats, which fails on anything clearly worse; not the goal.
+  constexpr std::size_t kMostClaimsToday = 8;
   constexpr std::size_t kMostErrorsToday = 1;
   EXPECT_LE(claims, kMostClaimsToday) << "diagnose claimed physics on " << claims << " of " << kDraws
                         << " noise-only recordings (the truth is exactly the model it was given):\n" << report;
