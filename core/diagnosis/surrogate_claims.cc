@@ -107,14 +107,14 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
   return design;
 }
 
-std::optional<double> demote_what_noise_explains(
+void demote_what_noise_explains(
     std::vector<CandidateScore>& ranking, std::optional<CandidateScore>& formula,
     const std::vector<std::string>& time_terms, const CouplingModel& model,
     std::span<const RecordedSample> observations, std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
     const ParallelFor& parallel, const std::function<bool(const CandidateScore&)>& claimable,
     const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for,
     const SurrogateClaimSettings& settings) {
-  if (!(settings.level > 0.0)) return std::nullopt;
+  if (!(settings.level > 0.0)) return;
   std::vector<SurrogateDesign> designs;
   std::vector<CandidateScore*> tested;
   for (CandidateScore& c : ranking) {
@@ -132,7 +132,7 @@ std::optional<double> demote_what_noise_explains(
       tested.push_back(&*formula);
     }
   }
-  if (designs.empty()) return std::nullopt;
+  if (designs.empty()) return;
   const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed);
   for (std::size_t k = 0; k < tested.size(); ++k) {
     tested[k]->surrogate_p = p[k];
@@ -143,7 +143,6 @@ std::optional<double> demote_what_noise_explains(
     tested[k]->failure = why.str();
   }
   std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
-  return p.front();
 }
 
 }  // namespace gc

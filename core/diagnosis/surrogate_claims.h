@@ -41,8 +41,7 @@ struct SurrogateClaimSettings {
 /// moves the failed effects last. A refit of several effects or a swap refits earlier claims and
 /// is not tested again. `registration_for` gives an effect's registration; the formula's design is
 /// the term catalogue on `rows` with `time_terms` and its own terms, its term count chosen greedily.
-/// Returns the adjusted p-value of the first candidate tested, or nullopt when none was.
-std::optional<double> demote_what_noise_explains(
+void demote_what_noise_explains(
     std::vector<CandidateScore>& ranking, std::optional<CandidateScore>& formula,
     const std::vector<std::string>& time_terms, const CouplingModel& model,
     std::span<const RecordedSample> observations, std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,

@@ -217,10 +217,6 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
   return out;
 }
 
-double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& residual) {
-  return Projector(design, residual.rows()).share(stacked(residual));
-}
-
 /// The stacked `y` (2n) as n rows of two channels.
 static Eigen::MatrixX2d as_rows(const Eigen::VectorXd& y, Eigen::Index n) {
   Eigen::MatrixX2d m(n, 2);
@@ -277,16 +273,16 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   // The rise a noise makes over the recording, from the residual's fifths (rise_variance).
   const Eigen::Array2d rises(rise_variance(residual.col(0)), rise_variance(residual.col(1)));
   for (std::size_t d = 0; d < designs.size(); ++d) {
+    const Projector projector(designs[d], residual.rows());
+    const Eigen::MatrixX2d left = as_rows(y - projector.fitted(y), residual.rows());
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
-      const Projector projector(designs[d], residual.rows());
       const double observed = projector.share(y);
       // The null is noise like what the candidate leaves, with the rise the residual's fifths show:
       // a real effect's own spectrum (a drag that follows a speed programme, a cross-talk of the
       // model's moments) is not noise against it, while a walk's rise, which a staircase takes out,
       // stays in every surrogate.
-      const std::vector<Eigen::MatrixX2d> surrogates =
-          phase_randomised_surrogates(as_rows(y - projector.fitted(y), residual.rows()), count, seed + d, rises);
+      const std::vector<Eigen::MatrixX2d> surrogates = phase_randomised_surrogates(left, count, seed + d, rises);
       int as_well = 0, drawn = 0;
       for (const Eigen::MatrixX2d& s : surrogates) {
         ++drawn;
@@ -294,11 +290,8 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       }
       p = as_well >= enough ? 1.0 : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
     }
-    if (designs[d].level) {
-      // The level against the wander of what the design leaves (its levels taken out with it).
-      const Projector projector(designs[d], residual.rows());
-      p = std::min(p, level_p_value(residual, as_rows(y - projector.fitted(y), residual.rows())));
-    }
+    // A level the design moves, against the wander of what it leaves (its levels taken out with it).
+    if (designs[d].level) p = std::min(p, level_p_value(residual, left));
     adjusted[d] = std::min(1.0, 2.0 * family * p);
   }
   return adjusted;

@@ -52,9 +52,6 @@ struct SurrogateDesign {
   bool level = false;
 };
 
-/// Share of the stacked `residual`'s sum of squares that least squares on `design` removes, in [0, 1].
-double explained_share(const SurrogateDesign& design, const Eigen::MatrixX2d& residual);
-
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
 /// the spread of the means of 21 contiguous blocks of `wander` (what a design that moves the level
 /// leaves, so that structure it explains is not taken for wander), as Student's t with 20 degrees of freedom, the smaller of the

@@ -70,7 +70,9 @@ TEST(Surrogates, KeepTheNoisesPowerButNotALine) {
       band_b += std::norm(b[k]);
     }
     EXPECT_NEAR(band_b / band_a, 1.0, 0.05) << "channel " << c;
-    if (c == 0) EXPECT_LT(std::abs(b[50]), 0.2 * std::abs(a[50])) << "the line at bin 50 is kept";
+    if (c == 0) {
+      EXPECT_LT(std::abs(b[50]), 0.2 * std::abs(a[50])) << "the line at bin 50 is kept";
+    }
   }
 }
 
