@@ -14,6 +14,7 @@
 #include "core/diagnosis/polarity_flip.h"
 #include "core/diagnosis/signature_held_out.h"
 #include "core/diagnosis/slow_wander.h"
+#include "core/diagnosis/input_noise_check.h"
 #include "core/diagnosis/surrogate_claims.h"
 #include "core/diagnosis/verdict_text.h"
 #include "core/diagnosis/time_step.h"
@@ -556,6 +557,10 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
       !formula_carries(*round.formula, observations, search, base, fifths)) {
     round.formula->failure = "does not carry to a fifth of the recording it was not fitted on";
   }
+  // A timing effect must beat the centred average of the inputs it could be (input_noise_check.h).
+  demote_what_input_noise_explains(
+      round.ranking, model, observations, search, base, folds, parallel, settings.cross_validation, settings.claim_t,
+      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
@@ -617,9 +622,23 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     // the rows reveal beyond doubt (t >= 3.5) could never remove 30 % of it. Fast terms only: no
     // term in time or temperature is offered here to follow a drift.
     const double left_ms = formula ? estimate_noise(formula->held_out_residual, true).mean_square() : noise_ms;
-    if (formula && claimable(*formula, pooled_mean_square(dense), std::max(noise_ms, left_ms), settings) &&
-        formula_carries(*formula, observations, signature_rows, dense,
-                        whole_fifths(signature_rows.size(), test_rows_per_block(dense_folds)))) {
+    const auto dense_claimable = [&](const CandidateScore& c) {
+      return claimable(c, pooled_mean_square(dense), std::max(noise_ms, left_ms), settings);
+    };
+    bool dense_ok = formula && dense_claimable(*formula) &&
+                    formula_carries(*formula, observations, signature_rows, dense,
+                                    whole_fifths(signature_rows.size(), test_rows_per_block(dense_folds)));
+    if (dense_ok) {
+      // The same third test as on the search rows, in the same family: every candidate of the
+      // round was tried before this one.
+      std::vector<CandidateScore> none;
+      demote_what_noise_explains(
+          none, formula, round.time_terms, model, observations, signature_rows, dense, parallel, dense_claimable,
+          [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims,
+          round.ranking.size() + (round.formula ? 1 : 0));
+      dense_ok = formula->failure.empty();
+    }
+    if (dense_ok) {
       round.formula = std::move(formula);
       round.formula_chosen = true;
       round.formula_on_dense_rows = true;

@@ -41,12 +41,14 @@ struct SurrogateClaimSettings {
 /// moves the failed effects last. A refit of several effects or a swap refits earlier claims and
 /// is not tested again. `registration_for` gives an effect's registration; the formula's design is
 /// the term catalogue on `rows` with `time_terms` and its own terms, its term count chosen greedily.
+/// The family is every candidate of `ranking`, the formula and `also_tried` more (the round's
+/// other searches).
 void demote_what_noise_explains(
     std::vector<CandidateScore>& ranking, std::optional<CandidateScore>& formula,
     const std::vector<std::string>& time_terms, const CouplingModel& model,
     std::span<const RecordedSample> observations, std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
     const ParallelFor& parallel, const std::function<bool(const CandidateScore&)>& claimable,
     const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for,
-    const SurrogateClaimSettings& settings);
+    const SurrogateClaimSettings& settings, std::size_t also_tried = 0);
 
 }  // namespace gc

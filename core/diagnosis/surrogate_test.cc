@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <array>
 
@@ -103,10 +104,18 @@ class Projector {
     return choose_ <= 0 ? Eigen::VectorXd(basis_ * (basis_.transpose() * y)) : greedy_fit(y);
   }
 
+  /// Orthonormal columns spanning the levels and the design (the columns chosen for `y`).
+  Eigen::MatrixXd span(const Eigen::VectorXd& y) const { return choose_ <= 0 ? basis_ : greedy_basis(y); }
+
  private:
-  /// Orthogonal matching pursuit: `choose_` steps, each taking the column most correlated with
-  /// what the chosen ones leave; returns the fit.
   Eigen::VectorXd greedy_fit(const Eigen::VectorXd& y) const {
+    const Eigen::MatrixXd basis = greedy_basis(y);
+    return basis * (basis.transpose() * y);
+  }
+
+  /// Orthogonal matching pursuit: `choose_` steps, each taking the column most correlated with
+  /// what the chosen ones leave; returns the orthonormal basis of the levels and the chosen.
+  Eigen::MatrixXd greedy_basis(const Eigen::VectorXd& y) const {
     const Eigen::Index steps = std::min<Eigen::Index>(choose_, normalised_.cols());
     Eigen::MatrixXd basis(y.size(), levels_.cols() + steps);
     basis.leftCols(levels_.cols()) = levels_;
@@ -128,7 +137,7 @@ class Projector {
       basis.col(kept++) = q / norm;
       left = y - basis.leftCols(kept) * (basis.leftCols(kept).transpose() * y);
     }
-    return y - left;
+    return basis.leftCols(kept);
   }
 
   /// Each channel's level, as orthonormal columns.
@@ -163,57 +172,82 @@ class Projector {
 
 }  // namespace
 
-std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
-                                                          std::uint64_t seed, std::optional<Eigen::Array2d> rises) {
-  const Eigen::Index n = residual.rows();
-  std::vector<Eigen::MatrixX2d> out;
-  if (n < 8 || count <= 0) return out;
+std::vector<double> SurrogateSpectrum::leverage(const Eigen::MatrixXd& basis, Eigen::Index n, int channel) {
+  const Eigen::Index m = smooth_length(n);
+  std::vector<double> out(static_cast<std::size_t>(m / 2 + 1), 0.0);
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spectrum;
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    const Eigen::VectorXd q = basis.col(j).segment(channel * n + (n - m), m);
+    fft.fwd(spectrum, std::vector<double>(q.data(), q.data() + m));
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] += std::norm(spectrum[k]) / static_cast<double>(m);
+  }
+  return out;
+}
+
+SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t seed, const SurrogateSpectrum& shape)
+    : n_(residual.rows()), m_(smooth_length(residual.rows())), random_(seed) {
+  if (n_ < 8) return;
   // The FFT's length has only the factors 2, 3 and 5 (a prime length costs n^2): the last m rows;
   // a surrogate is circular, so it wraps to the n rows.
-  const Eigen::Index m = smooth_length(n);
-  Eigen::FFT<double> fft;
-  std::array<std::vector<double>, 2> amplitudes;
-  std::array<double, 2> rise_power{};
   for (int c = 0; c < 2; ++c) {
     // End-matched: less the line from its first to its last value, which a circular surrogate
-    // cannot hold; a rise of its own is drawn for each surrogate instead (rise_power).
-    Eigen::VectorXd tail = residual.col(c).tail(m);
-    const double first = tail(0), last = tail(m - 1);
-    for (Eigen::Index i = 0; i < m; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m - 1);
+    // cannot hold; a rise of its own is drawn for each surrogate instead (rise_power_).
+    Eigen::VectorXd tail = residual.col(c).tail(m_);
+    const double first = tail(0), last = tail(m_ - 1);
+    for (Eigen::Index i = 0; i < m_; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m_ - 1);
     std::vector<std::complex<double>> spectrum;
-    fft.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m));
-    amplitudes[static_cast<std::size_t>(c)] = without_lines(spectrum);
-    rise_power[static_cast<std::size_t>(c)] = rises ? (*rises)(c) : rise_variance(residual.col(c));
-  }
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
-  std::normal_distribution<double> normal;
-  std::vector<std::complex<double>> turned(static_cast<std::size_t>(m));
-  std::vector<double> back;
-  for (int s = 0; s < count; ++s) {
-    std::vector<std::complex<double>> rotation(static_cast<std::size_t>(m / 2 + 1));
-    for (Eigen::Index k = 1; k <= m / 2; ++k) rotation[static_cast<std::size_t>(k)] = std::polar(1.0, phase(random));
-    Eigen::MatrixX2d surrogate(n, 2);
-    for (int c = 0; c < 2; ++c) {
-      const std::vector<double>& x = amplitudes[static_cast<std::size_t>(c)];
-      turned[0] = 0.0;  // the level is not judged (Projector::share)
-      for (Eigen::Index k = 1; k <= (m - 1) / 2; ++k) {
-        const std::complex<double> v = x[static_cast<std::size_t>(k)] * rotation[static_cast<std::size_t>(k)];
-        turned[static_cast<std::size_t>(k)] = v;
-        turned[static_cast<std::size_t>(m - k)] = std::conj(v);
-      }
-      if (m % 2 == 0) {
-        turned[static_cast<std::size_t>(m / 2)] =
-            x[static_cast<std::size_t>(m / 2)] * (rotation[static_cast<std::size_t>(m / 2)].real() < 0.0 ? -1.0 : 1.0);
-      }
-      fft.inv(back, turned);
-      const double rise = normal(random) * std::sqrt(rise_power[static_cast<std::size_t>(c)]);
-      for (Eigen::Index i = 0; i < n; ++i) {
-        surrogate(i, c) = back[static_cast<std::size_t>(i % m)] + rise * (static_cast<double>(i) / static_cast<double>(n - 1) - 0.5);
+    fft_.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m_));
+    const std::vector<double>& removed = shape.removed[static_cast<std::size_t>(c)];
+    if (removed.size() == static_cast<std::size_t>(m_ / 2 + 1)) {
+      for (Eigen::Index k = 1; k <= m_ / 2; ++k) {
+        const double kept = 1.0 - std::min(removed[static_cast<std::size_t>(k)], SurrogateSpectrum::kMostRestored);
+        spectrum[static_cast<std::size_t>(k)] /= std::sqrt(kept);
+        spectrum[static_cast<std::size_t>(m_ - k)] = std::conj(spectrum[static_cast<std::size_t>(k)]);
       }
     }
-    out.push_back(std::move(surrogate));
+    amplitudes_[static_cast<std::size_t>(c)] = without_lines(spectrum);
+    rise_sigma_[static_cast<std::size_t>(c)] =
+        std::sqrt(shape.rise_variance ? (*shape.rise_variance)(c) : rise_variance(residual.col(c)));
   }
+}
+
+Eigen::MatrixX2d SurrogateSource::next() {
+  if (n_ < 8) return Eigen::MatrixX2d::Zero(n_, 2);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  std::normal_distribution<double> normal;
+  std::vector<std::complex<double>> rotation(static_cast<std::size_t>(m_ / 2 + 1));
+  for (Eigen::Index k = 1; k <= m_ / 2; ++k) rotation[static_cast<std::size_t>(k)] = std::polar(1.0, phase(random_));
+  std::vector<std::complex<double>> turned(static_cast<std::size_t>(m_));
+  std::vector<double> back;
+  Eigen::MatrixX2d surrogate(n_, 2);
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<double>& x = amplitudes_[static_cast<std::size_t>(c)];
+    turned[0] = 0.0;  // the level is not judged (Projector::share)
+    for (Eigen::Index k = 1; k <= (m_ - 1) / 2; ++k) {
+      const std::complex<double> v = x[static_cast<std::size_t>(k)] * rotation[static_cast<std::size_t>(k)];
+      turned[static_cast<std::size_t>(k)] = v;
+      turned[static_cast<std::size_t>(m_ - k)] = std::conj(v);
+    }
+    if (m_ % 2 == 0) {
+      turned[static_cast<std::size_t>(m_ / 2)] =
+          x[static_cast<std::size_t>(m_ / 2)] * (rotation[static_cast<std::size_t>(m_ / 2)].real() < 0.0 ? -1.0 : 1.0);
+    }
+    fft_.inv(back, turned);
+    const double rise = normal(random_) * rise_sigma_[static_cast<std::size_t>(c)];
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      surrogate(i, c) = back[static_cast<std::size_t>(i % m_)] + rise * (static_cast<double>(i) / static_cast<double>(n_ - 1) - 0.5);
+    }
+  }
+  return surrogate;
+}
+
+std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
+                                                          std::uint64_t seed, const SurrogateSpectrum& shape) {
+  std::vector<Eigen::MatrixX2d> out;
+  if (residual.rows() < 8 || count <= 0) return out;
+  SurrogateSource source(residual, seed, shape);
+  for (int s = 0; s < count; ++s) out.push_back(source.next());
   return out;
 }
 
@@ -239,6 +273,20 @@ double student_two_sided_p(double t, int nu) {
   return std::clamp(1.0 - std::sin(theta) * sum, 0.0, 1.0);
 }
 
+/// After this many surrogates, none explained as well, a residual far out of their spread is
+/// judged by Cantelli's bound instead of thousands more (a strong effect needs no 8,000 surrogates).
+constexpr int kBeforeCantelli = 199;
+
+/// Cantelli's one-sided Chebyshev bound on the chance that a draw of mean `mean` and variance
+/// `variance` reaches `observed`: 1 / (1 + k^2), k standard deviations above the mean. It holds for
+/// any distribution, a skewed share included.
+double cantelli_bound(double observed, double mean, double variance) {
+  if (!(observed > mean)) return 1.0;
+  if (!(variance > 0.0)) return 0.0;
+  const double k2 = (observed - mean) * (observed - mean) / variance;
+  return 1.0 / (1.0 + k2);
+}
+
 /// The level test's blocks: 21 contiguous ones, 20 degrees of freedom.
 constexpr Eigen::Index kLevelBlocks = 21;
 
@@ -259,10 +307,10 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
 }
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
-                                       double level, std::uint64_t seed) {
+                                       double level, std::uint64_t seed, std::size_t family_size) {
   std::vector<double> adjusted(designs.size(), 1.0);
   if (designs.empty() || !(level > 0.0)) return adjusted;
-  const double family = static_cast<double>(designs.size());
+  const double family = static_cast<double>(std::max(family_size, designs.size()));
   // Enough surrogates that the smallest p-value, times the family and the two parts of a design
   // (what varies, its level), is half the level.
   const int count = std::max(199, static_cast<int>(std::ceil(4.0 * family / level)) - 1);
@@ -274,21 +322,45 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   const Eigen::Array2d rises(rise_variance(residual.col(0)), rise_variance(residual.col(1)));
   for (std::size_t d = 0; d < designs.size(); ++d) {
     const Projector projector(designs[d], residual.rows());
+    std::vector<Projector> scan;
+    for (const Eigen::MatrixXd& columns : designs[d].elsewhere) scan.emplace_back(SurrogateDesign{columns, 0, false, {}}, residual.rows());
+    // The largest share the design, or any of its others in the box, explains (Davies' statistic).
+    const auto largest_share = [&](const Eigen::VectorXd& x) {
+      double best = projector.share(x);
+      for (const Projector& other : scan) best = std::max(best, other.share(x));
+      return best;
+    };
     const Eigen::MatrixX2d left = as_rows(y - projector.fitted(y), residual.rows());
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
-      const double observed = projector.share(y);
+      const double observed = largest_share(y);
       // The null is noise like what the candidate leaves, with the rise the residual's fifths show:
       // a real effect's own spectrum (a drag that follows a speed programme, a cross-talk of the
       // model's moments) is not noise against it, while a walk's rise, which a staircase takes out,
-      // stays in every surrogate.
-      const std::vector<Eigen::MatrixX2d> surrogates = phase_randomised_surrogates(left, count, seed + d, rises);
+      // stays in every surrogate. Least squares took from the leftover the share of each frequency
+      // that the design spans (its leverage there): the surrogates give it back, or a slow design
+      // fitted to a slow noise would leave a null with less of the slow power than it took (ter
+      // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
+      SurrogateSpectrum shape{rises, {}};
+      const Eigen::MatrixXd span = projector.span(y);
+      for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
+      SurrogateSource surrogates(left, seed + d, shape);
       int as_well = 0, drawn = 0;
-      for (const Eigen::MatrixX2d& s : surrogates) {
+      double sum = 0.0, sum_of_squares = 0.0;
+      std::optional<double> beyond_doubt;
+      while (drawn < count) {
         ++drawn;
-        if (projector.share(stacked(s)) >= observed && ++as_well >= enough) break;
+        const double share = largest_share(stacked(surrogates.next()));
+        sum += share;
+        sum_of_squares += share * share;
+        if (share >= observed && ++as_well >= enough) break;
+        if (drawn == kBeforeCantelli && as_well == 0) {
+          beyond_doubt = cantelli_bound(observed, sum / drawn, sum_of_squares / drawn - std::pow(sum / drawn, 2));
+          if (*beyond_doubt <= level / (4.0 * family)) break;
+          beyond_doubt.reset();
+        }
       }
-      p = as_well >= enough ? 1.0 : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
+      p = as_well >= enough ? 1.0 : beyond_doubt.value_or((1.0 + as_well) / (1.0 + static_cast<double>(drawn)));
     }
     // A level the design moves, against the wander of what it leaves (its levels taken out with it).
     if (designs[d].level) p = std::min(p, level_p_value(residual, left));

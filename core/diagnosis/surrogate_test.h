@@ -24,22 +24,62 @@
 // the chance that such noise gives any claim is at most the level.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include <Eigen/Dense>
+#include <unsupported/Eigen/FFT>
 
 namespace gc {
 
+/// What a surrogate's spectrum is given beside the periodogram of the series it is drawn from.
+struct SurrogateSpectrum {
+  /// The variance of the rise from first to last row, per channel [N²·m²]; by default the series'
+  /// own (from its first and last fifths).
+  std::optional<Eigen::Array2d> rise_variance;
+  /// Per channel, the share of each frequency's power (k = 0..m/2 of the FFT's m points, see
+  /// leverage) that a least-squares projection removed from the series: given back,
+  /// |X(k)| / sqrt(1 - removed(k)), at most kMostRestored of it. Empty: none.
+  std::array<std::vector<double>, 2> removed;
+
+  /// Restored up to this share removed (ten times the power at most): where a design spans a
+  /// frequency whole, what is left there says nothing of the noise.
+  static constexpr double kMostRestored = 0.9;
+
+  /// The leverage of orthonormal `basis` (2n rows, stacked as the channels) at each frequency of
+  /// `channel`'s FFT: lev(k) = sum_j |Q_j(k)|^2 / m over the basis columns' transforms, the share
+  /// of a unit sinusoid of that frequency in random phase that projecting on the basis takes.
+  /// Summed over both halves of the spectrum it is the channel's part of the basis' trace (Parseval). For white noise the
+  /// leftover's expected power is (1 - lev(k)) times the noise's.
+  static std::vector<double> leverage(const Eigen::MatrixXd& basis, Eigen::Index n, int channel);
+};
+
+/// Phase-randomised surrogates of a residual, one at a time (a test that stops early draws no more).
+/// Each: `residual`'s periodogram per channel (restored by `shape.removed`) but for its lines, the
+/// same random phase added to both channels at each frequency (their cross-spectrum kept), each
+/// channel's mean zero, end-matched with a rise of its own drawn from `shape.rise_variance`.
+class SurrogateSource {
+ public:
+  SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t seed, const SurrogateSpectrum& shape = {});
+  Eigen::MatrixX2d next();
+
+ private:
+  Eigen::Index n_, m_;  ///< rows; the FFT's length (the last m_ rows, wrapped to n_)
+  std::mt19937_64 random_;
+  Eigen::FFT<double> fft_;
+  std::array<std::vector<double>, 2> amplitudes_;  ///< per channel, k = 0..m_/2
+  std::array<double, 2> rise_sigma_{};             ///< per channel [N·m]
+};
+
 /// `count` surrogates of `residual` (rows in time order, one column per moment channel): each
-/// channel's periodogram kept but for its lines, the same random phase added to both channels at
-/// each frequency (their cross-spectrum kept), each channel's mean zero, end-matched with a rise
-/// of its own drawn from `rise_variance` per channel [N²·m²] (by default the residual's own,
-/// rise_variance()).
+/// channel's periodogram kept (restored by `shape.removed`) but for its lines, the same random
+/// phase added to both channels at each frequency (their cross-spectrum kept), each channel's
+/// mean zero, end-matched with a rise of its own drawn from `shape.rise_variance` per channel.
 std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
-                                                          std::uint64_t seed,
-                                                          std::optional<Eigen::Array2d> rise_variance = std::nullopt);
+                                                          std::uint64_t seed, const SurrogateSpectrum& shape = {});
 
 /// A candidate's design on the rows: columns stacked as the residual is (rows k for M_sy', n + k for
 /// M_sz'). `choose` 0: every column; k > 0: the k columns forward selection takes (orthogonal
@@ -50,6 +90,12 @@ struct SurrogateDesign {
   /// The design moves a channel's level too (an offset, a constant term): judged by level_p_value
   /// beside what it explains of the variation.
   bool level = false;
+  /// The same candidate's designs elsewhere in its search box (choose 0): the statistic is the
+  /// largest share any of them and `columns` explain, on the residual and on every surrogate alike.
+  /// A parameter that only the candidate's presence gives a meaning (a reference temperature, a
+  /// direction, a delay) was searched over its box on this residual; a null that looks only where
+  /// the search ended is not searched as the residual was (Davies, Biometrika 74, 1987).
+  std::vector<Eigen::MatrixXd> elsewhere;
 };
 
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
@@ -61,11 +107,16 @@ struct SurrogateDesign {
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander);
 
 /// Per design, the p-value that noise with the residual's spectrum is explained as well, times the
-/// number of designs and by 2 (Bonferroni over the family and a design's two parts: what it explains
+/// family's size and by 2 (Bonferroni over the family and a design's two parts: what it explains
 /// of the variation about the levels, by the surrogates, and a level it moves, by level_p_value): (1 + surrogates
 /// explained at least as well) / (1 + surrogates drawn). Enough surrogates are drawn for a p-value
-/// of half `level`, fewer once the p-value is sure to be above it (Besag and Clifford, 1991).
+/// of half `level`, fewer once the p-value is sure to be above it (Besag and Clifford, 1991), or
+/// once the first 199, none explained as well, put Cantelli's bound on it below half the level.
+///
+/// `family_size`: how many candidates the search tried (at least the designs): the designs tested
+/// are those that passed the claim rule's other tests on the same residual, so the one that fits
+/// noise best among all tried is among them, and the correction must count every one tried.
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
-                                       double level, std::uint64_t seed);
+                                       double level, std::uint64_t seed, std::size_t family_size = 0);
 
 }  // namespace gc

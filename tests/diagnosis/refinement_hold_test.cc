@@ -36,7 +36,7 @@ TEST(RefinementHold, AnUnidentifiableParameterKeepsTheModelsValue) {
       EXPECT_NEAR(p.value, 1.2e5, 1e-6 * 1.2e5) << p.note;
       EXPECT_NE(p.note.find("the model's value"), std::string::npos) << p.note;
     }
-    if (p.name == "mu_low_torque") EXPECT_NEAR(p.value, 0.05, 0.01);
+    if (p.name == "mu_low_torque") { EXPECT_NEAR(p.value, 0.05, 0.01); }
   }
   EXPECT_NEAR(fit->effect->value("reference_torque_nm"), 1.2e5, 1e-6 * 1.2e5);
 }
