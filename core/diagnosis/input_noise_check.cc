@@ -51,8 +51,10 @@ std::optional<CandidateScore> demote_what_input_noise_explains(
       centred = score_candidate(model, centred_input_average(), observations, rows, base, folds, parallel, settings);
     }
     if (!centred->failure.empty()) continue;
+    // Blocks as independent, as between any two candidates (paired_block_test.h): the noise the
+    // two leave in common cancels in their difference.
     const PairedBlockTest t = paired_block_test(centred->held_out_residual, c.held_out_residual, folds.block_of,
-                                                folds.blocks, true);
+                                                folds.blocks);
     if (t.t >= least_t) continue;
     std::ostringstream why;
     why << "a window of the inputs centred on each sample (" << std::setprecision(3)

@@ -30,8 +30,8 @@ const EffectRegistration& centred_input_average();
 
 /// Marks failed (CandidateScore::failure) each of `ranking`'s candidates that times the inputs
 /// (Effect::times_inputs) and for which `claimable` holds, when its held-out residual does not beat
-/// the centred input average's on the same folds by a block-paired t of `least_t` (long-run
-/// inflated, as against the model). The centred average is fitted once, and only when needed.
+/// the centred input average's on the same folds by a block-paired t of `least_t` (the blocks
+/// independent, as between candidates). The centred average is fitted once, and only when needed.
 /// Returns the average's score when it was fitted.
 std::optional<CandidateScore> demote_what_input_noise_explains(
     std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
