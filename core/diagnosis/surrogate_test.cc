@@ -191,10 +191,15 @@ SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t
   // The FFT's length has only the factors 2, 3 and 5 (a prime length costs n^2): the last m rows;
   // a surrogate is circular, so it wraps to the n rows.
   for (int c = 0; c < 2; ++c) {
-    // End-matched: less the line from its first to its last value, which a circular surrogate
-    // cannot hold; a rise of its own is drawn for each surrogate instead (rise_power_).
+    // End-matched: less the line from its level at the start to its level at the end, which a
+    // circular surrogate cannot hold; a rise of its own is drawn for each surrogate instead
+    // (rise_sigma_). Each level is the mean of a twentieth of the rows: the first and last rows
+    // alone would put a line through two samples of the noise, a slope as large as the noise (a
+    // sixth of white noise's power) that no recording has, and that slow terms then explain in
+    // every surrogate.
     Eigen::VectorXd tail = residual.col(c).tail(m_);
-    const double first = tail(0), last = tail(m_ - 1);
+    const Eigen::Index ends = std::max<Eigen::Index>(1, m_ / 20);
+    const double first = tail.head(ends).mean(), last = tail.tail(ends).mean();
     for (Eigen::Index i = 0; i < m_; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m_ - 1);
     std::vector<std::complex<double>> spectrum;
     fft_.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m_));
