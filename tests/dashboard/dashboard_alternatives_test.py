@@ -10,7 +10,6 @@ chromedriver or Selenium (deploy/install-deps.sh installs them).
 """
 import json
 import os
-import subprocess
 import tempfile
 import urllib.request
 
@@ -19,15 +18,10 @@ import pytest
 import headless_chromium
 
 headless_chromium.require()
-from headless_chromium import By, WebDriverWait, rerendered  # noqa: E402
+from headless_chromium import WebDriverWait, rerendered  # noqa: E402
 
-SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
-DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
-MONITOR = os.environ["GC_MONITOR_BINARY"]
-CLI = os.environ["GC_GEARCOUPLING_BINARY"]
-DOMAIN = 1 + (os.getpid() + 131) % 200
-ENVIRONMENT = dict(os.environ,
-                   CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
+import live_cell  # noqa: E402
+
 TEST_CELL = "dyno-alike"
 # The paper's model without self_weight: what the monitor compares the cell with.
 BASE_MODEL = """name: "paper_no_weight"
@@ -35,10 +29,6 @@ coupling: "nrel_upwind"
 effects { name: "friction" parameters { name: "mu0" value: 0.1 } }
 effects { name: "pressure_angle_rotation" }
 """
-
-
-def run(*args):
-    return subprocess.run([CLI, *args], env=ENVIRONMENT, check=True, capture_output=True, text=True)
 
 
 def card(driver):
@@ -57,45 +47,21 @@ def card(driver):
 
 @pytest.fixture(scope="module")
 def shown():
-    children = []
-    driver = None
-    with tempfile.TemporaryDirectory() as scratch:
+    with live_cell.LiveCell(domain_offset=131) as cell, tempfile.TemporaryDirectory() as scratch:
         base = os.path.join(scratch, "paper_no_weight.textproto")
         with open(base, "w") as f:
             f.write(BASE_MODEL)
         recording = os.path.join(scratch, "with_weight.csv")
-        run("synth", "--model", "paper", "--sequence", "moment-sweep", "--samples", "1000",
-            "--noise-nm", "2000", "--seed", "1", "--out", recording)
-        try:
-            children.append(subprocess.Popen(
-                [MONITOR, "--domain", str(DOMAIN), "--model", base, "--window-s", "20",
-                 "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
-                 "--diagnose-after-s", "1", "--diagnosis-nice", "0", "--diagnosis-cpu-share", "1"],
-                env=ENVIRONMENT, stderr=subprocess.DEVNULL))
-            dashboard = subprocess.Popen([DASHBOARD, "--domain", str(DOMAIN), "--listen", "127.0.0.1:0"],
-                                         env=ENVIRONMENT, stdout=subprocess.PIPE, text=True)
-            children.append(dashboard)
-            line = dashboard.stdout.readline()
-            assert line.startswith("listening on http://"), line
-            url = line.split("listening on ", 1)[1].strip()
-            driver = headless_chromium.new_driver("1400,2400")
-            driver.get(url)
-            run("replay", "--in", recording, "--test-cell", TEST_CELL, "--model", base, "--speed", "20",
-                "--wait-s", "20", "--domain", str(DOMAIN))
-            WebDriverWait(driver, 60.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
-                lambda d: (card(d) or {}).get("state") == "standing")
-            yield {"driver": driver, "url": url, "card": card(driver)}
-        finally:
-            if driver is not None:
-                driver.quit()
-            for child in children:
-                child.terminate()
-            for child in children:
-                try:
-                    child.wait(timeout=10)
-                except subprocess.TimeoutExpired:
-                    child.kill()
-                    child.wait()
+        cell.cli("synth", "--model", "paper", "--sequence", "moment-sweep", "--samples", "1000",
+                 "--noise-nm", "2000", "--seed", "1", "--out", recording, on_domain=False)
+        cell.start_monitor(base, "--diagnosis-cpu-share", "1")
+        url = cell.start_dashboard()
+        driver = cell.browser(url)
+        cell.cli("replay", "--in", recording, "--test-cell", TEST_CELL, "--model", base, "--speed", "20",
+                 "--wait-s", "20")
+        WebDriverWait(driver, 60.0, poll_frequency=0.2, ignored_exceptions=rerendered()).until(
+            lambda d: (card(d) or {}).get("state") == "standing")
+        yield {"cell": cell, "driver": driver, "url": url, "card": card(driver)}
 
 
 def proposal_record(url):
@@ -135,7 +101,7 @@ def test_parameters_are_in_display_units_as_diagnose_prints_them(shown):
 
 
 def test_the_cli_prints_the_same_alternatives(shown):
-    printed = run("proposals", "--test-cell", TEST_CELL, "--discovery-s", "1", "--domain", str(DOMAIN)).stdout
+    printed = shown["cell"].cli("proposals", "--test-cell", TEST_CELL, "--discovery-s", "1").stdout
     assert "the data cannot tell it from:" in printed, printed
     for alternative in proposal_record(shown["url"])["alternatives"]:
         assert alternative["effect"] in printed, printed

@@ -12,7 +12,6 @@ chromedriver or Selenium (deploy/install-deps.sh installs them).
 """
 import json
 import os
-import subprocess
 import time
 import urllib.error
 import urllib.request
@@ -24,39 +23,17 @@ import headless_chromium
 headless_chromium.require()
 from headless_chromium import By, WebDriverWait, rerendered  # noqa: E402
 
-SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
-DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
-MONITOR = os.environ["GC_MONITOR_BINARY"]
-CLI = os.environ["GC_GEARCOUPLING_BINARY"]
+import live_cell  # noqa: E402
+
 OUTPUT_DIR = os.environ.get("GC_TEST_OUTPUT_DIR", ".")
-DOMAIN = 1 + (os.getpid() + 97) % 200
-ENVIRONMENT = dict(os.environ,
-                   CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 TEST_CELL = "dyno-learning"
 OPERATOR = "shift1"  # the operator dashboard's $GC_IDENTITY is operator-shift1: its swap writers
                      # are in partition gearcoupling.live.operator.shift1 (docs/security.md)
-RECORDING = os.path.join(SOURCE_DIR, "data/recordings/hidden_eccentricity_torque_ramp.csv")
+RECORDING = os.path.join(live_cell.SOURCE_DIR, "data/recordings/hidden_eccentricity_torque_ramp.csv")
 
 
-def start(children, args, env=ENVIRONMENT, **kwargs):
-    child = subprocess.Popen(args, env=env, **kwargs)
-    children.append(child)
-    return child
-
-
-def start_dashboard(children, *extra, identity=None):
-    environment = dict(ENVIRONMENT, GC_IDENTITY=identity) if identity else ENVIRONMENT
-    child = start(children, [DASHBOARD, "--domain", str(DOMAIN), "--listen", "127.0.0.1:0", *extra],
-                  stdout=subprocess.PIPE, text=True, env=environment)
-    line = child.stdout.readline()
-    assert line.startswith("listening on http://"), f"dashboard printed {line!r}"
-    return line.split("listening on ", 1)[1].strip()
-
-
-def replay():
-    subprocess.run([CLI, "replay", "--in", RECORDING, "--test-cell", TEST_CELL, "--speed", "20",
-                    "--wait-s", "20", "--domain", str(DOMAIN)], env=ENVIRONMENT, check=True,
-                   stdout=subprocess.DEVNULL)
+def replay(cell):
+    cell.cli("replay", "--in", RECORDING, "--test-cell", TEST_CELL, "--speed", "20", "--wait-s", "20")
 
 
 def post_apply(url, proposal, header=True):
@@ -91,33 +68,16 @@ def proposal_box(driver):
 
 @pytest.fixture(scope="module")
 def loop():
-    children = []
-    driver = None
-    try:
-        start(children, [MONITOR, "--domain", str(DOMAIN), "--model", "paper", "--window-s", "20",
-                         "--health-period-s", "0.2", "--stale-s", "60", "--dispose-s", "120",
-                         "--diagnose-after-s", "1", "--diagnosis-nice", "0"], stderr=subprocess.DEVNULL)
-        operator_url = start_dashboard(children, "--operator-cells", TEST_CELL,
-                                       identity="operator-" + OPERATOR)
-        read_only_url = start_dashboard(children)
-        driver = headless_chromium.new_driver("1400,2400")
-        driver.get(operator_url)
-        yield {"driver": driver, "url": operator_url, "read_only_url": read_only_url}
-    finally:
-        if driver is not None:
-            driver.quit()
-        for child in children:
-            child.terminate()
-        for child in children:
-            try:
-                child.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                child.kill()
-                child.wait()
+    with live_cell.LiveCell(domain_offset=97) as cell:
+        cell.start_monitor("paper")
+        operator_url = cell.start_dashboard("--operator-cells", TEST_CELL, identity="operator-" + OPERATOR)
+        read_only_url = cell.start_dashboard()
+        driver = cell.browser(operator_url)
+        yield {"cell": cell, "driver": driver, "url": operator_url, "read_only_url": read_only_url}
 
 
 def test_a_proposal_naming_the_hidden_effect_appears_on_the_card_within_30_s(loop):
-    replay()
+    replay(loop["cell"])
     replayed = time.monotonic()
     WebDriverWait(loop["driver"], 30.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(
         lambda d: proposal_box(d).get("state") == "standing")
@@ -135,7 +95,7 @@ def test_now_and_with_it_are_on_the_window_the_table_shows(loop):
     # Issue 39: "95.3 kN·m now" sat beside a table of 45/54 kN·m over another window. The table
     # has the proposal's column over its own window, lower than the model's on both channels. The
     # test cell runs on (the proposal follows the samples that come after it).
-    replay()
+    replay(loop["cell"])
 
     def shadowed(d):
         cells = [c for c in state(loop["url"]).get("test_cells", []) if c["test_cell"] == TEST_CELL]
@@ -175,7 +135,7 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
     WebDriverWait(driver, 10.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(answered)
     WebDriverWait(driver, 10.0, poll_frequency=0.1, ignored_exceptions=rerendered()).until(
         lambda d: proposal_box(d).get("state") == "applied")
-    replay()  # the test cell runs on: one window of samples under the new model
+    replay(loop["cell"])  # the test cell runs on: one window of samples under the new model
 
     def at_noise(d):
         cells = [c for c in state(loop["url"]).get("test_cells", []) if c["test_cell"] == TEST_CELL]
@@ -203,10 +163,9 @@ def test_apply_puts_it_in_force_and_the_error_falls_to_the_noise(loop):
 
 
 def test_a_swap_without_operator_identity_is_shown_plainly_as_such(loop):
-    environment = {k: v for k, v in ENVIRONMENT.items() if k != "GC_IDENTITY"}
-    subprocess.run([CLI, "swap-model", "--test-cell", TEST_CELL, "--model", "paper", "--wait-s", "10",
-                    "--operator", "Grace Hopper", "--domain", str(DOMAIN)], env=environment, check=True,
-                   stdout=subprocess.DEVNULL)
+    environment = {k: v for k, v in live_cell.ENVIRONMENT.items() if k != "GC_IDENTITY"}
+    loop["cell"].cli("swap-model", "--test-cell", TEST_CELL, "--model", "paper", "--wait-s", "10",
+                     "--operator", "Grace Hopper", env=environment)
 
     def shown(d):
         rows = [r for r in swap_rows(d) if r.get("testCell") == TEST_CELL and not r.get("proposal")]
