@@ -94,11 +94,6 @@ TEST(DiagnosisRules, FitsAnAssemblyMisalignmentBeyondTheOldFixedBound) {
 // better; the offset never stays in the model, whether it is never claimed or claimed in round 1
 // and dropped once the drift is found.
 TEST(DiagnosisRules, AnOffsetNeverKeepsTheMeanOfADriftOnceTheDriftIsFound) {
-  if (!std::getenv("GC_RUN_KNOWN_REGRESSIONS")) {
-    // Known regression of the claim rule's surrogate test (docs/diagnosis.md, "The claim rule"): the
-    // drift is found in round 2, but the offset claimed in round 1 is no longer dropped.
-    GTEST_SKIP() << "known regression: the offset stays beside the drift found after it";
-  }
   const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
   std::vector<RecordedSample> observations = record(model, sweeps(testing::nrel_upwind()), 53);
   const double end = observations.back().input.time_s;

@@ -215,8 +215,7 @@ const std::set<std::string>& open_cases() {
 /// it and fail after it, not yet understood. Skipped by name, with the reason, so the suite stays a
 /// measurement that CI can run; each is to be made to pass again, not left.
 const std::set<std::string>& known_regressions() {
-  static const std::set<std::string> names{"rig_hysteresis_travel", "heavier_weight_thermal_misalignment",
-                                           "low_snr_twice_rev_100k"};
+  static const std::set<std::string> names{"heavier_weight_thermal_misalignment", "low_snr_twice_rev_100k"};
   return names;
 }
 
