@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <optional>
-#include <thread>
 
 #include "core/model_error.h"
+#include "parallel/thread_parallel_for.h"
 
 namespace gc::analysis {
 namespace {
@@ -32,16 +33,11 @@ void predict_range(const CouplingModel& model, const std::vector<RecordedSample>
 
 // Each thread predicts one contiguous slice; outcomes keep the file order.
 void predict_chunk(const CouplingModel& model, const std::vector<RecordedSample>& samples,
-                   int threads, std::vector<Outcome>& outcomes) {
+                   const ParallelFor& parallel_for, std::vector<Outcome>& outcomes) {
   outcomes.assign(samples.size(), Outcome{});
-  const std::size_t slices = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, samples.size() / 256));
-  const std::size_t per_slice = (samples.size() + slices - 1) / slices;
-  std::vector<std::jthread> workers;
-  for (std::size_t s = 1; s < slices; ++s) {
-    const std::size_t begin = s * per_slice, end = std::min(samples.size(), begin + per_slice);
-    workers.emplace_back([&, begin, end] { predict_range(model, samples, begin, end, outcomes); });
-  }
-  predict_range(model, samples, 0, std::min(samples.size(), per_slice), outcomes);
+  parallel_for(samples.size(), [&](std::size_t begin, std::size_t end) {
+    predict_range(model, samples, begin, end, outcomes);
+  });
 }
 
 void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Outcome>& outcomes,
@@ -62,20 +58,28 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options) {
+  const unsigned threads = static_cast<unsigned>(std::max(1, options.threads));
   RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated,
-                                                options.source_name});
-  std::vector<RecordedSample> chunk;
+                                                options.source_name, threads});
+  const ParallelFor parallel_for = thread_parallel_for(threads);
+  std::vector<RecordedSample> chunk, next;
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
-  while (reader.next_chunk(chunk, options.chunk_samples)) {
+  // The next chunk is read while this one is predicted and accumulated: the accumulation runs
+  // in file order on one thread, and reading alone would leave the other cores idle meanwhile.
+  for (bool more = reader.next_chunk(chunk, options.chunk_samples); more; std::swap(chunk, next)) {
+    std::future<bool> reading = std::async(std::launch::async, [&] {
+      return reader.next_chunk(next, options.chunk_samples);
+    });
     for (const RecordedSample& sample : chunk) {
       largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
       largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
     }
     for (ModelRun& run : runs) {
-      predict_chunk(*run.model, chunk, options.threads, outcomes);
+      predict_chunk(*run.model, chunk, parallel_for, outcomes);
       accumulate(chunk, outcomes, run);
     }
+    more = reading.get();
   }
   return {options.source_name.empty() ? path.filename().string() : options.source_name,
           reader.rows_read(), reader.excluded_rows(), reader.problems(),
