@@ -59,8 +59,11 @@ struct ToothLoadPattern {
     const double s = sin_theta(coupling, j);
     return peak_tooth_load_n * std::max(0.0, 1.0 - separation_ratio * s * s);
   }
+  /// As std::max(0.0, x) above, a NaN share (0 / 0: a torque so small that z_e underflows, with
+  /// no misalignment) gives no load; Eigen's max would keep the NaN.
   ToothBlock load_n(const ToothBlock& sin_theta) const {
-    return peak_tooth_load_n * (1.0 - separation_ratio * sin_theta * sin_theta).max(0.0);
+    const ToothBlock share = 1.0 - separation_ratio * sin_theta * sin_theta;
+    return peak_tooth_load_n * (share > 0.0).select(share, 0.0);
   }
 };
 
