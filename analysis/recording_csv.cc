@@ -327,8 +327,7 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
   }
   const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency())
                                                 : options.threads;
-  parallel_for_ = thread_parallel_for(threads);
-  fields_.resize(threads);
+  parallel_for_ = chunked_parallel_for(threads);
   loading_dead_band_rad_ = scan_dead_band(options.loading);
   derived_.emplace(loading_dead_band_rad_, options.loading.still_after_s);
 }
@@ -406,15 +405,12 @@ std::size_t RecordingReader::read_rows(std::size_t max_rows) {
   while (rows < max_rows && next_csv_line(in_, parsed_[rows].line, line_number_)) {
     parsed_[rows++].line_number = line_number_;
   }
-  // Contiguous slices, one per thread, each with its splitter (fields_[slice]).
-  const std::size_t slices = std::min(fields_.size(), rows);
-  parallel_for_(slices, [&](std::size_t first_slice, std::size_t end_slice) {
-    for (std::size_t slice = first_slice; slice < end_slice; ++slice) {
-      for (std::size_t r = slice * rows / slices; r < (slice + 1) * rows / slices; ++r) {
-        ParsedRow& row = parsed_[r];
-        row.sample = RecordedSample{};
-        row.problem = parse_cells(row.line, row.line_number, fields_[slice], row.sample);
-      }
+  parallel_for_(rows, [&](std::size_t begin, std::size_t end) {
+    CsvFields fields;  // the views it hands out live until its next split
+    for (std::size_t r = begin; r < end; ++r) {
+      ParsedRow& row = parsed_[r];
+      row.sample = RecordedSample{};
+      row.problem = parse_cells(row.line, row.line_number, fields, row.sample);
     }
   });
   return rows;

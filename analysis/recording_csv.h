@@ -141,7 +141,7 @@ class RecordingReader {
 
  private:
   /// A row's cells, without the checks that depend on the rows before it: safe to run on
-  /// several rows at once, each with its own `fields`.
+  /// several rows at once, each thread with its own `fields`.
   std::optional<RowProblem> parse_cells(std::string_view line, long line_number, CsvFields& fields,
                                         RecordedSample& sample) const;
   /// Time going backwards against the last good row.
@@ -167,7 +167,6 @@ class RecordingReader {
   };
   std::string line_;
   ParallelFor parallel_for_;
-  std::vector<CsvFields> fields_;     // one per thread
   std::vector<ParsedRow> parsed_;     // one batch; its lines keep their storage
   long line_number_ = 0;
   std::size_t rows_read_ = 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <optional>
 
 #include "core/model_error.h"
@@ -61,16 +60,11 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
   const unsigned threads = static_cast<unsigned>(std::max(1, options.threads));
   RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated,
                                                 options.source_name, threads});
-  const ParallelFor parallel_for = thread_parallel_for(threads);
-  std::vector<RecordedSample> chunk, next;
+  const ParallelFor parallel_for = chunked_parallel_for(threads);
+  std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
-  // The next chunk is read while this one is predicted and accumulated: the accumulation runs
-  // in file order on one thread, and reading alone would leave the other cores idle meanwhile.
-  for (bool more = reader.next_chunk(chunk, options.chunk_samples); more; std::swap(chunk, next)) {
-    std::future<bool> reading = std::async(std::launch::async, [&] {
-      return reader.next_chunk(next, options.chunk_samples);
-    });
+  while (reader.next_chunk(chunk, options.chunk_samples)) {
     for (const RecordedSample& sample : chunk) {
       largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
       largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
@@ -79,7 +73,6 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
       predict_chunk(*run.model, chunk, parallel_for, outcomes);
       accumulate(chunk, outcomes, run);
     }
-    more = reading.get();
   }
   return {options.source_name.empty() ? path.filename().string() : options.source_name,
           reader.rows_read(), reader.excluded_rows(), reader.problems(),
