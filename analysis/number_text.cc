@@ -26,17 +26,23 @@ void append_shortest(std::string& out, Number value) {
 
 }  // namespace
 
-std::string_view trim(std::string_view text) {
-  constexpr std::string_view kBlanks = " \t\r";
-  const auto first = text.find_first_not_of(kBlanks);
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(kBlanks);
-  return text.substr(first, last - first + 1);
-}
+namespace {
+// A loop, not find_first_not_of(" \t\r"): that asks memchr of the set for every character,
+// and trimming every cell was a fifth of reading a recording.
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+}  // namespace
 
 std::string_view trim_start(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  return first == std::string_view::npos ? std::string_view() : text.substr(first);
+  std::size_t first = 0;
+  while (first < text.size() && blank(text[first])) ++first;
+  return text.substr(first);
+}
+
+std::string_view trim(std::string_view text) {
+  text = trim_start(text);
+  std::size_t end = text.size();
+  while (end > 0 && blank(text[end - 1])) --end;
+  return text.substr(0, end);
 }
 
 std::optional<double> parse_double(std::string_view text) { return parse_whole<double>(text); }

@@ -24,6 +24,7 @@
 
 #include "analysis/csv_fields.h"
 #include "analysis/derived_inputs.h"
+#include "core/diagnosis/parallel_for.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
 
@@ -91,6 +92,10 @@ struct RecordingOptions {
   /// What errors call the recording, "" for the file's name: "<DataFrame>" where the file is a
   /// scratch copy the user never named (Python).
   std::string source_name = {};
+  /// Threads that parse a batch of rows at once (0: every hardware thread). Parsing is half of
+  /// validate's work; the order-dependent checks (time going back, derived inputs) stay in file
+  /// order, so what is read does not depend on it.
+  unsigned threads = 1;
 };
 
 /// "torque,msy" as quantities (their header names, docs/recordings.md). Throws FormatError
@@ -135,7 +140,15 @@ class RecordingReader {
   static constexpr std::size_t kKeptProblems = 1000;
 
  private:
-  std::optional<RowProblem> parse_row(std::string_view line, RecordedSample& sample);
+  /// A row's cells, without the checks that depend on the rows before it: safe to run on
+  /// several rows at once, each thread with its own `fields`.
+  std::optional<RowProblem> parse_cells(std::string_view line, long line_number, CsvFields& fields,
+                                        RecordedSample& sample) const;
+  /// Time going backwards against the last good row.
+  std::optional<RowProblem> time_problem(const RecordedSample& sample, long line_number) const;
+  /// Reads up to `max_rows` rows and parses their cells on the reader's threads into parsed_;
+  /// returns how many were read.
+  std::size_t read_rows(std::size_t max_rows);
   void exclude(RowProblem problem);
   /// The first pass: the dead band from the misalignment of the good rows, then back to the
   /// first row.
@@ -146,8 +159,15 @@ class RecordingReader {
   RecordingHeader header_;
   double loading_dead_band_rad_ = 0.0;
   std::optional<DerivedInputs> derived_;   // once the dead band is known
+  struct ParsedRow {
+    std::string line;
+    long line_number = 0;
+    RecordedSample sample;
+    std::optional<RowProblem> problem;
+  };
   std::string line_;
-  CsvFields fields_;
+  ParallelFor parallel_for_;
+  std::vector<ParsedRow> parsed_;     // one batch; its lines keep their storage
   long line_number_ = 0;
   std::size_t rows_read_ = 0;
   std::size_t excluded_rows_ = 0;

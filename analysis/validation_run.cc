@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <thread>
 
 #include "core/model_error.h"
+#include "parallel/thread_parallel_for.h"
 
 namespace gc::analysis {
 namespace {
@@ -32,16 +32,11 @@ void predict_range(const CouplingModel& model, const std::vector<RecordedSample>
 
 // Each thread predicts one contiguous slice; outcomes keep the file order.
 void predict_chunk(const CouplingModel& model, const std::vector<RecordedSample>& samples,
-                   int threads, std::vector<Outcome>& outcomes) {
+                   const ParallelFor& parallel_for, std::vector<Outcome>& outcomes) {
   outcomes.assign(samples.size(), Outcome{});
-  const std::size_t slices = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, samples.size() / 256));
-  const std::size_t per_slice = (samples.size() + slices - 1) / slices;
-  std::vector<std::jthread> workers;
-  for (std::size_t s = 1; s < slices; ++s) {
-    const std::size_t begin = s * per_slice, end = std::min(samples.size(), begin + per_slice);
-    workers.emplace_back([&, begin, end] { predict_range(model, samples, begin, end, outcomes); });
-  }
-  predict_range(model, samples, 0, std::min(samples.size(), per_slice), outcomes);
+  parallel_for(samples.size(), [&](std::size_t begin, std::size_t end) {
+    predict_range(model, samples, begin, end, outcomes);
+  });
 }
 
 void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Outcome>& outcomes,
@@ -62,8 +57,10 @@ void accumulate(const std::vector<RecordedSample>& samples, const std::vector<Ou
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
                                 const ValidationRunOptions& options) {
+  const unsigned threads = static_cast<unsigned>(std::max(1, options.threads));
   RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated,
-                                                options.source_name});
+                                                options.source_name, threads});
+  const ParallelFor parallel_for = chunked_parallel_for(threads);
   std::vector<RecordedSample> chunk;
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
@@ -73,7 +70,7 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
       largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
     }
     for (ModelRun& run : runs) {
-      predict_chunk(*run.model, chunk, options.threads, outcomes);
+      predict_chunk(*run.model, chunk, parallel_for, outcomes);
       accumulate(chunk, outcomes, run);
     }
   }

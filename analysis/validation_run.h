@@ -1,7 +1,8 @@
 // Streams a recording through one or more models (validate; before/after comparisons): reads it
-// in chunks, predicts each chunk on several threads (CouplingModel is reentrant), and feeds the
-// errors to one ValidationAccumulator and PointSampler per model, in file order. Memory is
-// bounded by the chunk size, whatever the recording's length.
+// in chunks (rows parsed on several threads), predicts each chunk on several threads
+// (CouplingModel is reentrant; small pieces handed out as threads come free), and feeds the errors to
+// one ValidationAccumulator and PointSampler per model, in file order, so the result does not
+// depend on the thread count. Memory is bounded by the chunk size, whatever the recording's length.
 #pragma once
 
 #include <filesystem>

@@ -151,12 +151,13 @@ CouplingGeometry::CouplingGeometry(CouplingDefinition definition)
   jam_angle_ = gc::jam_angle(JamGeometry{crown_radius_m_, d.tooth_thickness_m,
                                          sleeve_space_width_m_, d.facewidth_m,
                                          d.pressure_angle_rad, d.backlash_m});
+  tooth_angle_rad_.resize(d.teeth);
   tooth_sin_.resize(d.teeth);
   tooth_cos_.resize(d.teeth);
   for (int j = 0; j < d.teeth; ++j) {
-    const double angle = 2.0 * M_PI * j / d.teeth;
-    tooth_sin_[j] = std::sin(angle);
-    tooth_cos_[j] = std::cos(angle);
+    tooth_angle_rad_[j] = 2.0 * M_PI * j / d.teeth;
+    tooth_sin_[j] = std::sin(tooth_angle_rad_[j]);
+    tooth_cos_[j] = std::cos(tooth_angle_rad_[j]);
   }
 }
 

@@ -4,7 +4,7 @@
 // shared by any number of threads.
 #pragma once
 
-#include <vector>
+#include <Eigen/Core>
 
 #include "core/coupling_definition.h"
 #include "core/jam_angle.h"
@@ -41,9 +41,11 @@ class CouplingGeometry {
   double sleeve_root_diameter_m() const { return sleeve_root_diameter_m_; }
   const JamAngle& jam_angle() const { return jam_angle_; }           ///< eqs 23-35
 
-  /// sin and cos of 2*pi*j/N for j = 0..N-1: tooth positions before the offset alpha (eq 9).
-  const std::vector<double>& tooth_sin() const { return tooth_sin_; }
-  const std::vector<double>& tooth_cos() const { return tooth_cos_; }
+  /// 2*pi*j/N for j = 0..N-1 and its sin and cos: tooth positions before the offset alpha
+  /// (eqs 9 and 13). Tables once per coupling, so an evaluation runs over all teeth as arrays.
+  const Eigen::ArrayXd& tooth_angle_rad() const { return tooth_angle_rad_; }
+  const Eigen::ArrayXd& tooth_sin() const { return tooth_sin_; }
+  const Eigen::ArrayXd& tooth_cos() const { return tooth_cos_; }
 
  private:
   CouplingDefinition definition_;
@@ -60,8 +62,9 @@ class CouplingGeometry {
   double working_depth_m_ = 0.0;
   double sleeve_root_diameter_m_ = 0.0;
   JamAngle jam_angle_;
-  std::vector<double> tooth_sin_;
-  std::vector<double> tooth_cos_;
+  Eigen::ArrayXd tooth_angle_rad_;
+  Eigen::ArrayXd tooth_sin_;
+  Eigen::ArrayXd tooth_cos_;
 };
 
 }  // namespace gc

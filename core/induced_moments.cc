@@ -1,5 +1,6 @@
 #include "core/induced_moments.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/coupling_frame.h"
@@ -25,9 +26,14 @@ double self_weight_moment_nm(const CouplingGeometry& coupling) {
          d.shaft_weight_per_length_n_per_m * cos_tilt * d.shaft_length_m * d.shaft_length_m / 2.0;
 }
 
+namespace {
+
+// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q);
+// `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'. A template, not a
+// std::function: it runs for every tooth summed of every evaluation.
+template <typename LoadOf>
 QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
-                         const ToothLoadPattern& pattern, bool continuous,
-                         const std::function<double(int)>& load_of) {
+                         const ToothLoadPattern& pattern, bool continuous, const LoadOf& load_of) {
   const double q_n = pattern.load_sharing.q * coupling.teeth();
   const double radius = coupling.pitch_radius_m();
   const double axial_factor = axial_load_factor(point.misalignment_rad, point.friction_coefficient);
@@ -65,6 +71,8 @@ QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint&
   return {4.0 * sum_y, 4.0 * sum_z, 4 * (last + 1 + (fractional_tooth ? 1 : 0))};  // eqs 43, 42
 }
 
+}  // namespace
+
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ToothContact& contact) {
   ToothLoadPattern pattern;  // what the quarter sums read of it
@@ -101,8 +109,13 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options) {
   const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  double carried = 0.0;  // in tooth order, as tooth_contact() sums them
-  for (int j = 0; j < coupling.teeth(); ++j) carried += pattern.load_n(coupling, j);
+  const int n = coupling.teeth();
+  double carried = 0.0;  // in tooth order, as tooth_contact() sums them: the same refusals
+  for (Eigen::Index first = 0; first < n; first += kToothBlock) {
+    const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
+    const ToothBlock load = pattern.load_n(pattern.sin_theta(coupling, first, count));  // eq 9
+    for (Eigen::Index i = 0; i < count; ++i) carried += load[i];
+  }
   require_load_carried(pattern, carried, point, options.min_load_fraction);
   return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
                       [&](int j) { return pattern.load_n(coupling, j); });

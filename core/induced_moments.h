@@ -2,8 +2,6 @@
 // axial sliding friction, in the double-prime frame, the coupling frame and at the sensors.
 #pragma once
 
-#include <functional>
-
 #include "core/operating_point.h"
 #include "core/tooth_contact.h"
 #include "core/tooth_load_pattern.h"
@@ -42,12 +40,6 @@ struct QuarterSums {
   double moment_z_dd_nm = 0.0;  ///< eq 42 [N·m]
   int teeth_summed = 0;         ///< as InducedMoments::teeth_summed
 };
-
-/// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q);
-/// `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'.
-QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint& point,
-                         const ToothLoadPattern& pattern, bool continuous,
-                         const std::function<double(int)>& load_of);
 
 /// Eqs 5-43 for the double-prime moments alone, what a model prediction turns into the coupling
 /// frame: tooth_contact() then the quarter sums, without listing the teeth, their zones and the

@@ -30,12 +30,12 @@ ToothStress tooth_stress(const CouplingGeometry& coupling, double tooth_load_n,
   }
   // Hertz, cylinder (radius R_F) on a plane, both steel: E* = E / (2 (1 - nu^2)).
   const double e_star = d.youngs_modulus_pa / (2.0 * (1.0 - d.poisson_ratio * d.poisson_ratio));
-  const double line_length = coupling.working_depth_m() / std::cos(d.pressure_angle_rad);
+  const double line_length = coupling.working_depth_m() / coupling.cos_pressure_angle();
   const double r = coupling.crown_radius_m();
   result.contact_stress_pa = std::sqrt(tooth_load_n * e_star / (M_PI * line_length * r));
   result.contact_half_width_m = std::sqrt(4.0 * tooth_load_n * r / (M_PI * line_length * e_star));
   // Lewis/AGMA: sigma = W_t / (F_e m Y), weaker member's Y, 45 deg dispersion to the root.
-  const double tangential_load = tooth_load_n * std::cos(d.pressure_angle_rad);
+  const double tangential_load = tooth_load_n * coupling.cos_pressure_angle();
   const double tooth_height = 0.5 * (d.outer_diameter_m - d.root_diameter_m);
   const double loaded_face = std::min(d.facewidth_m, contact_length_m + 2.0 * tooth_height);
   const double form_factor = std::min(d.form_factor_hub, d.form_factor_sleeve);

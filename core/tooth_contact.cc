@@ -1,6 +1,7 @@
 #include "core/tooth_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/coupling_geometry.h"
@@ -9,25 +10,24 @@
 namespace gc {
 namespace {
 
-// Eq 18: chord of the crown circle R_F cut at depth delta_d [m].
-double contact_length_m(double crown_radius_m, double deformation_m) {
-  if (deformation_m <= 0.0) return 0.0;
-  const double depth = std::min(deformation_m, crown_radius_m);
-  return 2.0 * std::sqrt(crown_radius_m * crown_radius_m -
-                         (crown_radius_m - depth) * (crown_radius_m - depth));
+// Eq 18: chord of the crown circle R_F cut at depth delta_d > 0 [m].
+ToothBlock contact_length_m(double crown_radius_m, const ToothBlock& deformation_m) {
+  const ToothBlock depth = deformation_m.min(crown_radius_m);
+  return 2.0 * (crown_radius_m * crown_radius_m - (crown_radius_m - depth) * (crown_radius_m - depth)).sqrt();
 }
 
 }  // namespace
 
-ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
-                           const ContactOptions& options) {
+void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
+                   const ContactOptions& options, ToothContact& c) {
+  std::vector<ToothLoad> teeth = std::move(c.teeth);  // its storage is reused
+  c = ToothContact{};
   const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
   const int n = coupling.teeth();
   const double stiffness = coupling.mesh_stiffness_n_per_m();
   const double crown = coupling.crown_radius_m();
   const double half_face = 0.5 * coupling.facewidth_m();
 
-  ToothContact c;
   c.total_normal_load_n = pattern.total_normal_load_n;      // eq 7
   c.mean_tooth_load_n = pattern.mean_tooth_load_n;          // eq 20
   c.max_separation_m = pattern.max_separation_m;            // eq 11
@@ -38,33 +38,82 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
   c.max_contact_offset_m = pattern.max_contact_offset_m;    // eq 15
   c.z_axis_angle_rad = coupling.pressure_angle_rad() + point.direction_rad;
 
-  c.teeth.resize(n);
-  for (int j = 0; j < n; ++j) {
-    ToothLoad& tooth = c.teeth[j];
-    tooth.angle_rad = pattern.angle_rad(n, j);
-    tooth.load_n = pattern.load_n(coupling, j);                                      // eq 9
-    tooth.contact_offset_m = c.max_contact_offset_m * pattern.cos_theta(coupling, j);  // eq 16
-    tooth.deformation_m = tooth.load_n / stiffness;                                  // eq 17
-    tooth.contact_length_m = contact_length_m(crown, tooth.deformation_m);           // eq 18
-    const double begin = tooth.contact_offset_m - 0.5 * tooth.contact_length_m;    // eq 19
-    const double end = tooth.contact_offset_m + 0.5 * tooth.contact_length_m;
-    if (tooth.load_n > 0.0 && (begin < -half_face || end > half_face)) c.edge_loaded = true;
-    tooth.zone_begin_m = std::clamp(begin, -half_face, half_face);
-    tooth.zone_end_m = std::clamp(end, -half_face, half_face);
-    if (tooth.load_n > 0.0) ++c.teeth_in_contact;
-    if (tooth.load_n > c.max_tooth_load_n) {
-      c.max_tooth_load_n = tooth.load_n;
-      c.max_load_tooth = j;
+  teeth.resize(static_cast<std::size_t>(n));
+  ToothLoad* const table = teeth.data();
+  // Reductions in locals: the tooth table's stores could alias members of `c`.
+  int in_contact = 0, max_tooth = 0;
+  double max_load = 0.0, sum_loads = 0.0;
+  bool edge = false;
+  // Eq 9 and eq 16 run over a block of teeth as arrays. The division of eq 17 and the root of
+  // eq 18 cost most, so they run only over the loaded teeth of the block, gathered: an unloaded
+  // tooth has no deformation and no zone. The table and the reductions are filled tooth by tooth,
+  // so the sum of P_d keeps its order (and its bits).
+  for (Eigen::Index first = 0; first < n; first += kToothBlock) {
+    const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
+    const ToothBlock load = pattern.load_n(pattern.sin_theta(coupling, first, count));  // eq 9
+    const ToothBlock offset =
+        c.max_contact_offset_m * pattern.cos_theta(coupling, first, count);  // eq 16
+    ToothBlock loaded_load(count);
+    std::array<Eigen::Index, kToothBlock> loaded_tooth;
+    Eigen::Index loaded = 0;
+    for (Eigen::Index i = 0; i < count; ++i) {
+      loaded_load[loaded] = load[i];
+      loaded_tooth[static_cast<std::size_t>(loaded)] = i;
+      loaded += load[i] > 0.0;
     }
-    c.sum_tooth_loads_n += tooth.load_n;
+    const ToothBlock deformation = loaded_load.head(loaded) / stiffness;  // eq 17
+    const ToothBlock length = contact_length_m(crown, deformation);       // eq 18
+    const double* const base_angle = coupling.tooth_angle_rad().data() + first;
+    Eigen::Index k = 0;  // the next loaded tooth
+    for (Eigen::Index i = 0; i < count; ++i) {
+      const Eigen::Index j = first + i;
+      ToothLoad& tooth = table[j];
+      tooth.angle_rad = base_angle[i] + pattern.offset_alpha_rad;
+      tooth.load_n = load[i];
+      tooth.contact_offset_m = offset[i];
+      if (k < loaded && loaded_tooth[static_cast<std::size_t>(k)] == i) {
+        const double begin = offset[i] - 0.5 * length[k];  // eq 19
+        const double end = offset[i] + 0.5 * length[k];
+        tooth.deformation_m = deformation[k];
+        tooth.contact_length_m = length[k];
+        tooth.zone_begin_m = std::clamp(begin, -half_face, half_face);
+        tooth.zone_end_m = std::clamp(end, -half_face, half_face);
+        ++in_contact;
+        edge = edge || begin < -half_face || end > half_face;
+        sum_loads += load[i];  // an unloaded tooth's +0 would change no bit
+        if (load[i] > max_load) {
+          max_load = load[i];
+          max_tooth = static_cast<int>(j);
+        }
+        ++k;
+      } else {
+        tooth.deformation_m = 0.0;
+        tooth.contact_length_m = 0.0;
+        // Eq 19 with F_c = 0; + 0.0 turns an offset of -0 (no misalignment) into +0, as there.
+        tooth.zone_begin_m = std::clamp(offset[i], -half_face, half_face);
+        tooth.zone_end_m = std::clamp(offset[i] + 0.0, -half_face, half_face);
+      }
+    }
   }
+  c.teeth_in_contact = in_contact;
+  c.max_load_tooth = max_tooth;
+  c.max_tooth_load_n = max_load;
+  c.sum_tooth_loads_n = sum_loads;
+  c.edge_loaded = edge;
+  c.teeth = std::move(teeth);
 
   require_load_carried(pattern, c.sum_tooth_loads_n, point, options.min_load_fraction);
   c.slices = options.slices;
   c.continuous_quarter_sums = options.continuous_quarter_sums;
-  const ToothLoad& governing = c.teeth[c.max_load_tooth];
+  const ToothLoad& governing = c.teeth[static_cast<std::size_t>(c.max_load_tooth)];
   c.max_stress = tooth_stress(coupling, governing.load_n, governing.contact_length_m);
-  return c;
+}
+
+ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
+                           const ContactOptions& options) {
+  ToothContact contact;
+  tooth_contact(coupling, point, options, contact);
+  return contact;
 }
 
 Eigen::VectorXd ToothContact::slice_weights() const {

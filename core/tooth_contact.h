@@ -84,4 +84,10 @@ struct ToothContact {
 ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
                            const ContactOptions& options = {});
 
+/// The same into `contact`, reusing its tooth table's storage: a caller evaluating many points
+/// keeps one ToothContact and allocates nothing once it holds N teeth. Every member is
+/// overwritten; on a throw `contact` holds no result.
+void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
+                   const ContactOptions& options, ToothContact& contact);
+
 }  // namespace gc

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Core>
+
 #include "core/coupling_geometry.h"
 #include "core/load_sharing.h"
 #include "core/operating_point.h"
@@ -15,6 +17,12 @@
 namespace gc {
 
 struct ContactOptions;
+
+/// Teeth evaluated at once as arrays: a block lives on the stack (an evaluation allocates
+/// nothing) and is long enough for the vector units, short enough to stay in L1 beside the
+/// tooth table it fills.
+inline constexpr int kToothBlock = 32;
+using ToothBlock = Eigen::Array<double, Eigen::Dynamic, 1, Eigen::ColMajor, kToothBlock, 1>;
 
 struct ToothLoadPattern {
   double total_normal_load_n = 0.0;     ///< P_t = T / (R cos phi), eq 7 [N]
@@ -29,19 +37,33 @@ struct ToothLoadPattern {
   double sin_alpha = 0.0;
   double cos_alpha = 1.0;
 
-  /// theta_j = 2 pi j / N + alpha [rad].
-  double angle_rad(int teeth, int j) const { return 2.0 * M_PI * j / teeth + offset_alpha_rad; }
-  /// sin and cos of theta_j by the angle-sum rule on the coupling's tooth table.
+  /// sin and cos of theta_j = 2 pi j / N + alpha by the angle-sum rule on the coupling's tooth
+  /// table, for one tooth and for the block of `count` teeth from `first`. The block forms
+  /// are the same operations lane by lane, so both give the same bits.
   double sin_theta(const CouplingGeometry& coupling, int j) const {
     return coupling.tooth_sin()[j] * cos_alpha + coupling.tooth_cos()[j] * sin_alpha;
   }
   double cos_theta(const CouplingGeometry& coupling, int j) const {
     return coupling.tooth_cos()[j] * cos_alpha - coupling.tooth_sin()[j] * sin_alpha;
   }
+  ToothBlock sin_theta(const CouplingGeometry& coupling, Eigen::Index first, Eigen::Index count) const {
+    return coupling.tooth_sin().segment(first, count) * cos_alpha +
+           coupling.tooth_cos().segment(first, count) * sin_alpha;
+  }
+  ToothBlock cos_theta(const CouplingGeometry& coupling, Eigen::Index first, Eigen::Index count) const {
+    return coupling.tooth_cos().segment(first, count) * cos_alpha -
+           coupling.tooth_sin().segment(first, count) * sin_alpha;
+  }
   /// Eq 9 as read: P_d = P_i [1 - (z_o / z_e) sin^2(theta_j)], clipped at zero [N].
   double load_n(const CouplingGeometry& coupling, int j) const {
     const double s = sin_theta(coupling, j);
     return peak_tooth_load_n * std::max(0.0, 1.0 - separation_ratio * s * s);
+  }
+  /// As std::max(0.0, x) above, a NaN share (0 / 0: a torque so small that z_e underflows, with
+  /// no misalignment) gives no load; Eigen's max would keep the NaN.
+  ToothBlock load_n(const ToothBlock& sin_theta) const {
+    const ToothBlock share = 1.0 - separation_ratio * sin_theta * sin_theta;
+    return peak_tooth_load_n * (share > 0.0).select(share, 0.0);
   }
 };
 

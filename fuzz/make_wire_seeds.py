@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes the seed corpus of wire_request_fuzzer (fuzz/corpus/wire_request/): every calculation
-with a catalogue name and with each bundled coupling inline, in the byte layout the fuzzer reads
-(docs/fuzzing.md, "wire_request_fuzzer's input"). Run from the repository root.
+"""Writes the seed corpora of wire_request_fuzzer (fuzz/corpus/wire_request/: every calculation
+with a catalogue name and with each bundled coupling inline) and batch_request_fuzzer
+(fuzz/corpus/batch_request/: every batch calculation over a catalogue and an inline coupling,
+good cases beside bad ones), in the byte layouts the fuzzers read (docs/fuzzing.md, "wire_request_fuzzer's input"). Run from the repository root.
 
 `make_wire_seeds.py decode FILE` prints the request a fuzzer input (e.g. a crash) stands for."""
 import math
@@ -50,11 +51,24 @@ def definition(fields):
                              float(fields["bending_stress_pa"]))
 
 
+OPTIONS = struct.pack("<diiddB", 1e-9, 100, 20, 0.0, 0.9, 0)
+BATCH_CALCULATIONS = ["load_case", "induced_moments", "jam_angle", "restoring_torque"]
+
+
 def tail():
     operating_point = struct.pack("<dddd", 1.0e6, 0.002, 0.3, 0.1)
-    options = struct.pack("<diiddB", 1e-9, 100, 20, 0.0, 0.9, 0)
     measurement = struct.pack("<ddddd", 1.0e5, 0.0039317, 0.0, -142228.4, 8808.9)
-    return operating_point + options + measurement
+    return operating_point + OPTIONS + measurement
+
+
+def batch(index, inline):
+    """Couplings nrel_upwind by name and `inline`; a good case on each, a torque of zero, an index
+    past the couplings and a misalignment beyond the jam angle."""
+    cases = [(0, 1.0e6, 0.002, 0.3, 0.1), (1, 1.5e6, 0.004, 0.0, 0.12), (0, 0.0, 0.002, 0.0, 0.1),
+             (7, 1.0e6, 0.002, 0.0, 0.1), (0, 1.0e6, 0.5, 0.0, 0.1)]
+    out = struct.pack("<BBB", index, 2, 0) + string("nrel_upwind") + struct.pack("<B", 1)
+    out += definition(inline) + OPTIONS + struct.pack("<H", len(cases))
+    return out + b"".join(struct.pack("<Idddd", *case) for case in cases)
 
 
 class Reader:
@@ -116,6 +130,10 @@ def main():
         for path in couplings:
             (out_dir / f"{calculation}_inline_{path.stem}").write_bytes(
                 struct.pack("<BB", index, 1) + definition(read_coupling(path)) + tail())
+    batch_dir = root / "fuzz/corpus/batch_request"
+    batch_dir.mkdir(parents=True, exist_ok=True)
+    for index, calculation in enumerate(BATCH_CALCULATIONS):
+        (batch_dir / calculation).write_bytes(batch(index, read_coupling(couplings[0])))
 
 
 if __name__ == "__main__":

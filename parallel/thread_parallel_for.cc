@@ -1,34 +1,71 @@
 #include "parallel/thread_parallel_for.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <thread>
 #include <vector>
 
 namespace gc {
 
+namespace {
+
+unsigned resolved(unsigned threads) {
+  return threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
+}
+
+// Runs run(0) .. run(workers - 1), run(0) on the caller; rethrows the first exception.
+void on_threads(std::size_t workers, const std::function<void(std::size_t)>& run) {
+  std::vector<std::exception_ptr> errors(workers);
+  {
+    std::vector<std::jthread> threads;
+    for (std::size_t w = 1; w < workers; ++w) {
+      threads.emplace_back([&, w] {
+        try {
+          run(w);
+        } catch (...) {
+          errors[w] = std::current_exception();
+        }
+      });
+    }
+    try {
+      run(0);
+    } catch (...) {
+      errors[0] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : errors) if (e) std::rethrow_exception(e);
+}
+
+}  // namespace
+
 ParallelFor thread_parallel_for(unsigned threads) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = resolved(threads);
   return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
     const std::size_t chunks = std::min<std::size_t>(threads, count);
     if (chunks <= 1) {
       if (count > 0) body(0, count);
       return;
     }
-    std::vector<std::exception_ptr> errors(chunks);
-    const auto run = [&](std::size_t c) {
-      try {
-        body(c * count / chunks, (c + 1) * count / chunks);
-      } catch (...) {
-        errors[c] = std::current_exception();
-      }
-    };
-    {
-      std::vector<std::jthread> workers;
-      for (std::size_t c = 1; c < chunks; ++c) workers.emplace_back(run, c);
-      run(0);
+    on_threads(chunks, [&](std::size_t c) { body(c * count / chunks, (c + 1) * count / chunks); });
+  };
+}
+
+ParallelFor chunked_parallel_for(unsigned threads) {
+  threads = resolved(threads);
+  return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    const std::size_t workers = std::min<std::size_t>(threads, count);
+    if (workers <= 1) {
+      if (count > 0) body(0, count);
+      return;
     }
-    for (const std::exception_ptr& e : errors) if (e) std::rethrow_exception(e);
+    const std::size_t chunk = std::max<std::size_t>(1, count / (16 * workers));
+    std::atomic<std::size_t> next{0};
+    on_threads(workers, [&](std::size_t) {
+      for (std::size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk)) {
+        body(begin, std::min(count, begin + chunk));
+      }
+    });
   };
 }
 

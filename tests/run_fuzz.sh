@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-5}
 dir=build-fuzz
-targets=(recording_csv batch_csv coupling_text model_text wire_request)
+targets=(recording_csv batch_csv coupling_text model_text wire_request batch_request)
 
 cmake -S . -B "$dir" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DGC_FUZZ=ON \
   -DGC_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug >/dev/null

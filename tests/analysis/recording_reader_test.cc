@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -305,6 +306,48 @@ TEST(RecordingReader, KeepsAtMostTheRequestedChunk) {
   while (reader.next_chunk(chunk, 1000)) sizes.push_back(chunk.size());
   EXPECT_EQ(sizes, (std::vector<std::size_t>{1000, 1000, 500}));
   EXPECT_EQ(reader.rows_read(), 2500u);
+}
+
+// Rows are parsed on several threads in batches of thousands; what is read (samples, their
+// derived inputs, the excluded rows and their order) is the same as on one thread, with bad rows
+// and a time going back on either side of a batch's end.
+TEST(RecordingReader, ReadsTheSameOnOneAndOnSeveralThreads) {
+  std::string text = kHeader;
+  for (int i = 0; i < 20000; ++i) {
+    const double time = i % 8191 == 0 && i > 0 ? i - 2.5 : i;  // goes back now and then
+    text += i % 997 == 0 ? fmt::format("{},x,0.1,0,1,2\n", time)
+                         : fmt::format("{},{},{},0,{},2\n", time, 1e6 + i, 0.1 + 1e-3 * (i % 50), i);
+  }
+  const std::string path = temp_path("threads") + ".csv";
+  write_file(path, text);
+  auto read = [&](unsigned threads) {
+    RecordingOptions options;
+    options.threads = threads;
+    RecordingReader reader(path, options);
+    std::vector<RecordedSample> all, chunk;
+    while (reader.next_chunk(chunk, 5000)) all.insert(all.end(), chunk.begin(), chunk.end());
+    return std::tuple{all, reader.problems(), reader.rows_read(), reader.loading_dead_band_rad()};
+  };
+  const auto [one, one_problems, one_rows, one_band] = read(1);
+  const auto [three, three_problems, three_rows, three_band] = read(3);
+  EXPECT_EQ(one_rows, 20000u);
+  EXPECT_EQ(three_rows, one_rows);
+  EXPECT_EQ(three_band, one_band);
+  ASSERT_EQ(three.size(), one.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(three[i].input.time_s, one[i].input.time_s);
+    EXPECT_EQ(three[i].input.torque_nm, one[i].input.torque_nm);
+    EXPECT_EQ(three[i].input.misalignment_rad, one[i].input.misalignment_rad);
+    EXPECT_EQ(three[i].input.loading_direction, one[i].input.loading_direction);
+    EXPECT_EQ(three[i].input.torque_rate_nm_s, one[i].input.torque_rate_nm_s);
+    EXPECT_EQ(three[i].measured.y_nm, one[i].measured.y_nm);
+  }
+  ASSERT_EQ(three_problems.size(), one_problems.size());
+  EXPECT_GT(one_problems.size(), 20u);  // 21 bad torques, 2 times going back
+  for (std::size_t i = 0; i < one_problems.size(); ++i) {
+    EXPECT_EQ(three_problems[i].line, one_problems[i].line);
+    EXPECT_EQ(three_problems[i].message, one_problems[i].message);
+  }
 }
 
 TEST(RecordingReader, CountsEveryExcludedRowBeyondTheKeptProblems) {

@@ -133,6 +133,21 @@ TEST(ToothContact, UnloadedTeethHaveNoContactZone) {
   EXPECT_EQ(side.contact_length_m, 0.0);
 }
 
+// Found by wire_request_fuzzer on the array form of eq 9: a torque of 1.9e-317 N·m (z_e
+// underflows to 0) with a misalignment of 2.6e-251 rad (z_o is 0) makes z_o / z_e = 0 / 0; eq 9's
+// clip at zero must give no load there, as it does for any other share below zero, not NaN.
+TEST(ToothContact, AVanishingTorqueAndMisalignmentLoadNoToothWithNaN) {
+  const CouplingGeometry coupling(nrel_upwind());
+  ContactOptions options;
+  options.min_load_fraction = 0.0;
+  const ToothContact c = tooth_contact(coupling, {1.942745e-317, 2.6353696886160664e-251, 0.3, 0.0}, options);
+  for (const ToothLoad& tooth : c.teeth) {
+    EXPECT_EQ(tooth.load_n, 0.0);
+    EXPECT_EQ(tooth.deformation_m, 0.0);
+  }
+  EXPECT_EQ(c.teeth_in_contact, 0);
+}
+
 TEST(ToothContact, MaxLoadSitsOnTheZDoublePrimeAxis) {
   // Eq 9 peaks where sin(theta_j) = 0: the tooth nearest z'' or its opposite (alpha shifts
   // the pattern by up to a quarter pitch, so either side may hold the single largest load).
