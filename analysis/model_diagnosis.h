@@ -7,7 +7,7 @@
 #include "analysis/recording_csv.h"
 #include "analysis/validation_result.h"
 #include "codec/model_file.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "idl/diagnosis.pb.h"
 
 namespace gc::analysis {

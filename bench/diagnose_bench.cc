@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression.h"
 #include "core/synthesis/load_sequence.h"

@@ -18,7 +18,7 @@ install(TARGETS ${gc_public_libraries} EXPORT gearcoupling-targets)
 
 # Public headers: what the public libraries' headers include, the generated ones too.
 set(gc_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/gearcoupling)
-install(DIRECTORY core codec DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY core codec diagnosis DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
   FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
 if(GC_BUILD_SERVICE)

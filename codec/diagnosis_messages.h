@@ -1,8 +1,8 @@
-// Diagnosis results (core/diagnosis/) as gearcoupling.v1 messages (idl/diagnosis.proto), for
+// Diagnosis results (diagnosis/) as gearcoupling.v1 messages (idl/diagnosis.proto), for
 // `gearcoupling diagnose --json`.
 #pragma once
 
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "idl/diagnosis.pb.h"
 
 namespace gc::codec {

@@ -8,10 +8,10 @@
 #include <cmath>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/claim_review.h"
-#include "core/diagnosis/cycle_period.h"
-#include "core/diagnosis/formula_search.h"
-#include "core/diagnosis/model_residuals.h"
+#include "diagnosis/claim_review.h"
+#include "diagnosis/cycle_period.h"
+#include "diagnosis/formula_search.h"
+#include "diagnosis/model_residuals.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
 #include "core/synthesis/load_sequence.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/coupling_model.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/effects/effect_registry.h"
 #include "core/synthesis/load_sequence.h"
 

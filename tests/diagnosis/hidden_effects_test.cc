@@ -11,7 +11,7 @@
 #include <set>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/model_error.h"
 #include "core/synthesis/load_sequence.h"
 #include "core/synthesis/synthesize.h"

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression_terms.h"
 #include "core/synthesis/synthesize.h"
