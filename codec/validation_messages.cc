@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/validation/worst_regions.h"
+#include "diagnosis/validation/worst_regions.h"
 
 namespace gc::codec {
 namespace {

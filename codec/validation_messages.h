@@ -1,11 +1,11 @@
-// Validation results (core/validation/) as gearcoupling.v1 messages (idl/validation.proto),
+// Validation results (diagnosis/validation/) as gearcoupling.v1 messages (idl/validation.proto),
 // for --json and for the HTML report's data.
 #pragma once
 
 #include <string_view>
 
-#include "core/validation/error_bins.h"
-#include "core/validation/plot_points.h"
+#include "diagnosis/validation/error_bins.h"
+#include "diagnosis/validation/plot_points.h"
 #include "idl/validation.pb.h"
 
 namespace gc::codec {

@@ -11,8 +11,8 @@
 #include "core/restoring_torque.h"
 #include "core/synthesis/load_sequence.h"
 #include "core/synthesis/synthesize.h"
-#include "core/validation/error_bins.h"
-#include "core/validation/worst_regions.h"
+#include "diagnosis/validation/error_bins.h"
+#include "diagnosis/validation/worst_regions.h"
 #include "test_models.h"
 
 namespace gc {

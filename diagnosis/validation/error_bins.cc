@@ -1,4 +1,4 @@
-#include "core/validation/error_bins.h"
+#include "diagnosis/validation/error_bins.h"
 
 #include <algorithm>
 #include <cmath>

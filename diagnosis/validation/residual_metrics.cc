@@ -1,4 +1,4 @@
-#include "core/validation/residual_metrics.h"
+#include "diagnosis/validation/residual_metrics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/recorded_sample.h"
-#include "core/validation/residual_metrics.h"
+#include "diagnosis/validation/residual_metrics.h"
 
 namespace gc {
 

@@ -1,4 +1,4 @@
-#include "core/validation/plot_points.h"
+#include "diagnosis/validation/plot_points.h"
 
 namespace gc {
 

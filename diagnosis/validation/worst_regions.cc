@@ -1,4 +1,4 @@
-#include "core/validation/worst_regions.h"
+#include "diagnosis/validation/worst_regions.h"
 
 #include <algorithm>
 #include <cmath>

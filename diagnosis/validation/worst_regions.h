@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/validation/error_bins.h"
+#include "diagnosis/validation/error_bins.h"
 
 namespace gc {
 
