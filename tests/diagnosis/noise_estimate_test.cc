@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "diagnosis/noise_estimate.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 
 namespace gc {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "diagnosis/effect_fit.h"
 #include "core/effects/effect_registry.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 

@@ -17,7 +17,7 @@
 #include "diagnosis/ringing_estimate.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 

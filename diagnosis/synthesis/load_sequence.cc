@@ -1,4 +1,4 @@
-#include "core/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/load_sequence.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 
 #include <cmath>
 #include <numbers>
