@@ -22,13 +22,13 @@ install(DIRECTORY core codec diagnosis DESTINATION ${gc_include_dir} FILES_MATCH
 install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
   FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
 if(GC_BUILD_SERVICE)
-  # What clients/remote/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
+  # What client/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
   install(FILES protocol/batch.h protocol/calculation.h protocol/calculation_types.h protocol/dds_error.h
                 protocol/jam_angle_result.h protocol/requests.h
     DESTINATION ${gc_include_dir}/protocol)
-  install(FILES clients/remote/client.h clients/remote/client_error.h
-                clients/remote/client_types.h clients/remote/reply_error.h
-    DESTINATION ${gc_include_dir}/clients/remote)
+  install(FILES client/client.h client/client_error.h
+                client/client_types.h client/reply_error.h
+    DESTINATION ${gc_include_dir}/client)
 endif()
 
 # find_package(gearcoupling): the targets, and the packages their headers need.

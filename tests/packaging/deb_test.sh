@@ -88,7 +88,7 @@ in_package() {  # in_package PACKAGE PATH-PATTERN...
 in_package libgearcoupling0 '/usr/lib/[^/]+/libgearcoupling-(core|codec|client)\.so\.0\.1\.0' \
   '/usr/share/doc/libgearcoupling0/copyright'
 in_package libgearcoupling-dev '/usr/lib/[^/]+/libgearcoupling-core\.so' \
-  '/usr/include/gearcoupling/clients/remote/client\.h' '/usr/include/gearcoupling/core/jam_angle\.h' \
+  '/usr/include/gearcoupling/client/client\.h' '/usr/include/gearcoupling/core/jam_angle\.h' \
   '/usr/include/gearcoupling/idl/coupling\.pb\.h' \
   '/usr/lib/[^/]+/cmake/gearcoupling/gearcoupling-config\.cmake' \
   '/usr/lib/[^/]+/pkgconfig/gearcoupling-(core|codec|client)\.pc'

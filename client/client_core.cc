@@ -1,9 +1,9 @@
-#include "clients/remote/client_core.h"
+#include "client/client_core.h"
 
 #include <algorithm>
 #include <thread>
 
-#include "clients/remote/instance_info.h"
+#include "client/instance_info.h"
 
 #include <fmt/format.h>
 

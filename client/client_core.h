@@ -1,4 +1,4 @@
-// The implementation of gc::client::Client (clients/remote/client.h, the public API and its
+// The implementation of gc::client::Client (client/client.h, the public API and its
 // documentation): DDS entities, discovery, pending requests. Not installed.
 #pragma once
 
@@ -15,9 +15,9 @@
 #include <thread>
 #include <vector>
 
-#include "clients/remote/client_error.h"
-#include "clients/remote/client_types.h"
-#include "clients/remote/reply_error.h"
+#include "client/client_error.h"
+#include "client/client_types.h"
+#include "client/reply_error.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/dds_entity.h"
 #include "protocol/requests.h"

@@ -2,7 +2,7 @@
 // Example (compiled by tests/docs/doc_snippets.py, ctest docs.snippets):
 //
 //   #include <cstdio>
-//   #include "clients/remote/client.h"
+//   #include "client/client.h"
 //
 //   using gc::protocol::Calculation;
 //   gc::client::Client client({.domain = 7, .timeout = std::chrono::seconds(5)});
@@ -51,9 +51,9 @@
 #include <variant>
 #include <vector>
 
-#include "clients/remote/client_error.h"
-#include "clients/remote/client_types.h"
-#include "clients/remote/reply_error.h"
+#include "client/client_error.h"
+#include "client/client_types.h"
+#include "client/reply_error.h"
 #include "protocol/calculation.h"
 #include "protocol/calculation_types.h"
 #include "protocol/dds_error.h"

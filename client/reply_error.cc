@@ -1,4 +1,4 @@
-#include "clients/remote/reply_error.h"
+#include "client/reply_error.h"
 
 #include <cstdlib>
 #include <optional>

@@ -1,4 +1,4 @@
-// The value types of the client's API (clients/remote/client.h): its options, what it knows of
+// The value types of the client's API (client/client.h): its options, what it knows of
 // the service instances, what happened to its requests, and a call's outcome. No Cyclone types.
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "clients/remote/instance_info.h"
+#include "client/instance_info.h"
 
 #include <exception>
 

@@ -1,4 +1,4 @@
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 #include <sched.h>
 
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "clients/remote/client_core.h"
+#include "client/client_core.h"
 #include "core/model_error.h"
 #include "protocol/reply_status.h"
 

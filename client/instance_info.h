@@ -3,7 +3,7 @@
 // installed: it names idlc's generated type.
 #pragma once
 
-#include "clients/remote/client_types.h"
+#include "client/client_types.h"
 #include "gearcoupling.h"
 
 namespace gc::client {
