@@ -1,4 +1,4 @@
-#include "codec/diagnosis_messages.h"
+#include "analysis/diagnosis_messages.h"
 
 #include "codec/count_field.h"
 

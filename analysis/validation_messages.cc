@@ -1,4 +1,4 @@
-#include "codec/validation_messages.h"
+#include "analysis/validation_messages.h"
 
 #include "codec/count_field.h"
 
