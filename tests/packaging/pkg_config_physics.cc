@@ -1,5 +1,6 @@
 // Compiled by tests/packaging/pkg_config_test.sh with only
-// `pkg-config --cflags --libs gearcoupling-core` against the installed package.
+// `pkg-config --cflags --libs gearcoupling-physics` (and again with gearcoupling-core, which
+// brings it) against the installed package.
 #include <cmath>
 #include <cstdio>
 
