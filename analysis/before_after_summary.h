@@ -1,5 +1,5 @@
 // validate --add: the model before and after the added effect, side by side per channel, overall
-// and in every bin of every input (the bins of both runs are the same, core/validation/error_bins.h).
+// and in every bin of every input (the bins of both runs are the same, diagnosis/validation/error_bins.h).
 #pragma once
 
 #include <cstdio>

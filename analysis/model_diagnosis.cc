@@ -4,7 +4,7 @@
 
 #include "analysis/effect_spec.h"
 #include "codec/count_field.h"
-#include "codec/diagnosis_messages.h"
+#include "analysis/diagnosis_messages.h"
 
 namespace gc::analysis {
 

@@ -7,12 +7,12 @@
 #include "analysis/recording_csv.h"
 #include "analysis/validation_result.h"
 #include "codec/model_file.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "idl/diagnosis.pb.h"
 
 namespace gc::analysis {
 
-/// The diagnosis as data (codec/diagnosis_messages.h) with the recording's name, the model's,
+/// The diagnosis as data (analysis/diagnosis_messages.h) with the recording's name, the model's,
 /// the recording check's scale warnings and the recording's ignored columns.
 gearcoupling::v1::DiagnosisResult diagnosis_result(const Diagnosis& diagnosis,
                                                    std::string_view recording_name,

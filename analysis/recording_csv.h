@@ -24,7 +24,7 @@
 
 #include "analysis/csv_fields.h"
 #include "analysis/derived_inputs.h"
-#include "core/diagnosis/parallel_for.h"
+#include "diagnosis/parallel_for.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
 

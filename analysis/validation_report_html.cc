@@ -10,7 +10,7 @@
 #include "analysis/atomic_file.h"
 #include "analysis/report_scale.h"
 #include "codec/result_json.h"
-#include "codec/validation_messages.h"
+#include "analysis/validation_messages.h"
 #include "validation_report_js.h"  // kValidationReportJs, generated from validation_report.js
 
 namespace gc::analysis {

@@ -7,7 +7,7 @@
 
 #include "analysis/input_names.h"
 #include "codec/count_field.h"
-#include "codec/validation_messages.h"
+#include "analysis/validation_messages.h"
 #include "core/model_error.h"
 
 namespace gc::analysis {

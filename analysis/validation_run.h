@@ -12,8 +12,8 @@
 #include "analysis/recording_csv.h"
 #include "analysis/scale_check.h"
 #include "core/coupling_model.h"
-#include "core/validation/error_bins.h"
-#include "core/validation/plot_points.h"
+#include "diagnosis/validation/error_bins.h"
+#include "diagnosis/validation/plot_points.h"
 
 namespace gc::analysis {
 

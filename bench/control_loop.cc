@@ -42,7 +42,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // diagnose over 100,000 samples with the whole library, the refinements of the model's own
 // effects and the discrepancy stage (issue 8: under 5 s on the 2-core machine). Recordings: the
-// paper's applied-moment sweeps (core/synthesis) for the upwind coupling, 2 kN·m of noise, from
+// paper's applied-moment sweeps (diagnosis/synthesis) for the upwind coupling, 2 kN·m of noise, from
 // the paper's model plus one hidden effect (the search runs twice: finds it, then finds noise),
 // plus a moment only a formula explains (formula, then noise), or plus structure in time (issue
 // 22): a 3.7 s interference, a step of one channel, a 0.3 s skew of the moment channels.
@@ -10,11 +10,11 @@
 #include <cmath>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/effects/effect_registry.h"
 #include "core/effects/expression.h"
-#include "core/synthesis/load_sequence.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "parallel/thread_parallel_for.h"
 #include "tests/core/nrel_couplings.h"
 

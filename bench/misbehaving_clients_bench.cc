@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include <thread>
 #include <vector>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 namespace {
 

@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "bench/percentile.h"
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 namespace {
 

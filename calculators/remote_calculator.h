@@ -16,7 +16,7 @@
 #include <optional>
 
 #include "calculators/calculator.h"
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 namespace gc::calculators {
 

@@ -3,7 +3,9 @@
 # deployment files. The Debian packages (debian/) are this install under /usr, split.
 include(CMakePackageConfigHelpers)
 
-set(gc_public_libraries gc_core gc_codec)
+# The physics, the diagnosis above it, gearcoupling::core (an interface target bringing both:
+# the one library they were before issue 41), the codec; the client with the service.
+set(gc_public_libraries gc_physics gc_diagnosis gc_core gc_codec)
 set(gc_programs gearcoupling)
 if(GC_BUILD_SERVICE)
   list(APPEND gc_public_libraries gc_client)
@@ -18,17 +20,35 @@ install(TARGETS ${gc_public_libraries} EXPORT gearcoupling-targets)
 
 # Public headers: what the public libraries' headers include, the generated ones too.
 set(gc_include_dir ${CMAKE_INSTALL_INCLUDEDIR}/gearcoupling)
-install(DIRECTORY core codec DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY core codec diagnosis DESTINATION ${gc_include_dir} FILES_MATCHING PATTERN "*.h")
+# The headers' paths before issue 41 (core/diagnosis/, core/validation/, core/synthesis/,
+# clients/remote/), each a forward to where the header is now, so that code written against
+# gearcoupling::core or the client compiles unchanged.
+set(gc_forwards ${PROJECT_BINARY_DIR}/forwarding_headers)
+file(GLOB gc_moved_headers RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS
+  diagnosis/*.h diagnosis/validation/*.h diagnosis/synthesis/*.h)
+if(GC_BUILD_SERVICE)
+  list(APPEND gc_moved_headers client/client.h client/client_error.h client/client_types.h
+                               client/reply_error.h)
+endif()
+foreach(header IN LISTS gc_moved_headers)
+  string(REGEX REPLACE "^diagnosis/(validation/|synthesis/)" "core/\\1" old "${header}")
+  string(REGEX REPLACE "^diagnosis/" "core/diagnosis/" old "${old}")
+  string(REGEX REPLACE "^client/" "clients/remote/" old "${old}")
+  file(CONFIGURE OUTPUT ${gc_forwards}/${old} CONTENT
+    "// ${old} is now ${header} (issue 41): include that.\n#pragma once\n#include \"${header}\"\n")
+endforeach()
+install(DIRECTORY ${gc_forwards}/ DESTINATION ${gc_include_dir})
 install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
   FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
 if(GC_BUILD_SERVICE)
-  # What clients/remote/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
+  # What client/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
   install(FILES protocol/batch.h protocol/calculation.h protocol/calculation_types.h protocol/dds_error.h
                 protocol/jam_angle_result.h protocol/requests.h
     DESTINATION ${gc_include_dir}/protocol)
-  install(FILES clients/remote/client.h clients/remote/client_error.h
-                clients/remote/client_types.h clients/remote/reply_error.h
-    DESTINATION ${gc_include_dir}/clients/remote)
+  install(FILES client/client.h client/client_error.h
+                client/client_types.h client/reply_error.h
+    DESTINATION ${gc_include_dir}/client)
 endif()
 
 # find_package(gearcoupling): the targets, and the packages their headers need.
@@ -41,18 +61,33 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/gearcoupling-config-versi
 install(FILES ${PROJECT_BINARY_DIR}/gearcoupling-config.cmake
   ${PROJECT_BINARY_DIR}/gearcoupling-config-version.cmake DESTINATION ${gc_cmake_dir})
 
-# pkg-config: gearcoupling-core, -codec, -client. Each names only the pkg-config modules its
+# pkg-config: gearcoupling-physics, -diagnosis, -codec, -client, and -core (no library of its
+# own: it requires the physics and the diagnosis). Each names only the pkg-config modules its
 # headers need (the client's need no Cyclone: it links libddsc privately). The prefix is written
 # at install time (cmake/install_pkg_config.cmake), absolute, as Debian's own .pc files have it:
 # `cmake --install --prefix P` gets P, the .deb /usr.
-set(gc_pc_core_requires "eigen3")
-set(gc_pc_codec_requires "gearcoupling-core protobuf")
-set(gc_pc_client_requires "gearcoupling-core")
+set(gc_pc_physics_requires "eigen3")
+set(gc_pc_diagnosis_requires "gearcoupling-physics")
+set(gc_pc_core_requires "gearcoupling-physics gearcoupling-diagnosis")
+set(gc_pc_codec_requires "gearcoupling-physics protobuf")
+set(gc_pc_client_requires "gearcoupling-physics")
+set(gc_pc_physics_description "the model of the paper with its effects")
+set(gc_pc_diagnosis_description "the model against measurement (validation, synthesis, diagnosis)")
+set(gc_pc_core_description "the physics and the diagnosis (gearcoupling-physics, -diagnosis)")
+set(gc_pc_codec_description "coupling and model files, results as JSON")
+set(gc_pc_client_description "calls to gearcoupling-service over DDS")
 set(gc_pc_prefix "@GC_PC_PREFIX@")  # left for install time
 set(gc_pc_names "")
 foreach(target IN LISTS gc_public_libraries)
   get_target_property(gc_pc_name ${target} EXPORT_NAME)
   set(gc_pc_requires ${gc_pc_${gc_pc_name}_requires})
+  set(gc_pc_description ${gc_pc_${gc_pc_name}_description})
+  get_target_property(gc_pc_type ${target} TYPE)
+  if(gc_pc_type STREQUAL "INTERFACE_LIBRARY")
+    set(gc_pc_libs "")
+  else()
+    set(gc_pc_libs "Libs: -L\${libdir} -lgearcoupling-${gc_pc_name}")
+  endif()
   configure_file(cmake/gearcoupling.pc.in
     ${PROJECT_BINARY_DIR}/pkgconfig/gearcoupling-${gc_pc_name}.pc.in @ONLY)
   list(APPEND gc_pc_names gearcoupling-${gc_pc_name})

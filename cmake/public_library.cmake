@@ -1,7 +1,7 @@
 # gc_public_library(<target> <name>): makes <target> the installed, exported shared library
 # libgearcoupling-<name>.so.<major> (SONAME), known as gearcoupling::<name> both to a project
 # that finds the installed package and to one that adds this tree with add_subdirectory.
-# Headers are included as "core/jam_angle.h", "clients/remote/client.h", ...: from the source
+# Headers are included as "core/jam_angle.h", "client/client.h", ...: from the source
 # tree when building, from include/gearcoupling once installed.
 function(gc_public_library target name)
   add_library(gearcoupling::${name} ALIAS ${target})

@@ -4,7 +4,7 @@
 
 #include "analysis/validation_summary.h"
 #include "core/model_error.h"
-#include "core/validation/worst_regions.h"
+#include "diagnosis/validation/worst_regions.h"
 
 namespace gc::live {
 

@@ -1,6 +1,6 @@
 // One test cell under the monitor, without DDS: its model, the run it is in, the samples it
 // took and refused, and the model's health over a rolling window of measurement time, measured
-// as `validate` measures a recording (core/validation/). The monitor (live/monitor.h) keeps one
+// as `validate` measures a recording (diagnosis/validation/). The monitor (live/monitor.h) keeps one
 // per test cell and feeds it from the measurement topic.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include "analysis/derived_inputs.h"
 #include "analysis/scale_check.h"
 #include "core/recorded_sample.h"
-#include "core/validation/error_bins.h"
+#include "diagnosis/validation/error_bins.h"
 #include "live/cell_model.h"
 #include "live/learning_status.h"
 #include "live/sample_window.h"

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/model_error.h"
 #include "live/background_priority.h"
 

@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/diagnosis/parallel_for.h"
+#include "diagnosis/parallel_for.h"
 #include "core/recorded_sample.h"
 #include "live/cell_model.h"
 #include "live/proposal.h"

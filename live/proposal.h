@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/recorded_sample.h"
 #include "live/cell_model.h"
 

@@ -1,8 +1,8 @@
-// A ParallelFor (core/diagnosis/parallel_for.h) on plain threads, for the edges that run the
+// A ParallelFor (diagnosis/parallel_for.h) on plain threads, for the edges that run the
 // diagnosis: the CLI, the benchmark and the tests. The core stays free of threads.
 #pragma once
 
-#include "core/diagnosis/parallel_for.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 

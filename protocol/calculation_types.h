@@ -1,5 +1,5 @@
 // What each calculation takes and returns, in core types only: the public client's API
-// (clients/remote/client.h) names them without the wire types of calculation_traits.h.
+// (client/client.h) names them without the wire types of calculation_traits.h.
 #pragma once
 
 #include "core/friction_estimate.h"

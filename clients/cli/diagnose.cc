@@ -13,7 +13,7 @@
 #include "clients/cli/model_flags.h"
 #include "clients/cli/recording_flags.h"
 #include "clients/cli/subcommand.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "parallel/thread_parallel_for.h"
 
 namespace gc::cli {

@@ -1,5 +1,5 @@
 // gearcoupling synth: a synthetic recording from a model configuration along one of the
-// paper's load sequences (core/synthesis/), with reproducible noise.
+// paper's load sequences (diagnosis/synthesis/), with reproducible noise.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -10,8 +10,8 @@
 #include "clients/cli/model_flags.h"
 #include "analysis/recording_csv.h"
 #include "clients/cli/subcommand.h"
-#include "core/synthesis/load_sequence.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/synthesize.h"
 
 namespace gc::cli {
 

@@ -6,7 +6,7 @@
 #include "clients/python/bindings.h"
 #include "core/model_error.h"
 #ifdef GC_PYTHON_REMOTE
-#include "clients/remote/client_error.h"
+#include "client/client_error.h"
 #include "protocol/reply_status.h"
 #endif
 

@@ -1,4 +1,4 @@
-// gearcoupling.Client: the calculations through gearcoupling-service (clients/remote/client.h,
+// gearcoupling.Client: the calculations through gearcoupling-service (client/client.h,
 // public methods only). Vectorised calls keep `in_flight` load cases' requests outstanding at
 // once (the service spreads them over its threads and instances), the GIL released while waiting.
 #include <chrono>
@@ -12,7 +12,7 @@
 #include "clients/python/case_arrays.h"
 #include "clients/python/coupling_argument.h"
 #include "clients/python/result_object.h"
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "protocol/dds_config.h"
 #include "core/model_error.h"
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "clients/remote/instance_info.h"
+#include "client/instance_info.h"
 #include "protocol/dds_entity.h"
 
 namespace gc::status {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/validation/worst_regions.h"
+#include "diagnosis/validation/worst_regions.h"
 #include "idl/live_status.pb.h"
 
 namespace gc::status {

@@ -7,7 +7,7 @@
 #include "analysis/validation_report_html.h"
 #include "analysis/validation_run.h"
 #include "analysis/validation_summary.h"
-#include "codec/validation_messages.h"
+#include "analysis/validation_messages.h"
 #include "test_models.h"
 
 namespace gc::analysis {

@@ -12,7 +12,7 @@
 #include "analysis/recording_csv.h"
 #include "core/loading_direction.h"
 #include "core/model_error.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "run_process.h"
 
 namespace gc::analysis {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 
 namespace gc {
 namespace {

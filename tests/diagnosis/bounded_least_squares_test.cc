@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "core/diagnosis/bounded_least_squares.h"
-#include "core/diagnosis/parameter_identifiability.h"
+#include "diagnosis/bounded_least_squares.h"
+#include "diagnosis/parameter_identifiability.h"
 
 namespace gc {
 namespace {

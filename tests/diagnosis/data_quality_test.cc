@@ -1,4 +1,4 @@
-// The data-quality stage (core/diagnosis/data_quality.h) on small recordings written here: each
+// The data-quality stage (diagnosis/data_quality.h) on small recordings written here: each
 // artefact found with its kind, channel and rows, and none on clean noise of several kinds.
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/diagnosis/data_quality.h"
-#include "core/diagnosis/noise_estimate.h"
-#include "core/diagnosis/quantisation.h"
+#include "diagnosis/data_quality.h"
+#include "diagnosis/noise_estimate.h"
+#include "diagnosis/quantisation.h"
 
 namespace gc {
 namespace {

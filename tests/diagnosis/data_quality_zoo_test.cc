@@ -1,5 +1,5 @@
 // The data-quality stage against artefacts written by another hand (tests/diagnosis/zoo/
-// artefacts.h, by a developer who never read core/diagnosis): for each kind, several seeds, the
+// artefacts.h, by a developer who never read diagnosis/): for each kind, several seeds, the
 // finding of the right kind on the right channel covering the truth's rows within a tolerance.
 // Empty and NaN cells are the reader's (their rows never reach the core) and are not tested here.
 #include <algorithm>
@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/diagnosis/data_quality.h"
-#include "core/diagnosis/noise_estimate.h"
-#include "core/diagnosis/polarity_flip.h"
+#include "diagnosis/data_quality.h"
+#include "diagnosis/noise_estimate.h"
+#include "diagnosis/polarity_flip.h"
 #include "tests/diagnosis/zoo/artefacts.h"
 
 namespace gc {

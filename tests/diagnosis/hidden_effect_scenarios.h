@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/coupling_model.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/effects/effect_registry.h"
-#include "core/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/load_sequence.h"
 
 namespace gc::testing {
 
@@ -25,7 +25,7 @@ std::vector<std::shared_ptr<const Effect>> paper_effects(const std::string& with
 using ParameterRanges = std::map<std::string, std::pair<double, double>>;
 ParameterValues draw_parameters(const ParameterRanges& ranges, std::mt19937_64& random);
 
-/// One of the paper's load sequences (core/synthesis/load_sequence.h) for `coupling`, 960 samples
+/// One of the paper's load sequences (diagnosis/synthesis/load_sequence.h) for `coupling`, 960 samples
 /// 0.1 s apart, run at two directions (10 and 100 deg) so that the recording sees four (beta and
 /// beta + pi each time): 1920 samples.
 std::vector<MeasurementSample> paper_sequence(const CouplingDefinition& coupling, LoadSequenceKind kind);

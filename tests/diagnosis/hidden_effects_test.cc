@@ -11,10 +11,10 @@
 #include <set>
 
 #include "core/coupling_geometry.h"
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/model_error.h"
-#include "core/synthesis/load_sequence.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "parallel/thread_parallel_for.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"

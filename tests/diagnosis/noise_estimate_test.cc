@@ -1,12 +1,12 @@
-// The noise of a residual as test cells have it (core/diagnosis/noise_estimate.h): sigma and the
+// The noise of a residual as test cells have it (diagnosis/noise_estimate.h): sigma and the
 // lag-1 autocorrelation from the variogram fit, and spikes found by the running median.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/diagnosis/noise_estimate.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/noise_estimate.h"
+#include "diagnosis/synthesis/synthesize.h"
 
 namespace gc {
 namespace {

@@ -3,9 +3,9 @@
 // 1.5 MN·m it reached --add and --write-model for a coupling whose model file says 120 kN·m.
 #include <gtest/gtest.h>
 
-#include "core/diagnosis/effect_fit.h"
+#include "diagnosis/effect_fit.h"
 #include "core/effects/effect_registry.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 

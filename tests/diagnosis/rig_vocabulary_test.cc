@@ -12,12 +12,12 @@
 #include <string>
 
 #include "codec/coupling_file.h"
-#include "core/diagnosis/diagnose.h"
-#include "core/diagnosis/formula_search.h"
-#include "core/diagnosis/ringing_estimate.h"
+#include "diagnosis/diagnose.h"
+#include "diagnosis/formula_search.h"
+#include "diagnosis/ringing_estimate.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 

@@ -1,4 +1,4 @@
-// The surrogate test of the claim rule (core/diagnosis/surrogate_test.h), measured as a rate on
+// The surrogate test of the claim rule (diagnosis/surrogate_test.h), measured as a rate on
 // fresh draws: its size on slow noise that no input explains, its power on a small real term.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include <unsupported/Eigen/FFT>
 
-#include "core/diagnosis/surrogate_test.h"
+#include "diagnosis/surrogate_test.h"
 
 namespace gc {
 namespace {

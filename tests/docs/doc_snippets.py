@@ -129,8 +129,8 @@ def main():
     problems, snippets = [], []
     for path in [source_dir / "README.md"] + sorted((source_dir / "docs").glob("*.md")):
         snippets += markdown_snippets(path, source_dir, problems)
-    for folder in ("analysis", "clients", "codec", "core", "live", "monitor", "parallel",
-                   "protocol", "service"):
+    for folder in ("analysis", "client", "clients", "codec", "core", "diagnosis", "live",
+                   "monitor", "parallel", "protocol", "service"):
         for path in sorted((source_dir / folder).rglob("*.h")):
             if HEADER_START in path.read_text():
                 snippets += header_snippets(path, source_dir)

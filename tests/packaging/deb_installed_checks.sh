@@ -161,9 +161,9 @@ cmake -S "$deb_dir/consumer" -B "$deb_dir/consumer/build" -DCMAKE_BUILD_TYPE=Rel
 cmake --build "$deb_dir/consumer/build" >>"$deb_dir/consumer.log" 2>&1 || fail "the consumer does not build"
 "$deb_dir/consumer/build/consumer" 0 >"$deb_dir/consumer.out" 2>&1 || fail "consumer: $(cat "$deb_dir/consumer.out")"
 # shellcheck disable=SC2046  # pkg-config's output is a list of flags
-g++ -std=c++20 -o "$deb_dir/pkg_config_core" "$source/tests/packaging/pkg_config_core.cc" \
-  $(pkg-config --cflags --libs gearcoupling-core) || fail "the pkg-config consumer does not build"
-"$deb_dir/pkg_config_core" >/dev/null || fail "the pkg-config consumer"
+g++ -std=c++20 -o "$deb_dir/pkg_config_physics" "$source/tests/packaging/pkg_config_physics.cc" \
+  $(pkg-config --cflags --libs gearcoupling-physics) || fail "the pkg-config consumer does not build"
+"$deb_dir/pkg_config_physics" >/dev/null || fail "the pkg-config consumer"
 
 for pid in "${pids[@]}"; do kill -TERM "$pid"; done
 for pid in "${pids[@]}"; do

@@ -65,8 +65,10 @@ if [[ "$(depends libgearcoupling-dev)" == *cyclonedds* ]]; then fail "libgearcou
 has python3-gearcoupling python3 python3-numpy libgearcoupling0
 has gearcoupling adduser libgearcoupling0 libspdlog1.10-fmt9 libfmt9
 for package in "${packages[@]}"; do dpkg-deb -e "$(deb "$package")" "$tmp/control-$package"; done
-grep -q "^libgearcoupling-core 0 libgearcoupling0 (>= $version)" "$tmp/control-libgearcoupling0/shlibs" ||
-  fail "shlibs: $(cat "$tmp/control-libgearcoupling0/shlibs")"
+for library in physics diagnosis codec client; do
+  grep -q "^libgearcoupling-$library 0 libgearcoupling0 (>= $version)" "$tmp/control-libgearcoupling0/shlibs" ||
+    fail "shlibs: $(cat "$tmp/control-libgearcoupling0/shlibs")"
+done
 [ "$(sort "$tmp/control-gearcoupling/conffiles")" = "$(printf '/etc/gearcoupling/%s\n' \
     cyclonedds.xml dashboard.conf monitor.conf service.conf)" ] ||
   fail "conffiles: $(cat "$tmp/control-gearcoupling/conffiles")"
@@ -85,13 +87,17 @@ in_package() {  # in_package PACKAGE PATH-PATTERN...
     grep -qxE "$pattern" <<<"$list" || fail "$package lacks $pattern"
   done
 }
-in_package libgearcoupling0 '/usr/lib/[^/]+/libgearcoupling-(core|codec|client)\.so\.0\.1\.0' \
-  '/usr/share/doc/libgearcoupling0/copyright'
-in_package libgearcoupling-dev '/usr/lib/[^/]+/libgearcoupling-core\.so' \
-  '/usr/include/gearcoupling/clients/remote/client\.h' '/usr/include/gearcoupling/core/jam_angle\.h' \
+for library in physics diagnosis codec client; do
+  in_package libgearcoupling0 "/usr/lib/[^/]+/libgearcoupling-$library\\.so\\.0\\.1\\.0"
+  in_package libgearcoupling-dev "/usr/lib/[^/]+/libgearcoupling-$library\\.so" \
+    "/usr/lib/[^/]+/pkgconfig/gearcoupling-$library\\.pc"
+done
+in_package libgearcoupling0 '/usr/share/doc/libgearcoupling0/copyright'
+in_package libgearcoupling-dev '/usr/lib/[^/]+/pkgconfig/gearcoupling-core\.pc' \
+  '/usr/include/gearcoupling/client/client\.h' '/usr/include/gearcoupling/core/jam_angle\.h' \
+  '/usr/include/gearcoupling/diagnosis/diagnose\.h' \
   '/usr/include/gearcoupling/idl/coupling\.pb\.h' \
-  '/usr/lib/[^/]+/cmake/gearcoupling/gearcoupling-config\.cmake' \
-  '/usr/lib/[^/]+/pkgconfig/gearcoupling-(core|codec|client)\.pc'
+  '/usr/lib/[^/]+/cmake/gearcoupling/gearcoupling-config\.cmake'
 in_package python3-gearcoupling '/usr/lib/python3/dist-packages/gearcoupling/__init__\.py' \
   '/usr/lib/python3/dist-packages/gearcoupling/_gearcoupling\.cpython-[0-9]+-[^/]+\.so'
 in_package gearcoupling '/usr/bin/gearcoupling(-service|-monitor|-dashboard)?' \

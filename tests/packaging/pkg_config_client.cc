@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -2,11 +2,12 @@
 # ctest packaging.pkg_config: `cmake --install` into a temporary prefix; every installed .pc
 # passes `pkg-config --validate`, names only pkg-config modules that exist, and gives normalised
 # paths under the prefix (no "..": the prefix is written at install time) and no Cyclone flag (the
-# headers include none); a program using the core and one using the client are compiled and
+# headers include none); a program using the physics and one using the client are compiled and
 # linked with nothing but `pkg-config --cflags --libs` from that prefix, and run (the client's on
 # a domain with no service, with CYCLONEDDS_URI unset: its timeout names the configuration the
-# installed library found). The installed CMake package has no configure-time residue such as
-# `if(ON)`.
+# installed library found). gearcoupling-core (the physics with the diagnosis, their name before
+# issue 41) builds the physics program too, and the headers' old paths still compile. The
+# installed CMake package has no configure-time residue such as `if(ON)`.
 #   pkg_config_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1 source=$2
@@ -15,10 +16,10 @@ scratch gc_pkg_config
 
 prefix=$tmp/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
-pcdir=$(dirname "$(find "$prefix" -name gearcoupling-core.pc)")
+pcdir=$(dirname "$(find "$prefix" -name gearcoupling-physics.pc)")
 libdir=$(cd "$pcdir/.." && pwd)
 export PKG_CONFIG_PATH=$pcdir
-modules=(gearcoupling-core gearcoupling-codec)
+modules=(gearcoupling-physics gearcoupling-diagnosis gearcoupling-core gearcoupling-codec)
 [ -f "$pcdir/gearcoupling-client.pc" ] && modules+=(gearcoupling-client)
 for module in "${modules[@]}"; do
   pkg-config --validate "$module" || fail "pkg-config --validate $module"
@@ -28,15 +29,29 @@ for module in "${modules[@]}"; do
     fail "$module: flags not under the prefix $prefix: $flags"
   [[ "$flags" != *ddsc* && "$flags" != *DDS_* ]] || fail "$module leaks Cyclone's flags: $flags"
 done
-[ "$(pkg-config --modversion gearcoupling-core)" = "$(pkg-config --modversion gearcoupling-codec)" ]
+for module in "${modules[@]}"; do
+  [ "$(pkg-config --modversion "$module")" = "$(pkg-config --modversion gearcoupling-physics)" ] ||
+    fail "$module's version is not gearcoupling-physics'"
+done
 if grep -rnE '^\s*if\((ON|OFF|TRUE|FALSE|YES|NO|[01])\)' "$libdir/cmake/gearcoupling"; then
   fail "the installed CMake package tests a constant"
 fi
 
 # shellcheck disable=SC2046  # pkg-config's output is a list of flags
-g++ -std=c++20 -o "$tmp/core_program" "$source/tests/packaging/pkg_config_core.cc" \
-  $(pkg-config --cflags --libs gearcoupling-core) || fail "the core program does not build"
-LD_LIBRARY_PATH=$libdir "$tmp/core_program" || fail "the core program"
+for module in gearcoupling-physics gearcoupling-core; do
+  g++ -std=c++20 -o "$tmp/physics_program" "$source/tests/packaging/pkg_config_physics.cc" \
+    $(pkg-config --cflags --libs "$module") || fail "the physics program does not build with $module"
+  LD_LIBRARY_PATH=$libdir "$tmp/physics_program" || fail "the physics program built with $module"
+done
+[[ "$(pkg-config --libs gearcoupling-physics)" != *diagnosis* ]] ||
+  fail "gearcoupling-physics brings the diagnosis: $(pkg-config --libs gearcoupling-physics)"
+old_paths='#include "core/diagnosis/diagnose.h"
+#include "core/validation/error_bins.h"
+#include "core/synthesis/synthesize.h"'
+[ -f "$pcdir/gearcoupling-client.pc" ] && old_paths+=$'\n#include "clients/remote/client.h"'
+# shellcheck disable=SC2046
+g++ -std=c++20 -fsyntax-only -x c++ - $(pkg-config --cflags gearcoupling-core) <<<"$old_paths" ||
+  fail "the headers' paths before issue 41 do not compile"
 if [ -f "$pcdir/gearcoupling-client.pc" ]; then
   # shellcheck disable=SC2046
   g++ -std=c++20 -o "$tmp/client_program" "$source/tests/packaging/pkg_config_client.cc" \
@@ -45,4 +60,4 @@ if [ -f "$pcdir/gearcoupling-client.pc" ]; then
   (unset CYCLONEDDS_URI && LD_LIBRARY_PATH=$libdir "$tmp/client_program" $((216 + $$ % 15)) \
     "file://$prefix/etc/gearcoupling/cyclonedds.xml") || fail "the client program"
 fi
-echo "PASS: pkg-config: valid modules, a core and a client program built with them and run"
+echo "PASS: pkg-config: valid modules, a physics and a client program built with them and run"

@@ -7,7 +7,7 @@
 #include <future>
 #include <vector>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "tests/service/service_process.h"
 
 int main(int argc, char** argv) {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "protocol/reply_status.h"
 #include "tests/service/service_process.h"

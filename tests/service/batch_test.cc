@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "protocol/reply_status.h"

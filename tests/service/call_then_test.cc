@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "core/model_error.h"
 #include "tests/service/service_process.h"
 

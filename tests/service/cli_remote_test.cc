@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "protocol/matching.h"
 #include "tests/cli/run_process.h"
 #include "tests/service/service_process.h"

@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "core/induced_moments.h"
 #include "protocol/matching.h"

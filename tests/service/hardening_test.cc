@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/matching.h"

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "service/inline_answer.h"
 #include "tests/service/scaled_coupling.h"

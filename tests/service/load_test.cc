@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "tests/service/identical.h"
 #include "tests/service/service_process.h"

@@ -22,7 +22,7 @@
 #include <string>
 #include <thread>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "protocol/matching.h"
 #include "protocol/names.h"
 #include "protocol/qos.h"

@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "protocol/names.h"
 #include "tests/service/read_text.h"
 #include "tests/service/service_process.h"

@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "core/induced_moments.h"
 #include "protocol/matching.h"

@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "tests/service/on_fifo_thread.h"
 #include "tests/service/service_process.h"
 

@@ -3,7 +3,7 @@
 // same coupling files the service loads).
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "tests/service/identical.h"
 #include "tests/service/service_process.h"

@@ -3,7 +3,7 @@
 // and never sends them to it (docs/protocol.md).
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/matching.h"
 #include "protocol/names.h"

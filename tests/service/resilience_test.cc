@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "protocol/matching.h"
 #include "tests/service/identical.h"

@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
-#include "clients/remote/client_error.h"
+#include "client/client.h"
+#include "client/client_error.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/dds_entity.h"
 #include "tests/cli/run_process.h"

@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "clients/status/cell_board.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/matching.h"

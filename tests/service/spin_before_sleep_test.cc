@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "core/model_error.h"
 #include "tests/service/on_fifo_thread.h"
 #include "tests/service/service_process.h"

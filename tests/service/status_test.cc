@@ -1,7 +1,7 @@
 // The status topic tells clients and dashboards what an instance serves and how it is doing.
 #include <gtest/gtest.h>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "core/model_error.h"
 #include "protocol/matching.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/model_error.h"
-#include "core/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/load_sequence.h"
 
 namespace gc {
 namespace {

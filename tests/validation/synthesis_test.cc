@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/synthesis/load_sequence.h"
-#include "core/synthesis/synthesize.h"
+#include "diagnosis/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/synthesize.h"
 #include "test_models.h"
 
 namespace gc {

@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "core/restoring_torque.h"
-#include "core/synthesis/load_sequence.h"
-#include "core/synthesis/synthesize.h"
-#include "core/validation/error_bins.h"
-#include "core/validation/worst_regions.h"
+#include "diagnosis/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/synthesize.h"
+#include "diagnosis/validation/error_bins.h"
+#include "diagnosis/validation/worst_regions.h"
 #include "test_models.h"
 
 namespace gc {

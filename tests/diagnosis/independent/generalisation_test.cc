@@ -17,7 +17,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/diagnosis/diagnose.h"
+#include "diagnosis/diagnose.h"
 #include "core/model_error.h"
 #include "parallel/thread_parallel_for.h"
 #include "tests/diagnosis/independent/hidden_truths.h"

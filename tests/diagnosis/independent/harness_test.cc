@@ -9,7 +9,7 @@
 
 #include "core/effects/effect_registry.h"
 #include "core/induced_moments.h"
-#include "core/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/load_sequence.h"
 #include "tests/diagnosis/independent/base_models.h"
 #include "tests/diagnosis/independent/recording_inputs.h"
 #include "tests/diagnosis/independent/sindy_baseline.h"

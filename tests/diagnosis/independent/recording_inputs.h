@@ -1,4 +1,4 @@
-// The inputs of a hidden-truth recording: one of the paper's load sequences (core/synthesis) for
+// The inputs of a hidden-truth recording: one of the paper's load sequences (diagnosis/synthesis) for
 // the upwind coupling at two directions, 1920 samples 0.1 s apart, with what a test cell also
 // logs on every sample: shaft speed, its integral the rotation phase, and the oil temperature.
 #pragma once
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/measurement_sample.h"
-#include "core/synthesis/load_sequence.h"
+#include "diagnosis/synthesis/load_sequence.h"
 
 namespace gc::independent {
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <exception>
 
-#include "clients/remote/client.h"
+#include "client/client.h"
 #include "codec/coupling_catalog.h"
 #include "core/jam_angle.h"
 

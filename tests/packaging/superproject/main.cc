@@ -1,3 +1,3 @@
 // Never built: tests/packaging/add_subdirectory_test.sh only configures.
-#include "clients/remote/client.h"
+#include "client/client.h"
 int main() { return 0; }

@@ -1,0 +1,1004 @@
+#include "diagnosis/diagnose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "diagnosis/candidates_side_by_side.h"
+#include "diagnosis/claim_review.h"
+#include "diagnosis/delay_estimate.h"
+#include "diagnosis/mains_pickup.h"
+#include "diagnosis/model_residuals.h"
+#include "diagnosis/noise_estimate.h"
+#include "diagnosis/polarity_flip.h"
+#include "diagnosis/signature_held_out.h"
+#include "diagnosis/slow_wander.h"
+#include "diagnosis/input_noise_check.h"
+#include "diagnosis/surrogate_claims.h"
+#include "diagnosis/verdict_text.h"
+#include "diagnosis/time_step.h"
+#include "diagnosis/whole_fifths.h"
+#include "core/effects/effect_registry.h"
+#include "core/effects/expression.h"
+#include "core/effects/expression_terms.h"
+#include "core/effects/joint_effect.h"
+#include "core/model_error.h"
+
+namespace gc {
+namespace {
+
+std::vector<std::size_t> time_ordered(std::span<const RecordedSample> observations) {
+  std::vector<std::size_t> rows = all_rows(observations.size());
+  std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) {
+    return observations[a].input.time_s < observations[b].input.time_s;
+  });
+  return rows;
+}
+
+/// At most `count` rows evenly spaced through `rows` (which are in time order).
+std::vector<std::size_t> evenly_spaced(const std::vector<std::size_t>& rows, std::size_t count) {
+  if (rows.size() <= count) return rows;
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < count; ++k) out.push_back(rows[k * rows.size() / count]);
+  return out;
+}
+
+Eigen::MatrixX2d select_rows(const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& all,
+                             const std::vector<std::size_t>& subset) {
+  Eigen::MatrixX2d out(static_cast<Eigen::Index>(subset.size()), 2);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < all.size() && k < subset.size(); ++i) {
+    if (all[i] == subset[k]) out.row(static_cast<Eigen::Index>(k++)) = residual.row(static_cast<Eigen::Index>(i));
+  }
+  return out;
+}
+
+/// Cosine of the angle between two candidates' corrections to the base model (uncentred, so
+/// two constant offsets count as alike).
+double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b) {
+  const Eigen::MatrixX2d ca = base - a, cb = base - b;
+  const double denominator = ca.norm() * cb.norm();
+  return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
+}
+
+bool has_held_shape(const EffectInfo& info) {
+  return std::any_of(info.parameters.begin(), info.parameters.end(), [](const ParameterSpec& p) { return p.refine_only; });
+}
+
+/// The registration that refits `effect`: the library's, or an expression over its own terms.
+std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
+  if (const auto members = effect.members(); !members.empty()) {
+    std::vector<EffectRegistration> parts;
+    for (const auto& m : members) {
+      const std::optional<EffectRegistration> part = registration_for(*m, settings);
+      if (!part) return std::nullopt;
+      parts.push_back(*part);
+    }
+    return joint_registration(parts);
+  }
+  if (effect.name() == kExpressionEffect) {
+    std::vector<std::string> terms;
+    for (const ParameterSpec& p : effect.info().parameters) terms.push_back(p.name);
+    return expression_registration(terms);
+  }
+  for (const EffectRegistration& r : settings.library) if (r.info->name == effect.name()) return r;
+  return std::nullopt;
+}
+
+/// `effects` as one effect to refit jointly; nullopt when one has no registration or no parameter.
+std::optional<JointEffect> joint_of(const std::vector<std::shared_ptr<const Effect>>& effects,
+                                    const DiagnosisSettings& settings) {
+  std::vector<EffectRegistration> registrations;
+  for (const auto& effect : effects) {
+    const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
+    if (!registration || registration->info->parameters.empty()) return std::nullopt;
+    registrations.push_back(*registration);
+  }
+  const EffectRegistration joint = joint_registration(registrations);
+  return JointEffect(*joint.info, joint_values(effects), registrations);
+}
+
+/// The effects earlier rounds added (the formula aside), as one effect to refit jointly, when
+/// there are two or more and one of them was said to explain only partly: fitted one after the
+/// other they trade with each other (a thermal misalignment fitted beside a weight offset that
+/// the next round explained took a share of it, and refitting each in turn creeps toward the
+/// truth a round at a time). The latest three: a fit of more parameters costs more than it finds.
+std::optional<JointEffect> partly_claims_together(const CouplingModel& model, const CouplingModel& given,
+                                                  const std::set<std::string>& partly, const DiagnosisSettings& settings) {
+  constexpr std::size_t kMostMembers = 3;
+  std::vector<std::shared_ptr<const Effect>> added;
+  for (const auto& effect : model.effects()) {
+    if (given.has_effect(effect->name()) || effect->name() == kExpressionEffect) continue;
+    const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
+    if (!registration || registration->info->parameters.empty()) continue;
+    added.push_back(effect);
+  }
+  if (added.size() > kMostMembers) added.erase(added.begin(), added.end() - kMostMembers);
+  const bool any_partly = std::any_of(added.begin(), added.end(), [&](const auto& e) { return partly.count(e->name()) > 0; });
+  if (added.size() < 2 || !any_partly) return std::nullopt;
+  return joint_of(added, settings);
+}
+
+/// The fit of a joint refit: the parameters of two or three effects, some of which trade with
+/// each other (a thermal growth g and its reference temperature theta_0 along a valley), so more
+/// probes, starts and steps than one effect's. From round 1's g = -18.7 µrad/degC at 17.5 degC the
+/// default 8 probes, 2 starts and 10 steps stopped at -29 µrad/degC (2.66 kN·m held out); with
+/// these, at the truth's 59-62 µrad/degC at 35 degC (1.95 kN·m).
+CrossValidationSettings joint_refit_settings(CrossValidationSettings settings) {
+  settings.fit.probe_points = std::max(settings.fit.probe_points, 64);
+  settings.fit.starts = std::max(settings.fit.starts, 6);
+  settings.fit.least_squares.max_iterations = std::max(settings.fit.least_squares.max_iterations, 20);
+  return settings;
+}
+
+/// A partly claim's rival: an effect of the given model whose refinement came within this share
+/// of the claim's held-out RMSE in the claim's round, with fewer parameters. A round that says
+/// "partly" ranks what the residual still held beside its own effect: a channel gain and offset
+/// (four parameters) took a heavier self-weight (one) with a gain that soaked up a thermal
+/// misalignment fitted before it, 3.69 against 3.88 kN·m.
+constexpr double kRivalShare = 0.1;
+
+/// The rival of the round's partly claim (kRivalShare), if any: the effect's name.
+std::optional<std::string> rival_of_claim(const DiagnosisRound& round, const CouplingModel& given) {
+  if (round.outcome != RoundOutcome::partly_explained || round.formula_chosen || round.ranking.empty()) return std::nullopt;
+  const CandidateScore& best = round.ranking.front();
+  if (best.kind != CandidateKind::addition || !best.info) return std::nullopt;
+  for (std::size_t k = 1; k < round.ranking.size(); ++k) {
+    const CandidateScore& c = round.ranking[k];
+    if (c.held_out_rmse_nm > (1.0 + kRivalShare) * best.held_out_rmse_nm) break;
+    if (c.kind == CandidateKind::refinement && c.failure.empty() && c.info && given.has_effect(c.info->name) &&
+        c.info->parameters.size() < best.info->parameters.size()) {
+      return c.info->name;
+    }
+  }
+  return std::nullopt;
+}
+
+/// The names a claimed effect stands for: its own, or its members' when several were fitted as one.
+std::vector<std::string> claimed_names(const Effect& effect) {
+  std::vector<std::string> names;
+  for (const auto& m : effect.members()) names.push_back(m->name());
+  if (names.empty()) names.push_back(effect.name());
+  return names;
+}
+
+/// The effects a claim puts in the model: itself, or its members.
+std::vector<std::shared_ptr<const Effect>> claimed_effects(const std::shared_ptr<const Effect>& effect) {
+  std::vector<std::shared_ptr<const Effect>> members = effect->members();
+  return members.empty() ? std::vector<std::shared_ptr<const Effect>>{effect} : members;
+}
+
+std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
+                                            const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
+                                            const Folds& folds, const ParallelFor& parallel,
+                                            const CouplingModel& given, const std::set<std::string>& partly,
+                                            const std::map<std::string, std::string>& rivals,
+                                            const DiagnosisSettings& given_settings,
+                                            const std::vector<ParameterValues>& hints) {
+  DiagnosisSettings settings = given_settings;
+  for (const ParameterValues& hint : hints) settings.cross_validation.fit.hints.push_back(hint);
+  std::vector<CandidateJob> jobs;  // scored side by side below (candidates_side_by_side.h)
+  // An effect that needs an input no search row has changes nothing here (and costs a fit).
+  const auto lacks_input = [&](const EffectInfo& info) {
+    return std::any_of(info.requires_inputs.begin(), info.requires_inputs.end(), [&](OptionalInput input) {
+      return std::none_of(search.begin(), search.end(), [&](std::size_t r) { return has_input(observations[r].input, input); });
+    });
+  };
+  for (const EffectRegistration& registration : settings.library) {
+    // The formula has its own stage; an effect the model has is a refinement below.
+    if (registration.info->name == kExpressionEffect || model.has_effect(registration.info->name)) continue;
+    if (lacks_input(*registration.info)) continue;
+    jobs.push_back([&](const ParallelFor& rows) {
+      return score_candidate(model, registration, observations, search, base, folds, rows, settings.cross_validation);
+    });
+  }
+  if (settings.refinements) {
+    for (const auto& effect : model.effects()) {
+      // The given model's effects, those an earlier round added with a shape held
+      // (ParameterSpec::refine_only), which only a refinement frees, and those an earlier round
+      // said explain only partly: fitted beside what they did not explain, they took a share of it
+      // (a thermal misalignment fitted beside an unexplained weight offset), and refitted once
+      // that is explained they come right. Formulas added earlier are the formula stage's.
+      if (!given.has_effect(effect->name()) && !has_held_shape(effect->info()) && !partly.count(effect->name())) continue;
+      const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
+      if (!registration || registration->info->parameters.empty()) continue;
+      jobs.push_back([&, registration = *registration, current = effect.get()](const ParallelFor& rows) {
+        return score_candidate(model, registration, observations, search, base, folds, rows, settings.cross_validation,
+                               current);
+      });
+    }
+    if (const std::optional<JointEffect> joint = partly_claims_together(model, given, partly, settings)) {
+      const CrossValidationSettings joint_cv = joint_refit_settings(settings.cross_validation);
+      const std::optional<EffectRegistration> registration = registration_for(*joint, settings);
+      if (registration) {
+        jobs.push_back([&, registration = *registration, joint_cv, joint = *joint](const ParallelFor& rows) {
+          return score_candidate(model, registration, observations, search, base, folds, rows, joint_cv, &joint);
+        });
+      }
+      // The same refit with a member's rival in its place, on the model without that member: the
+      // simpler effect that came close to it in its round, which, refitted beside the others once
+      // they are in, may say what the member only approximated.
+      for (const auto& member : joint->members()) {
+        const auto rival = rivals.find(member->name());
+        const std::shared_ptr<const Effect> simpler = rival != rivals.end() ? model.effect(rival->second) : nullptr;
+        if (!simpler) continue;
+        std::vector<std::shared_ptr<const Effect>> effects;
+        for (const auto& m : joint->members()) effects.push_back(m->name() == member->name() ? simpler : m);
+        const std::optional<JointEffect> swap = joint_of(effects, settings);
+        const std::optional<EffectRegistration> swap_registration = swap ? registration_for(*swap, settings) : std::nullopt;
+        if (!swap_registration) continue;
+        jobs.push_back([&, registration = *swap_registration, joint_cv, swap = *swap,
+                        without = model.without_effect(member->name()), name = member->name()](const ParallelFor& rows) {
+          CandidateScore score = score_candidate(without, registration, observations, search, base, folds, rows, joint_cv, &swap);
+          score.replaces = {name};
+          return score;
+        });
+      }
+    }
+  }
+  std::vector<CandidateScore> ranking = score_side_by_side(jobs, parallel);
+  std::stable_sort(ranking.begin(), ranking.end(), [](const CandidateScore& a, const CandidateScore& b) {
+    if (a.failure.empty() != b.failure.empty()) return a.failure.empty();
+    return a.held_out_rmse_nm < b.held_out_rmse_nm;
+  });
+  return ranking;
+}
+
+/// The claim rule (docs/diagnosis.md, "The claim rule"): significant on held-out blocks (a paired t
+/// against the long-run variance of the block means), and a material fall of the held-out mean
+/// square: a share of the excess over the noise, and a share of the mean square itself.
+bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const DiagnosisSettings& settings) {
+  if (!c.failure.empty() || c.against_base.t < settings.claim_t) return false;
+  const double effect_ms = c.held_out_rmse_nm * c.held_out_rmse_nm;
+  const double excess = std::max(base_ms - noise_ms, 0.0);
+  const double fall = base_ms - effect_ms;
+  return fall >= settings.claim_excess_share * excess && fall >= settings.claim_least_fall * base_ms && fall > 0.0;
+}
+
+bool plausible(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
+
+/// An input that carries at least this share of an effect's correction is one the effect explains.
+constexpr double kExplainedInputShare = 0.1;
+
+/// A parameter on a physical bound: the truth may lie beyond what the effect can say.
+bool at_bound(const CandidateScore& c) { return !c.fit || c.fit->at_bound(); }
+
+/// Alike: corrections that point the same way, and held-out errors within a small share of each
+/// other or not significantly different.
+bool alike(const CandidateScore& best, const CandidateScore& other, const Eigen::MatrixX2d& base,
+           const Folds& folds, const DiagnosisSettings& settings, double& similarity, PairedBlockTest& t) {
+  similarity = correction_similarity(base, best.held_out_residual, other.held_out_residual);
+  t = paired_block_test(other.held_out_residual, best.held_out_residual, folds.block_of, folds.blocks);
+  const bool close = other.held_out_rmse_nm <= (1.0 + settings.alike_rmse_share) * best.held_out_rmse_nm;
+  return similarity >= settings.alike_correlation && (close || t.t < settings.alike_t);
+}
+
+/// `model` with the candidate's effect, and without the earlier claims it replaces.
+CouplingModel model_with_candidate(const CouplingModel& model, const CandidateScore& c) {
+  CouplingModel out = model;
+  for (const std::string& name : c.replaces) out = out.without_effect(name);
+  return out.with_effect(c.fit->effect);
+}
+
+std::vector<AlikeEffect> alike_effects(const CouplingModel& model, const std::vector<CandidateScore>& ranking,
+                                       const Eigen::MatrixX2d& base, const Folds& folds, double base_ms,
+                                       double noise_ms, std::span<const RecordedSample> observations,
+                                       const std::vector<std::size_t>& rows, double noise_sigma,
+                                       const DiagnosisSettings& settings) {
+  std::vector<AlikeEffect> out;
+  const CandidateScore& best = ranking.front();
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    const CandidateScore& other = ranking[k];
+    if (!claimable(other, base_ms, noise_ms, settings) || !plausible(other) || other.info->name == best.info->name) continue;
+    double similarity = 0.0;
+    PairedBlockTest t;
+    if (!alike(best, other, base, folds, settings, similarity, t)) continue;
+    out.push_back({other.info->name, similarity, t,
+                   separating_experiment(model_with_candidate(model, best), model_with_candidate(model, other),
+                                         observations, rows, noise_sigma)});
+  }
+  return out;
+}
+
+/// Per channel, the share of the base mean square that the candidate's held-out residual removes.
+Eigen::Vector2d channel_reduction(const Eigen::MatrixX2d& base, const Eigen::MatrixX2d& held_out) {
+  const Eigen::Array2d b = base.colwise().squaredNorm().transpose().array();
+  const Eigen::Array2d h = held_out.colwise().squaredNorm().transpose().array();
+  return (b > 0.0).select(1.0 - h / b.max(1e-300), 0.0).matrix();
+}
+
+/// The residual is more than noise: its mean square beyond the noise's by 4.5 standard errors (of a
+/// mean square of n samples with the noise's correlation, and of the noise estimate itself), or an
+/// input whose bins carry more than the correlated noise allows.
+bool is_systematic(double all_ms, double noise_ms, std::size_t rows, const NoiseEstimate& noise,
+                   const ResidualSignature& signature) {
+  const double n = static_cast<double>(rows);
+  const double inflation = noise.variance_inflation();
+  return all_ms > noise_ms * (1.0 + 4.5 * std::sqrt(inflation / n + 5.4 * inflation / n)) || signature.systematic();
+}
+
+/// Moves the effect to claim to the front: the best plausible one unless an implausible one is
+/// significantly better (then it is claimed as partly explaining).
+void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, double noise_ms, const Folds& folds,
+                     const DiagnosisSettings& settings) {
+  if (ranking.empty() || plausible(ranking.front())) return;
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    if (!claimable(ranking[k], base_ms, noise_ms, settings) || !plausible(ranking[k])) continue;
+    const PairedBlockTest t = paired_block_test(ranking[k].held_out_residual, ranking.front().held_out_residual,
+                                                folds.block_of, folds.blocks);
+    if (t.t < settings.alike_t) std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(k),
+                                             ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    return;
+  }
+}
+
+/// A swap (CandidateScore::replaces) that does as well as the candidate ranked first, on fewer
+/// parameters, goes first: alike on held-out rows (within alike_rmse_share, or not significantly
+/// worse), the simpler model. A joint refit of a thermal growth and a channel gain and offset (7
+/// parameters) and the same with the self-weight in the place of the gain and offset (4) both
+/// reached the truth's growth, 1.95 against 1.97 kN·m held out.
+void put_simpler_swap_first(std::vector<CandidateScore>& ranking, const Folds& folds, const DiagnosisSettings& settings) {
+  if (ranking.empty() || !ranking.front().replaces.empty() || !ranking.front().info) return;
+  const CandidateScore& first = ranking.front();
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    const CandidateScore& swap = ranking[k];
+    if (swap.replaces.empty() || !swap.failure.empty() || !swap.info ||
+        swap.info->parameters.size() >= first.info->parameters.size()) {
+      continue;
+    }
+    const PairedBlockTest t = paired_block_test(swap.held_out_residual, first.held_out_residual, folds.block_of, folds.blocks);
+    const bool close = swap.held_out_rmse_nm <= (1.0 + settings.alike_rmse_share) * first.held_out_rmse_nm;
+    if (close || t.t < settings.alike_t) {
+      std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(k),
+                  ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    }
+    return;
+  }
+}
+
+/// Of the claimable, plausible effects alike to the one ranked first (alike()), the one with the
+/// fewest parameters goes first: where the data cannot tell two apart, the simpler model. An
+/// assembly misalignment (two parameters) and a thermal misalignment (more) fit a recording at a
+/// nearly steady oil temperature alike; the simpler says as much with less.
+void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen::MatrixX2d& base, const Folds& folds,
+                              double base_ms, double noise_ms, const DiagnosisSettings& settings) {
+  if (ranking.empty() || !ranking.front().info || !claimable(ranking.front(), base_ms, noise_ms, settings)) return;
+  std::size_t simplest = 0;
+  for (std::size_t k = 1; k < ranking.size(); ++k) {
+    const CandidateScore& c = ranking[k];
+    if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || !plausible(c)) continue;
+    if (c.info->parameters.size() >= ranking[simplest].info->parameters.size()) continue;
+    double similarity = 0.0;
+    PairedBlockTest t;
+    if (alike(ranking.front(), c, base, folds, settings, similarity, t)) simplest = k;
+  }
+  if (simplest > 0) {
+    std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(simplest),
+                ranking.begin() + static_cast<std::ptrdiff_t>(simplest) + 1);
+  }
+}
+
+FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSettings& settings) {
+  FormulaSettings out = settings.formula_settings;
+  out.variance_inflation = round.noise.variance_inflation();
+  out.time_terms = round.time_terms;
+  return out;
+}
+
+/// True when the formula alone does not beat the effect followed by a formula of what the effect
+/// leaves (paired t < 2): the formula's advantage is that it also takes a second mechanism, which
+/// the next round finds after the effect (physics first). But not when the effect is idle beside
+/// that second formula: its terms fitted without the effect do as well as with it (paired t < 2).
+/// Then the effect only took a slice of what those terms say (a gain and offset of both channels
+/// took a fifth of a rig's travel-sign hysteresis, and stayed in the model as a wrong calibration).
+bool effect_explains_part(const CandidateScore& effect, const CandidateScore& formula, const Eigen::MatrixX2d& base,
+                          std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
+                          const Folds& folds, const FormulaSettings& settings) {
+  const std::optional<CandidateScore> rest = formula_candidate(observations, search, effect.held_out_residual, folds, settings);
+  const Eigen::MatrixX2d& both = rest ? rest->held_out_residual : effect.held_out_residual;
+  if (paired_block_test(both, formula.held_out_residual, folds.block_of, folds.blocks).t >= 2.0) return false;
+  if (!rest) return true;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : rest->fit->parameters) terms.push_back(p.name);
+  const std::optional<Eigen::MatrixX2d> without_effect = formula_held_out(observations, search, base, terms, folds);
+  return !without_effect || paired_block_test(*without_effect, both, folds.block_of, folds.blocks).t >= 2.0;
+}
+
+std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
+                            const DiagnosisSettings& settings);
+
+/// Removes from `time_terms` a cycle at the mains frequency (mains_pickup.h), direct or aliased by
+/// the rows' sample rate, and returns what the verdict says of it ("" when none).
+std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
+                                  const std::vector<std::size_t>& rows) {
+  if (rows.size() < 2) return "";
+  Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
+  const double step = typical_time_step(t);
+  const double duration = t(t.size() - 1) - t(0);
+  if (!(step > 0.0) || !(duration > 0.0)) return "";
+  std::string text;
+  std::erase_if(time_terms, [&](const std::string& name) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (!term || !(term->period_s > 0.0)) return false;
+    const double f = 1.0 / term->period_s;
+    // Only mains that the rows resolve: aliased, 60 Hz at 50 Hz sampling lands at 10 Hz, where a
+    // 56-tooth mesh at 10.7 rpm also is.
+    const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
+    if (mains && *mains >= 0.5 / step) return false;
+    if (mains && text.empty()) text = mains_pickup_text(f, *mains);
+    return mains.has_value();
+  });
+  return text;
+}
+
+/// The paired tests' block length of `folds` [rows].
+std::size_t test_rows_per_block(const Folds& folds) {
+  return folds.blocks > 0 ? (folds.block_of.size() + static_cast<std::size_t>(folds.blocks) - 1) /
+                                static_cast<std::size_t>(folds.blocks)
+                          : 2;
+}
+
+/// Whether the candidate's correction stands out of the wander it leaves when it is slow
+/// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
+/// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
+/// a swap (CandidateScore::replaces) refits what earlier rounds claimed and is not tested again.
+bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::span<const RecordedSample> observations,
+                    const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base, const Folds& fifths,
+                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  if (!c.fit || !c.fit->effect || !c.replaces.empty() || !c.fit->effect->members().empty()) return true;
+  if (!stands_out_of_wander(base - c.held_out_residual, c.held_out_residual)) return false;
+  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
+  if (!registration) return true;
+  const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
+  const CandidateScore on_fifths = score_candidate(model, *registration, observations, search, base, fifths, parallel,
+                                                   settings.cross_validation, current.get());
+  return on_fifths.failure.empty() && carries_to_whole_fifths(base, on_fifths.held_out_residual, fifths);
+}
+
+/// The formula's terms refitted on four contiguous fifths and judged on the fifth it never saw.
+bool formula_carries(const CandidateScore& formula, std::span<const RecordedSample> observations,
+                     std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths) {
+  if (!formula.fit) return false;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : formula.fit->parameters) terms.push_back(p.name);
+  const std::optional<Eigen::MatrixX2d> held_out = formula_held_out(observations, rows, base, terms, fifths);
+  return held_out && carries_to_whole_fifths(base, *held_out, fifths);
+}
+
+/// A claim that takes less than this share of the model's held-out mean square is tested again on
+/// whole fifths and against the slow wander: what leaks from a slow noise through interleaved folds
+/// takes a few percent (9 % of a random walk's), a real effect at SNR 1.5 takes 69 %. A strong claim
+/// is left to the other rounds: judged against the wander it leaves beside a second mechanism not yet
+/// explained (a hysteresis beside a channel's gain), a real effect looked like noise.
+constexpr double kWeakClaimFall = 0.2;
+
+bool weak_claim(const CandidateScore& c, double base_ms) {
+  return base_ms - c.held_out_rmse_nm * c.held_out_rmse_nm < kWeakClaimFall * base_ms;
+}
+
+/// The claim rule's second test on the effect that would be claimed: one that does not carry to
+/// whole fifths is marked failed and goes last, and the next claimable one is tried (three at most,
+/// each test costs a fit).
+void demote_what_does_not_carry(std::vector<CandidateScore>& ranking, const CouplingModel& model,
+                                std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
+                                const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,
+                                double base_ms, double noise_ms, const DiagnosisSettings& settings) {
+  for (int tried = 0; tried < 3 && !ranking.empty(); ++tried) {
+    CandidateScore& front = ranking.front();
+    if (!claimable(front, base_ms, noise_ms, settings) || !weak_claim(front, base_ms) ||
+        effect_carries(front, model, observations, search, base, fifths, parallel, settings)) {
+      return;
+    }
+    front.failure = "as slow as the noise's wander and not out of it, or does not carry to a fifth of the recording "
+                    "it was not fitted on";
+    std::rotate(ranking.begin(), ranking.begin() + 1, ranking.end());
+  }
+}
+
+/// One round: residual, noise, signature, candidates, outcome.
+/// `residual`: the model's on `rows`.
+DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& residual,
+                            std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                            const std::vector<std::size_t>& search, const std::vector<std::size_t>& signature_rows,
+                            const Folds& folds, const ParallelFor& parallel, const CouplingModel& given,
+                            const std::set<std::string>& partly, const std::map<std::string, std::string>& rivals,
+                            const DiagnosisSettings& settings) {
+  DiagnosisRound round;
+  for (const auto& e : model.effects()) round.model_effects.push_back(e->name());
+  round.noise = estimate_noise(residual);
+  const double all_ms = pooled_mean_square(residual);
+  round.rmse_nm = std::sqrt(all_ms);
+  // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
+  round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
+                                       round.noise.variance_inflation());
+  // The level test is against the variogram's noise, which a cycle or a step in time does not
+  // inflate: with it, a residual that no input explains is still searched for a time pattern.
+  // Cycles and steps on the dense rows (on the search rows of a long recording a cycle of a few
+  // seconds aliases, and a step's time is known only to their spacing). Each stands out of the
+  // noise by its own test (cycle_period.h, change_point.h), and is something to explain: an
+  // interference that no input shows hides from the signature, and from a variogram, which takes
+  // a cycle of a few samples for correlated noise.
+  round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows));
+  round.mains_pickup = take_out_mains_cycles(round.time_terms, observations, signature_rows);
+  round.systematic = is_systematic(all_ms, round.noise.mean_square(), rows.size(), round.noise, round.signature) ||
+                     !round.time_terms.empty();
+  // Where no input shows structure, the residual's own scale, correlation and tails are the noise's
+  // unless a time pattern or a frequency is found (noise_estimate.h): the share of the excess a
+  // claim must remove is then measured against heavy-tailed, long-correlated noise as it is.
+  const std::optional<NoiseEstimate> as_noise =
+      round.signature.systematic() ? std::nullopt : std::optional(estimate_noise(residual, true));
+  // Tails included: a Student-t noise's mean square is twice its robust sigma^2 and is no physics.
+  const double noise_ms = (as_noise ? *as_noise : round.noise).mean_square();
+  const Eigen::MatrixX2d base = select_rows(residual, rows, search);
+  const double base_ms = pooled_mean_square(base);
+  round.search_base_rmse_nm = std::sqrt(base_ms);
+  if (!round.systematic) {
+    if (as_noise) round.noise = *as_noise;
+    round.outcome = RoundOutcome::noise;
+    return round;
+  }
+  // A skew of the moment channels, by cross-correlation on the dense rows: a start for moment_delay.
+  std::vector<ParameterValues> hints;
+  if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows))) {
+    hints.push_back({{"delay_s", *delay}});
+  }
+  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, rivals, settings, hints);
+  put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
+  put_simpler_swap_first(round.ranking, folds, settings);
+  put_simplest_alike_first(round.ranking, base, folds, base_ms, noise_ms, settings);
+  if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
+  // The second held-out test of the claim rule: whole fifths (whole_fifths.h).
+  const Folds fifths = whole_fifths(search.size(), test_rows_per_block(folds));
+  demote_what_does_not_carry(round.ranking, model, observations, search, base, fifths, parallel, base_ms, noise_ms,
+                             settings);
+  if (round.formula && claimable(*round.formula, base_ms, noise_ms, settings) &&
+      !formula_carries(*round.formula, observations, search, base, fifths)) {
+    round.formula->failure = "does not carry to a fifth of the recording it was not fitted on";
+  }
+  // A timing effect must beat the centred average of the inputs it could be (input_noise_check.h).
+  demote_what_input_noise_explains(
+      round.ranking, model, observations, search, base, folds, parallel, settings.cross_validation, settings.claim_t,
+      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+  // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
+  demote_what_noise_explains(
+      round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
+      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
+      [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims);
+  // Refitting an effect an earlier round added and said explains only partly makes no new claim:
+  // it needs to be significant, not to remove a share of the excess (a thermal misalignment fitted
+  // beside a weight offset, refitted once the offset is in, took 24 % of the excess and was left
+  // wrong).
+  const auto refits_a_partly_claim = [&partly](const CandidateScore& c) {
+    if (c.kind != CandidateKind::refinement || !c.fit || !c.fit->effect) return false;
+    const std::vector<std::string> names = claimed_names(*c.fit->effect);
+    return std::any_of(names.begin(), names.end(), [&partly](const std::string& n) { return partly.count(n) > 0; });
+  };
+  const bool refits_partly = !round.ranking.empty() && refits_a_partly_claim(round.ranking.front()) &&
+                             round.ranking.front().failure.empty() &&
+                             round.ranking.front().against_base.t >= settings.claim_t &&
+                             std::pow(round.ranking.front().held_out_rmse_nm, 2) < base_ms;
+  const bool effect_ok =
+      !round.ranking.empty() && (refits_partly || claimable(round.ranking.front(), base_ms, noise_ms, settings));
+  const bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
+  if (round.formula && !round.ranking.empty() && round.ranking.front().failure.empty()) {
+    round.formula_against_effect = paired_block_test(round.ranking.front().held_out_residual,
+                                                     round.formula->held_out_residual, folds.block_of, folds.blocks);
+  }
+  if (formula_ok && effect_ok) {
+    const CandidateScore& effect = round.ranking.front();
+    const PairedBlockTest t = round.formula_against_effect;
+    const double effect_gain = base_ms - std::pow(effect.held_out_rmse_nm, 2);
+    const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
+    // Plausibility is advice, never a veto: an effect outside its plausible range (a rig aligned
+    // worse than usual) keeps the claim unless the formula is significantly better. Only an effect
+    // held on a physical bound, which cannot say how far beyond it the truth lies, yields to it.
+    round.formula_chosen = at_bound(effect) || (t.t >= settings.formula_over_effect_t &&
+                                                formula_gain >= settings.formula_over_effect_gain * effect_gain);
+    if (round.formula_chosen && !at_bound(effect) && effect_explains_part(effect, *round.formula, base, observations, search,
+                                                                            folds, formula_settings(round, settings))) {
+      round.formula_chosen = false;
+    }
+  } else {
+    round.formula_chosen = formula_ok;
+  }
+  if (!effect_ok && !formula_ok && signature_rows.size() >= 2 * search.size()) {
+    // A long recording: a weak formula that its 20,000 dense rows reveal, and 1,500 search rows do
+    // not (a ripple of a third of the noise), is searched for on the dense rows, with folds of its
+    // own. Formulas only: they are linear, so the dense rows cost milliseconds where every effect's
+    // fit would cost seconds.
+    const Folds dense_folds = with_test_blocks(
+        blocked_folds(signature_rows.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
+                      settings.cross_validation.fold_seed),
+        test_block_rows(round.noise, rows.size(), signature_rows.size(), settings));
+    const Eigen::MatrixX2d dense = without_levels(select_rows(residual, rows, signature_rows));
+    FormulaSettings fast = formula_settings(round, settings);
+    fast.fast_terms_only = true;
+    std::optional<CandidateScore> formula = formula_candidate(observations, signature_rows, dense, dense_folds, fast);
+    // The excess it must remove a share of is over the noise it leaves, taken at its own scale,
+    // correlation and tails: on a long recording of coloured, wandering noise the variogram's
+    // estimate leaves an excess that is the noise's own slow power, and a ripple of 0.3 sigma that
+    // the rows reveal beyond doubt (t >= 3.5) could never remove 30 % of it. Fast terms only: no
+    // term in time or temperature is offered here to follow a drift.
+    const double left_ms = formula ? estimate_noise(formula->held_out_residual, true).mean_square() : noise_ms;
+    const auto dense_claimable = [&](const CandidateScore& c) {
+      return claimable(c, pooled_mean_square(dense), std::max(noise_ms, left_ms), settings);
+    };
+    bool dense_ok = formula && dense_claimable(*formula) &&
+                    formula_carries(*formula, observations, signature_rows, dense,
+                                    whole_fifths(signature_rows.size(), test_rows_per_block(dense_folds)));
+    if (dense_ok) {
+      // The same third test as on the search rows, in the same family: every candidate of the
+      // round was tried before this one.
+      std::vector<CandidateScore> none;
+      demote_what_noise_explains(
+          none, formula, round.time_terms, model, observations, signature_rows, dense, parallel, dense_claimable,
+          [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims,
+          round.ranking.size() + (round.formula ? 1 : 0));
+      dense_ok = formula->failure.empty();
+    }
+    if (dense_ok) {
+      round.formula = std::move(formula);
+      round.formula_chosen = true;
+      round.formula_on_dense_rows = true;
+      round.search_base_rmse_nm = std::sqrt(pooled_mean_square(dense));
+      round.outcome = RoundOutcome::formula_proposed;
+      round.channel_reduction = channel_reduction(dense, round.formula->held_out_residual);
+      return round;
+    }
+  }
+  if (!effect_ok && !formula_ok) {
+    // Structure must be explained by something: an input (the signature), a time pattern or a
+    // frequency (the formula's terms). A level above the noise estimate that none of them explains
+    // on held-out data is heavy-tailed or wandering noise, not physics. The signature's structure
+    // too must pay held out, by the claim rule, before it is called "unexplained".
+    const std::optional<CandidateScore> held_signature =
+        signature_held_out(observations, search, base, folds, round.signature);
+    if (held_signature) round.signature_reduction = held_signature->reduction;
+    const std::optional<CandidateScore> signature_on_fifths =
+        held_signature ? signature_held_out(observations, search, base, fifths, round.signature) : std::nullopt;
+    round.unstructured_excess = !held_signature || !claimable(*held_signature, base_ms, noise_ms, settings) ||
+                                !signature_on_fifths ||
+                                !carries_to_whole_fifths(base, signature_on_fifths->held_out_residual, fifths);
+    if (round.unstructured_excess) {
+      round.systematic = false;
+      round.noise = estimate_noise(residual, true);
+    }
+    round.outcome = round.unstructured_excess ? RoundOutcome::noise : RoundOutcome::unexplained;
+    return round;
+  }
+  if (round.formula_chosen) {
+    round.outcome = RoundOutcome::formula_proposed;
+  } else {
+    round.alike = alike_effects(model, round.ranking, base, folds, base_ms, noise_ms, observations, rows,
+                                round.noise.pooled_sigma_nm(), settings);
+    round.outcome = at_bound(round.ranking.front()) ? RoundOutcome::partly_explained
+                    : round.alike.empty()           ? RoundOutcome::effect_found
+                                                    : RoundOutcome::indistinguishable;
+    if (round.outcome == RoundOutcome::partly_explained) {
+      round.partly_reason = "a fitted value on a physical bound of the effect: the truth may lie beyond what it can say, "
+                            "or another mechanism has a similar signature";
+    } else if (round.outcome == RoundOutcome::effect_found) {
+      // Found only when what it leaves shows no structure in the inputs it explains: the physical
+      // inputs that carry a real share of its correction (given the others), e.g. loading_direction
+      // for hysteresis. Not time: a sweep moves every input with time, and effects act through the
+      // others. A gain of both channels that took a torque sensor's nonlinearity leaves torque
+      // structure behind, and is then only "partly".
+      const CandidateScore& best = round.ranking.front();
+      const double inflation = round.noise.variance_inflation();
+      const ResidualSignature correction = residual_signature(observations, search, base - best.held_out_residual, inflation);
+      const ResidualSignature after = residual_signature(observations, search, best.held_out_residual, inflation);
+      for (const InputSignature& s : correction.inputs) {
+        if (s.input == "time" || s.explained_share < kExplainedInputShare) continue;
+        const InputSignature* left = after.find(s.input);
+        if (!left || !left->systematic) continue;
+        round.outcome = RoundOutcome::partly_explained;
+        round.partly_reason = "the residual it leaves is still systematic against " + s.input + ", an input it explains";
+        break;
+      }
+    }
+  }
+  round.channel_reduction = channel_reduction(base, round.chosen().held_out_residual);
+  return round;
+}
+
+/// The round's claim refitted on the refit rows (an effect from its search fit; a formula by least
+/// squares), or nullopt when the refit cannot predict those rows.
+std::optional<EffectFit> refit_claim(const CouplingModel& model, const DiagnosisRound& round,
+                                     std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                                     const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& refit,
+                                     const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  const CandidateScore& chosen = round.chosen();
+  if (round.formula_chosen) {
+    std::vector<std::string> terms;
+    for (const ParameterEstimate& p : chosen.fit->parameters) terms.push_back(p.name);
+    const std::shared_ptr<const Effect> earlier = model.effect(kExpressionEffect);
+    if (!earlier) return fit_formula(observations, refit, select_rows(residual, rows, refit), terms, round.noise.variance_inflation());
+    // A model with a formula already gets one formula over both sets of terms, refitted together on
+    // what the model leaves without it: a second expression would replace the first.
+    for (const ParameterSpec& p : earlier->info().parameters) {
+      if (std::find(terms.begin(), terms.end(), p.name) == terms.end()) terms.push_back(p.name);
+    }
+    const ModelResiduals without = model_residuals(model.without_effect(kExpressionEffect), observations, refit, parallel);
+    if (!without.failed_rows.empty()) return std::nullopt;
+    return fit_formula(observations, refit, without.residual, terms, round.noise.variance_inflation());
+  }
+  CouplingModel base = model;
+  for (const std::string& name : chosen.replaces) base = base.without_effect(name);
+  const std::shared_ptr<const Effect> current = base.effect(chosen.info->name);
+  const std::optional<EffectRegistration> registration =
+      current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
+  if (!registration) return std::nullopt;
+  std::optional<EffectFit> fit =
+      refit_effect(base, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
+  // s^2 (J'J)^-1 counts every sample as independent; correlated noise carries fewer.
+  const double inflation = std::sqrt(round.noise.variance_inflation());
+  if (fit) for (ParameterEstimate& p : fit->parameters) if (p.standard_error) *p.standard_error *= inflation;
+  return fit;
+}
+
+/// A fresh formula that takes over an earlier claim: its search-row score and its refit.
+struct AbsorbingFormula {
+  CandidateScore score;
+  EffectFit refit;
+};
+
+/// A formula claimed this round may take over an earlier claim (an offset that took the mean of a
+/// drift in round 1): the formula searched afresh on what the model leaves without that claim and
+/// without its formula. When it does as well on held-out blocks as the model with both (paired t
+/// below keep_t), it is returned, with its refit on the refit rows, to replace them.
+std::optional<AbsorbingFormula> formula_absorbing(const CouplingModel& model, const std::string& name,
+                                           const Eigen::MatrixX2d& held_out, std::span<const RecordedSample> observations,
+                                           const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit,
+                                           const Folds& folds, const ParallelFor& parallel, const FormulaSettings& settings,
+                                           double keep_t) {
+  const CouplingModel bare = model.without_effect(name).without_effect(kExpressionEffect);
+  const ModelResiduals on_search = model_residuals(bare, observations, search, parallel);
+  if (!on_search.failed_rows.empty()) return std::nullopt;
+  const std::optional<CandidateScore> fresh = formula_candidate(observations, search, on_search.residual, folds, settings);
+  if (!fresh || paired_block_test(fresh->held_out_residual, held_out, folds.block_of, folds.blocks).t >= keep_t) {
+    return std::nullopt;
+  }
+  const ModelResiduals on_refit = model_residuals(bare, observations, refit, parallel);
+  if (!on_refit.failed_rows.empty()) return std::nullopt;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : fresh->fit->parameters) terms.push_back(p.name);
+  std::optional<EffectFit> fitted = fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
+  if (!fitted) return std::nullopt;
+  return AbsorbingFormula{*fresh, std::move(*fitted)};
+}
+
+/// Search rows per block of the paired tests: three times the variance inflation of the noise's
+/// correlation between neighbouring search rows (lag-1 correlation phi^stride for search rows
+/// `stride` samples apart), so that block means are nearly independent; at most the rows of the
+/// cross-validation's blocks, the most a test needs.
+std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
+                            const DiagnosisSettings& settings) {
+  const double stride = static_cast<double>(rows) / static_cast<double>(std::max<std::size_t>(1, search));
+  const double phi = std::pow(std::clamp(noise.phi.maxCoeff(), 0.0, 0.99), stride);
+  const auto wanted = static_cast<std::size_t>(std::ceil(3.0 * (1.0 + phi) / (1.0 - phi)));
+  const std::size_t coarsest = search / static_cast<std::size_t>(settings.cross_validation.folds *
+                                                                  settings.cross_validation.blocks_per_fold);
+  return std::clamp<std::size_t>(wanted, 2, std::max<std::size_t>(2, coarsest));
+}
+
+/// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
+/// once, from the base model's residual. Returns them (indices into the recording).
+std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations) {
+  std::vector<std::size_t> outliers;
+  for (std::size_t position : outlier_positions(residual, deviations)) outliers.push_back(rows[position]);
+  if (outliers.empty()) return outliers;
+  std::vector<std::size_t> sorted = outliers;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+  return outliers;
+}
+
+/// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
+/// its rows leave `rows` and `residual` and join the data-quality findings.
+void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                          Eigen::MatrixX2d& residual) {
+  std::vector<std::size_t> flipped;
+  for (DataQualityFinding& f : moment_polarity_flips(observations, rows, residual)) {
+    flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
+    out.data_quality.push_back(std::move(f));
+  }
+  if (flipped.empty()) return;
+  std::sort(flipped.begin(), flipped.end());
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(flipped.begin(), flipped.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+}
+
+/// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
+/// when the claim is a formula, those a fresh formula can take over (the claim becomes that formula).
+/// Refinements of the given model's effects are refined again later, never removed.
+void revisit_claims(CouplingModel& model, DiagnosisRound& round, std::vector<std::shared_ptr<const Effect>>& added,
+                    const CouplingModel& given, std::span<const RecordedSample> observations,
+                    const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit, const Folds& folds,
+                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  std::vector<std::string> revisit;
+  const std::vector<std::string> claimed = claimed_names(*round.claimed->effect);
+  for (const auto& earlier : added) {
+    if (!given.has_effect(earlier->name()) &&
+        std::find(claimed.begin(), claimed.end(), earlier->name()) == claimed.end()) {
+      revisit.push_back(earlier->name());
+    }
+  }
+  const auto drop = [&](const std::string& name) {
+    round.dropped.push_back(name);
+    std::erase_if(added, [&](const auto& e) { return e->name() == name; });
+  };
+  for (const std::string& name : redundant_claims(model, revisit, round.chosen().held_out_residual, observations, search,
+                                                  folds, parallel, settings.keep_t)) {
+    model = model.without_effect(name);
+    drop(name);
+  }
+  if (!round.formula_chosen) return;
+  for (const std::string& name : revisit) {
+    if (name == kExpressionEffect || std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
+      continue;
+    }
+    std::optional<AbsorbingFormula> absorbed = formula_absorbing(model, name, round.chosen().held_out_residual,
+                                                                 observations, search, refit, folds, parallel,
+                                                                 formula_settings(round, settings), settings.keep_t);
+    if (!absorbed) continue;
+    const CouplingModel taken = model.without_effect(name).with_effect(absorbed->refit.effect);
+    if (!model_residuals(taken, observations, refit, parallel).failed_rows.empty()) continue;
+    model = taken;
+    // The round's formula record becomes the one claimed, so the JSON's formula, its claimed
+    // parameters and the verdict's held-out figures are of one formula. Its fall is quoted against
+    // the round's model, as every candidate's.
+    absorbed->score.reduction = round.search_base_rmse_nm > 0.0
+                                    ? 1.0 - absorbed->score.held_out_rmse_nm / round.search_base_rmse_nm
+                                    : 0.0;
+    round.formula = std::move(absorbed->score);
+    round.claimed = std::move(absorbed->refit);
+    drop(name);
+  }
+}
+
+}  // namespace
+
+const char* to_string(RoundOutcome outcome) {
+  switch (outcome) {
+    case RoundOutcome::effect_found: return "effect_found";
+    case RoundOutcome::indistinguishable: return "indistinguishable";
+    case RoundOutcome::noise: return "noise";
+    case RoundOutcome::unexplained: return "unexplained";
+    case RoundOutcome::partly_explained: return "partly_explained";
+    case RoundOutcome::formula_proposed: return "formula_proposed";
+  }
+  return "";
+}
+
+const CandidateScore& DiagnosisRound::chosen() const { return formula_chosen ? *formula : ranking.front(); }
+
+Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> observations,
+                   const ParallelFor& parallel, const DiagnosisSettings& settings) {
+  if (settings.formula_settings.teeth == 0) {  // the tooth-mesh orders of the model's coupling
+    DiagnosisSettings own = settings;
+    own.formula_settings.teeth = model.geometry().teeth();
+    return diagnose(model, observations, parallel, own);
+  }
+  Diagnosis out;
+  out.rows = observations.size();
+  // A NaN would poison every fit silently: refuse it here, naming the row.
+  for (std::size_t i = 0; i < observations.size(); ++i) {
+    require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
+    require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
+  }
+  const DataQuality quality = check_data_quality(observations, settings.data_quality);
+  out.data_quality = quality.findings;
+  std::vector<std::size_t> ordered = time_ordered(observations);
+  std::erase_if(ordered, [&](std::size_t r) {
+    return std::binary_search(quality.excluded_rows.begin(), quality.excluded_rows.end(), r);
+  });
+  const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
+  out.excluded_rows = first.failed_rows;
+  out.exclusion_reason = first.first_failure;
+  std::vector<std::size_t> rows = ordered;
+  std::erase_if(rows, [&](std::size_t r) { return std::binary_search(first.failed_rows.begin(), first.failed_rows.end(), r); });
+  // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
+  Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
+  exclude_moment_flips(out, observations, rows, residual);
+  out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
+  const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
+  if (rows.size() < static_cast<std::size_t>(minimum)) {
+    throw InvalidInput("recording.rows", static_cast<double>(rows.size()),
+                       "at least " + std::to_string(minimum) + " rows the model can predict");
+  }
+  const std::vector<std::size_t> search = evenly_spaced(rows, settings.search_rows);
+  out.search_rows = search.size();
+  const std::vector<std::size_t> refit = evenly_spaced(rows, settings.refit_rows);
+  out.refit_rows = refit.size();
+  const Folds folds = with_test_blocks(
+      blocked_folds(search.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
+                    settings.cross_validation.fold_seed),
+      test_block_rows(estimate_noise(residual), rows.size(), search.size(), settings));
+  if (auto spikes = spike_finding(out.outlier_rows, observations, settings.outlier_deviations)) {
+    out.data_quality.push_back(std::move(*spikes));
+  }
+  out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
+  out.summary = data_quality_text(out.data_quality);
+  if (!out.outlier_rows.empty()) {
+    out.summary += (out.summary.empty() ? "" : "\n") + std::to_string(out.outlier_rows.size()) + " of " +
+                   std::to_string(out.rows) + " samples excluded as outliers (more than " +
+                   short_number(settings.outlier_deviations) + " robust deviations from the running median of their neighbours).";
+  }
+  CouplingModel current = model;
+  std::set<std::string> partly;  // effects added by a round that said they explain only partly
+  std::map<std::string, std::string> rivals;  // a partly claim's rival (rival_of_claim)
+  for (int r = 0; r < settings.max_rounds; ++r) {
+    DiagnosisRound round =
+        search_round(current, residual, observations, rows, search, refit, folds, parallel, model, partly, rivals, settings);
+    const bool claims = round.outcome != RoundOutcome::noise && round.outcome != RoundOutcome::unexplained;
+    if (claims) round.claimed = refit_claim(current, round, observations, rows, residual, refit, parallel, settings);
+    std::optional<ModelResiduals> next;
+    CouplingModel candidate = current;
+    if (round.claimed) {
+      for (const std::string& name : round.chosen().replaces) candidate = candidate.without_effect(name);
+      candidate = candidate.with_effect(round.claimed->effect);  // model_with_candidate, with the refit
+      next = model_residuals(candidate, observations, rows, parallel);
+      if (!next->failed_rows.empty()) round.claimed.reset();
+    }
+    // A claim whose refit cannot predict every row is reported with its search fit, and the
+    // search stops there rather than lose rows.
+    const bool continues = round.claimed.has_value();
+    if (!continues && claims) round.claimed = round.chosen().fit;
+    if (continues) {
+      for (const std::string& name : round.chosen().replaces) {
+        round.dropped.push_back(name);
+        std::erase_if(out.added, [&](const auto& e) { return e->name() == name; });
+        partly.erase(name);
+        rivals.erase(name);
+      }
+      const CouplingModel claimed_model = candidate;
+      const std::vector<std::shared_ptr<const Effect>> added_before = out.added;
+      const std::optional<EffectFit> claimed_fit = round.claimed;
+      const std::optional<CandidateScore> formula_before = round.formula;
+      // A dense-row formula's held-out residual is not on the search rows the revisit compares.
+      if (!round.formula_on_dense_rows) {
+        revisit_claims(candidate, round, out.added, model, observations, search, refit, folds, parallel, settings);
+      }
+      if (!round.dropped.empty()) {
+        // A claim dropped or taken over changed the model: its residual again, on every row. Should
+        // that refuse a row (a dropped effect held it inside the jam angle), every claim stays.
+        std::optional<ModelResiduals> revisited = model_residuals(candidate, observations, rows, parallel);
+        if (revisited->failed_rows.empty()) {
+          next = std::move(revisited);
+        } else {
+          candidate = claimed_model;
+          out.added = added_before;
+          round.claimed = claimed_fit;
+          round.formula = formula_before;
+          const std::vector<std::string>& replaced = round.chosen().replaces;
+          std::erase_if(round.dropped, [&](const std::string& name) {
+            return std::find(replaced.begin(), replaced.end(), name) == replaced.end();
+          });
+        }
+      }
+      if (const std::optional<std::string> rival = rival_of_claim(round, model)) rivals[round.chosen().info->name] = *rival;
+      for (const auto& effect : claimed_effects(round.claimed->effect)) {
+        partly.erase(effect->name());
+        if (round.outcome == RoundOutcome::partly_explained) partly.insert(effect->name());
+        std::erase_if(out.added, [&](const auto& e) { return e->name() == effect->name(); });
+        out.added.push_back(effect);
+      }
+      residual = next->residual;
+      current = candidate;
+    }
+    round.verdict = round_verdict(static_cast<int>(out.rounds.size()) + 1, round);
+    out.summary += (out.summary.empty() ? "" : "\n") + round.verdict;
+    out.rounds.push_back(std::move(round));
+    if (!continues) break;
+  }
+  return out;
+}
+
+}  // namespace gc

@@ -1,0 +1,336 @@
+#include "diagnosis/effect_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "diagnosis/model_residuals.h"
+#include "diagnosis/parameter_box.h"
+#include "diagnosis/parameter_identifiability.h"
+#include "diagnosis/pattern_search.h"
+#include "diagnosis/start_points.h"
+#include "diagnosis/verdict_text.h"
+#include "core/model_error.h"
+
+namespace gc {
+namespace {
+
+/// The least-squares problem over the free parameters; held ones keep their value in `full`.
+struct EffectProblem {
+  const CouplingModel& base;
+  const EffectRegistration& registration;
+  ParameterBox box;
+  std::span<const RecordedSample> observations;
+  std::span<const std::size_t> rows;
+  const ParallelFor& parallel;
+  std::vector<bool> free;
+  Eigen::VectorXd full;  ///< every parameter in the unit box
+  double jam_angle_rad;  ///< of the base model's coupling, for plausible ranges
+
+  Eigen::VectorXd expand(const Eigen::VectorXd& free_x) const {
+    Eigen::VectorXd x = full;
+    for (int i = 0, k = 0; i < box.size(); ++i) if (free[i]) x(i) = free_x(k++);
+    return x;
+  }
+  Eigen::VectorXd compress(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd free_x(std::count(free.begin(), free.end(), true));
+    for (int i = 0, k = 0; i < box.size(); ++i) if (free[i]) free_x(k++) = x(i);
+    return free_x;
+  }
+  std::optional<Eigen::VectorXd> residual(const Eigen::VectorXd& x) const {
+    try {
+      const CouplingModel model = model_with(base, registration, box.to_values(x));
+      const ModelResiduals r = model_residuals(model, observations, rows, parallel);
+      if (!r.failed_rows.empty()) return std::nullopt;
+      return Eigen::Map<const Eigen::VectorXd>(r.residual.data(), r.residual.size());
+    } catch (const ModelError&) {
+      return std::nullopt;  // e.g. a compliance that makes the coupling unphysical
+    }
+  }
+  ResidualFunction over_free() const {
+    return [this](const Eigen::VectorXd& free_x) { return residual(expand(free_x)); };
+  }
+  LeastSquaresResult solve(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
+    return bounded_least_squares(over_free(), compress(x), options);
+  }
+  /// Levenberg-Marquardt, then the polish.
+  LeastSquaresResult solve_and_polish(const Eigen::VectorXd& x, const LeastSquaresOptions& options) const {
+    return polish(solve(x, options), options);
+  }
+  /// The compass-search polish, then the Jacobian where it ended.
+  LeastSquaresResult polish(LeastSquaresResult start, const LeastSquaresOptions& options) const {
+    LeastSquaresResult result = pattern_search(over_free(), std::move(start), 0.02, 5e-4, 40);
+    result.jacobian = difference_jacobian(over_free(), result.x, result.residual, options.difference_step,
+                                          result.evaluations);
+    return result;
+  }
+};
+
+/// The Jacobian over all parameters, zero columns for the held ones.
+Eigen::MatrixXd full_jacobian(const EffectProblem& problem, const Eigen::MatrixXd& free_jacobian) {
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(free_jacobian.rows(), problem.box.size());
+  for (int i = 0, k = 0; i < problem.box.size(); ++i) if (problem.free[i]) j.col(i) = free_jacobian.col(k++);
+  return j;
+}
+
+/// Starts: defaults, neutral values, Halton points; the `count` with the lowest cost.
+std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
+                                         const Effect* current, int& evaluations) {
+  std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};
+  if (current) {
+    const Eigen::VectorXd now = problem.box.to_unit(current->values());
+    candidates.push_back(now);
+    // A shape freed for the first time bends the fit away from the form the other values were
+    // found on: from them alone the descent stops at a shape barely bent, so try it bent too.
+    for (int i = 0; i < problem.box.size(); ++i) {
+      if (!problem.box.info().parameters[static_cast<std::size_t>(i)].refine_only) continue;
+      for (const double u : {0.15, 0.3, 0.5}) {
+        Eigen::VectorXd bent = now;
+        bent(i) = u;
+        candidates.push_back(bent);
+      }
+    }
+  }
+  std::vector<double> neutral;
+  for (const ParameterSpec& spec : problem.box.info().parameters) neutral.push_back(spec.neutral);
+  candidates.push_back(problem.box.to_unit(neutral));
+  for (const ParameterValues& hint : settings.hints) {
+    std::vector<double> values;
+    bool mine = !hint.empty();
+    for (const auto& named : hint) {  // not a structured binding: clang 14 cannot capture one
+      mine = mine && std::any_of(problem.box.info().parameters.begin(), problem.box.info().parameters.end(),
+                                 [&](const ParameterSpec& p) { return p.name == named.first; });
+    }
+    if (!mine) continue;
+    for (const ParameterSpec& spec : problem.box.info().parameters) {
+      values.push_back(hint.count(spec.name) ? hint.at(spec.name) : spec.default_value);
+    }
+    candidates.push_back(problem.box.to_unit(values));
+  }
+  for (const Eigen::VectorXd& x : halton_points(problem.box.size(), settings.probe_points)) candidates.push_back(x);
+  for (Eigen::VectorXd& x : candidates) {  // a held parameter starts, and stays, at its default
+    for (int i = 0; i < problem.box.size(); ++i) if (!problem.free[static_cast<std::size_t>(i)]) x(i) = problem.full(i);
+  }
+  std::vector<std::pair<double, Eigen::VectorXd>> scored;
+  for (const Eigen::VectorXd& x : candidates) {
+    ++evaluations;
+    if (const auto r = problem.residual(x)) scored.emplace_back(r->squaredNorm(), x);
+  }
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Eigen::VectorXd> starts;
+  for (const auto& [cost, x] : scored) {
+    if (static_cast<int>(starts.size()) < settings.starts) starts.push_back(x);
+  }
+  return starts;
+}
+
+/// Within 1 % of the box's width from an edge: the polish stops short of a bound by about its step.
+bool on_edge(double unit) { return unit <= 0.01 || unit >= 0.99; }
+
+/// Empty when the value is inside the box, else which physical bound it sits on. A bound that is the
+/// neutral value (no low-torque rise of friction, no lag) is where the data says "none": no note.
+std::string at_bound_note(const ParameterSpec& spec, const ParameterBox& box, int i, double unit) {
+  if (spec.period > 0.0) return "";  // an angle wraps: its bounds are two turns apart, not physics
+  if (!on_edge(unit) || !box.at_physical_bound(i, unit)) return "";
+  if ((unit <= 0.5 ? spec.lower : spec.upper) == spec.neutral) return "";
+  return unit <= 0.5 ? "at its lower bound " + short_number(spec.lower) + " " + spec.unit
+                     : "at its upper bound " + short_number(spec.upper) + " " + spec.unit;
+}
+
+std::string implausible_note(const ParameterSpec& spec, double low, double high) {
+  std::string note = "outside its plausible range " + short_number(low) + " to " + short_number(high) + " " + spec.unit;
+  if (!spec.check.empty()) note += ": check " + spec.check;
+  return note;
+}
+
+/// The values with every periodic parameter (a direction, a phase) wrapped into one turn.
+ParameterValues wrapped(const EffectInfo& info, ParameterValues values) {
+  for (const ParameterSpec& spec : info.parameters) {
+    if (spec.period > 0.0) values[spec.name] = wrap_periodic(values.at(spec.name), spec.period);
+  }
+  return values;
+}
+
+/// Estimates in physical units: s^2 (J'J)^-1 on the free parameters, scaled by the bounds.
+EffectFit make_fit(const EffectProblem& problem, const LeastSquaresResult& result,
+                   const std::vector<std::string>& hold_notes, bool with_uncertainty, int evaluations) {
+  EffectFit fit;
+  fit.info = problem.registration.info;
+  fit.unit_values = problem.expand(result.x);
+  for (int i = 0; i < problem.box.size(); ++i) {
+    fit.box_lower.push_back(problem.box.lower(i));
+    fit.box_upper.push_back(problem.box.upper(i));
+  }
+  fit.free = problem.free;
+  const ParameterValues values = wrapped(*fit.info, problem.box.to_values(fit.unit_values));
+  fit.effect = problem.registration.make(values);
+  fit.sum_of_squares = result.cost;
+  fit.rows = problem.rows.size();
+  fit.evaluations = evaluations;
+  const Eigen::Index m = result.residual.size(), p = result.x.size();
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(p, p);
+  if (with_uncertainty && m > p && p > 0) {
+    const double s2 = result.cost / static_cast<double>(m - p);
+    covariance = s2 * (result.jacobian.transpose() * result.jacobian).completeOrthogonalDecomposition().pseudoInverse();
+  }
+  for (int i = 0, k = 0; i < problem.box.size(); ++i) {
+    const ParameterSpec& spec = problem.box.info().parameters[static_cast<std::size_t>(i)];
+    ParameterEstimate e{spec.name, spec.unit, values.at(spec.name), std::nullopt, !problem.free[i],
+                        hold_notes[static_cast<std::size_t>(i)]};
+    if (problem.free[i]) {
+      if (with_uncertainty) e.standard_error = std::sqrt(std::max(0.0, covariance(k, k))) * problem.box.range(i);
+      e.note = at_bound_note(spec, problem.box, i, fit.unit_values(i));
+      const auto [low, high] = plausible_range(spec, problem.jam_angle_rad);
+      const double tolerance = 1e-9 * std::max(1.0, std::abs(high - low));
+      e.at_bound = !e.note.empty();
+      e.plausible = spec.period > 0.0 || (!e.at_bound && e.value >= low - tolerance && e.value <= high + tolerance);
+      if (e.note.empty() && !e.plausible) e.note = implausible_note(spec, low, high);
+      ++k;
+    }
+    fit.parameters.push_back(e);
+  }
+  return fit;
+}
+
+std::string hold_note(const EffectProblem& problem, const Unidentifiable& u, bool refinement) {
+  if (u.partner < 0) return refinement ? "no influence on these rows; held at the model's value" : "no influence on these rows at the fitted values; held";
+  const std::string& partner = problem.box.info().parameters[static_cast<std::size_t>(u.partner)].name;
+  return "not separable from " + partner + " on this data (Jacobian columns correlated, |r| = " +
+         std::to_string(u.correlation).substr(0, 6) + "); held at " + (refinement ? "the model's value" : "its default");
+}
+
+/// Where a parameter the data cannot determine is held (unit box): a refinement keeps the model's
+/// own value (a small coupling's T_ref of 120 kN·m, not the library's 1.5 MN·m, which the
+/// refined effect would carry into --add and --write-model), an addition takes the default; a
+/// parameter of no influence in an addition keeps its fitted value.
+double held_unit_value(const EffectProblem& problem, const Unidentifiable& u, const Effect* current) {
+  if (current) return problem.box.to_unit(u.parameter, current->values()[static_cast<std::size_t>(u.parameter)]);
+  return u.partner >= 0 ? problem.box.defaults()(u.parameter) : problem.full(u.parameter);
+}
+
+/// A parameter that ends on the edge of the plausible box, where the box is not yet the physical
+/// bound, gets the box widened to that bound and the fit goes on from there (twice at most: a
+/// truth beyond the plausible range is reported as such, not clipped to it).
+void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResult>& best, int& evaluations,
+                         const LeastSquaresOptions& options) {
+  for (int pass = 0; pass < 2; ++pass) {
+    ParameterBox box = problem.box;
+    bool widened = false;
+    for (int i = 0; i < box.size(); ++i) {
+      const double unit = problem.full(i);
+      if (problem.free[static_cast<std::size_t>(i)] && on_edge(unit) && !box.at_physical_bound(i, unit)) {
+        box = box.widened(i, unit);
+        widened = true;
+      }
+    }
+    if (!widened) return;
+    const ParameterValues values = problem.box.to_values(problem.full);
+    std::vector<double> ordered;
+    for (const ParameterSpec& spec : box.info().parameters) ordered.push_back(values.at(spec.name));
+    problem.box = box;
+    problem.full = box.to_unit(ordered);
+    best = problem.solve_and_polish(problem.full, options);
+    evaluations += best->evaluations;
+    problem.full = problem.expand(best->x);
+  }
+}
+
+}  // namespace
+
+bool EffectFit::plausible() const {
+  return std::all_of(parameters.begin(), parameters.end(), [](const ParameterEstimate& p) { return p.plausible; });
+}
+
+bool EffectFit::at_bound() const {
+  return std::any_of(parameters.begin(), parameters.end(), [](const ParameterEstimate& p) { return p.at_bound; });
+}
+
+ParameterBox EffectFit::box() const { return ParameterBox(*info, box_lower, box_upper); }
+
+CouplingModel model_with(const CouplingModel& base, const EffectRegistration& registration,
+                         const ParameterValues& values) {
+  return base.with_effect(registration.make(values));
+}
+
+std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegistration& registration,
+                                    std::span<const RecordedSample> observations,
+                                    std::span<const std::size_t> rows, const ParallelFor& parallel,
+                                    const FitSettings& settings, const Effect* current) {
+  const double jam = base.geometry().jam_angle().angle_rad;
+  EffectProblem problem{base, registration,
+                        ParameterBox::plausible(*registration.info, jam, current ? current->values() : std::vector<double>{}),
+                        observations, rows, parallel, {}, {}, jam};
+  problem.full = problem.box.defaults();
+  std::vector<std::string> notes(static_cast<std::size_t>(problem.box.size()));
+  for (const ParameterSpec& spec : registration.info->parameters) {
+    const bool held = spec.refine_only && !current;
+    problem.free.push_back(!held);
+    if (held) notes[problem.free.size() - 1] = "a shape, held at its default until the effect is refined";
+  }
+  int evaluations = 0;
+  if (problem.box.size() == 0) {  // a switch (e.g. continuous_quarter_sums): nothing to fit
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    return make_fit(problem, LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true},
+                    notes, true, 1);
+  }
+  const std::vector<Eigen::VectorXd> starts = best_starts(problem, settings, current, evaluations);
+  if (starts.empty()) return std::nullopt;
+  std::optional<LeastSquaresResult> best;
+  for (const Eigen::VectorXd& start : starts) {
+    problem.full = start;
+    LeastSquaresResult r = problem.solve(start, settings.least_squares);
+    evaluations += r.evaluations;
+    if (!best || r.cost < best->cost) best = r;
+  }
+  const int before_polish = best->evaluations;
+  best = problem.polish(*best, settings.least_squares);  // the best start only
+  evaluations += best->evaluations - before_polish;
+  problem.full = problem.expand(best->x);
+  widen_where_on_edge(problem, best, evaluations, settings.least_squares);
+  // Hold what the data cannot determine, one parameter at a time, refitting the rest.
+  for (int round = 0; round < problem.box.size(); ++round) {
+    const auto u = find_unidentifiable(full_jacobian(problem, best->jacobian), problem.free);
+    if (!u) break;
+    problem.free[static_cast<std::size_t>(u->parameter)] = false;
+    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u, current != nullptr);
+    problem.full(u->parameter) = held_unit_value(problem, *u, current);
+    if (std::count(problem.free.begin(), problem.free.end(), true) == 0) break;
+    best = problem.solve_and_polish(problem.full, settings.least_squares);
+    evaluations += best->evaluations;
+    problem.full = problem.expand(best->x);
+  }
+  if (std::count(problem.free.begin(), problem.free.end(), true) == 0) {
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    best = LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true};
+  }
+  return make_fit(problem, *best, notes, true, evaluations);
+}
+
+std::optional<EffectFit> refit_effect(const CouplingModel& base, const EffectRegistration& registration,
+                                      const EffectFit& start, std::span<const RecordedSample> observations,
+                                      std::span<const std::size_t> rows, const ParallelFor& parallel,
+                                      int iterations, bool with_uncertainty) {
+  EffectProblem problem{base, registration, start.box(), observations, rows, parallel,
+                        start.free, start.unit_values, base.geometry().jam_angle().angle_rad};
+  std::vector<std::string> notes;
+  for (const ParameterEstimate& e : start.parameters) notes.push_back(e.held ? e.note : "");
+  LeastSquaresOptions options;
+  options.max_iterations = iterations;
+  LeastSquaresResult result;
+  if (std::count(problem.free.begin(), problem.free.end(), true) == 0) {
+    const auto r = problem.residual(problem.full);
+    if (!r) return std::nullopt;
+    result = LeastSquaresResult{Eigen::VectorXd(0), *r, Eigen::MatrixXd(r->size(), 0), r->squaredNorm(), 0, 1, true};
+  } else {
+    try {
+      result = problem.solve(problem.full, options);
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;  // the start jams a row of these
+    }
+  }
+  return make_fit(problem, result, notes, with_uncertainty, result.evaluations);
+}
+
+}  // namespace gc

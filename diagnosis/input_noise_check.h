@@ -1,0 +1,43 @@
+// The inputs are measured too. A model fed a noisy torque or misalignment channel predicts the
+// sensors' noise as moments that the bridges never saw, and any average of the inputs removes it
+// from the prediction: moment_delay, fitted to such a residual, finds a window (an average over a
+// fraction of a revolution, a delay of a few samples) and a real held-out gain with no lag in the
+// data. A lag is told from noise by its direction in time: a centred average of the inputs smooths
+// their noise as well, and cannot shift the prediction. An effect that times the inputs is claimed
+// only when it beats the centred average it could be, as it must beat the model.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/coupling_model.h"
+#include "diagnosis/candidate_score.h"
+#include "diagnosis/cross_validation_folds.h"
+#include "diagnosis/parallel_for.h"
+#include "core/effects/effect_registry.h"
+#include "core/recorded_sample.h"
+
+namespace gc {
+
+/// The nuisance a timing effect is judged against: the inputs averaged over `window_s` [s], 0 to
+/// 5 s, and `revolutions` [-], 0 to 10, at the sample's speed (moment_delay's windows), centred on
+/// each sample's time (InputTiming{-w / 2, w}). Not a library effect: the diagnosis names it, never
+/// claims it.
+const EffectRegistration& centred_input_average();
+
+/// Marks failed (CandidateScore::failure) each of `ranking`'s candidates that times the inputs
+/// (Effect::times_inputs) and for which `claimable` holds, when its held-out residual does not beat
+/// the centred input average's on the same folds by a block-paired t of `least_t` (the blocks
+/// independent, as between candidates). The centred average is fitted once, and only when needed.
+/// Returns the average's score when it was fitted.
+std::optional<CandidateScore> demote_what_input_noise_explains(
+    std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
+    std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& folds, const ParallelFor& parallel,
+    const CrossValidationSettings& settings, double least_t,
+    const std::function<bool(const CandidateScore&)>& claimable);
+
+}  // namespace gc

@@ -1,0 +1,100 @@
+#include "diagnosis/recorded_channels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+
+namespace gc {
+namespace {
+
+using Reader = std::function<std::optional<double>(const RecordedSample&)>;
+
+struct ChannelSpec {
+  const char* name;
+  const char* unit;
+  bool measured;
+  Reader read;
+};
+
+const std::vector<ChannelSpec>& channel_specs() {
+  static const std::vector<ChannelSpec> specs = {
+      {"msy", "N·m", true, [](const RecordedSample& s) { return std::optional<double>(s.measured.y_nm); }},
+      {"msz", "N·m", true, [](const RecordedSample& s) { return std::optional<double>(s.measured.z_nm); }},
+      {"torque", "N·m", false, [](const RecordedSample& s) { return std::optional<double>(s.input.torque_nm); }},
+      {"misalignment", "rad", false, [](const RecordedSample& s) { return std::optional<double>(s.input.misalignment_rad); }},
+      {"direction", "rad", false, [](const RecordedSample& s) { return std::optional<double>(s.input.direction_rad); }},
+      {"speed", "rpm", false, [](const RecordedSample& s) { return s.input.speed_rpm; }},
+      {"temperature", "deg C", false, [](const RecordedSample& s) { return s.input.temperature_c; }},
+      {"hub_motion", "m", true, [](const RecordedSample& s) { return s.hub_motion_m; }},
+  };
+  return specs;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+bool inputs_hold(const RecordedSample& a, const RecordedSample& b) {
+  return a.input.torque_nm == b.input.torque_nm && a.input.misalignment_rad == b.input.misalignment_rad &&
+         a.input.direction_rad == b.input.direction_rad;
+}
+
+}  // namespace
+
+std::vector<std::size_t> rows_in_time_order(std::span<const RecordedSample> observations) {
+  std::vector<std::size_t> rows(observations.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
+  std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) {
+    return observations[a].input.time_s < observations[b].input.time_s;
+  });
+  return rows;
+}
+
+std::vector<RecordedChannel> recorded_channels(std::span<const RecordedSample> observations) {
+  const std::vector<std::size_t> ordered = rows_in_time_order(observations);
+  std::vector<RecordedChannel> channels;
+  for (const ChannelSpec& spec : channel_specs()) {
+    RecordedChannel channel{spec.name, spec.unit, ordered, {}, spec.measured};
+    for (std::size_t r : ordered) {
+      const std::optional<double> value = spec.read(observations[r]);
+      if (!value || !std::isfinite(*value)) break;
+      channel.values.push_back(*value);
+    }
+    if (!ordered.empty() && channel.values.size() == ordered.size()) channels.push_back(std::move(channel));
+  }
+  return channels;
+}
+
+bool changes_every_sample(const RecordedChannel& channel, std::span<const RecordedSample> observations) {
+  constexpr std::size_t kFewestHolds = 20;
+  std::size_t pairs = 0, ties = 0, hold_pairs = 0, hold_ties = 0;
+  for (std::size_t i = 1; i < channel.values.size(); ++i) {
+    const bool tie = channel.values[i] == channel.values[i - 1];
+    ++pairs;
+    ties += tie;
+    if (inputs_hold(observations[channel.rows[i]], observations[channel.rows[i - 1]])) {
+      ++hold_pairs;
+      hold_ties += tie;
+    }
+  }
+  if (pairs == 0) return false;
+  if (channel.measured && hold_pairs >= kFewestHolds) return 2 * hold_ties < hold_pairs;
+  return 2 * ties < pairs;
+}
+
+double difference_sigma(const std::vector<double>& values) {
+  if (values.size() < 2) return 0.0;
+  std::vector<double> d;
+  for (std::size_t i = 1; i < values.size(); ++i) d.push_back(std::abs(values[i] - values[i - 1]));
+  double mean = 0.0;
+  for (double x : d) mean += x;
+  mean /= static_cast<double>(d.size());
+  const double mad = median(std::move(d));
+  return mad > 0.0 ? 1.4826 * mad / std::sqrt(2.0) : mean * std::sqrt(M_PI) / 2.0;
+}
+
+}  // namespace gc

@@ -1,0 +1,377 @@
+#include "diagnosis/surrogate_test.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <array>
+
+#include <unsupported/Eigen/FFT>
+
+namespace gc {
+namespace {
+
+/// The variance of a rise from the first row to the last: the square of the rise from the first
+/// fifth's mean to the last's, scaled to the whole length (a fifth's mean sits a tenth of the length
+/// from its end). A random walk rises by as much again in another draw; a stationary noise's fifths
+/// hardly differ. Means, not the end rows: a spike on the first or last row would set it.
+double rise_variance(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size();
+  if (n < 10) return 0.0;
+  const double rise = 1.25 * (x.tail(n / 5).mean() - x.head(n / 5).mean());
+  return rise * rise;
+}
+
+/// A bin this many times the median power about it is a line (a cycle, or a test programme that
+/// repeats), not the noise's continuum.
+constexpr double kLineRatio = 10.0;
+
+/// `spectrum`'s amplitudes for k = 0..n/2, each line brought down to the median about it (bins
+/// k/2..2k): a surrogate keeps the noise's continuum but not a line, which a design in phase with
+/// it would otherwise explain in many surrogates as well as in the residual (a hysteresis on
+/// repeated misalignment sweeps lost its claim that way).
+std::vector<double> without_lines(const std::vector<std::complex<double>>& spectrum) {
+  const std::size_t half = spectrum.size() / 2;
+  std::vector<double> power(half + 1), amplitude(half + 1);
+  for (std::size_t k = 0; k <= half; ++k) power[k] = std::norm(spectrum[k]);
+  for (std::size_t k = 0; k <= half; ++k) {
+    amplitude[k] = std::sqrt(power[k]);
+    if (k == 0) continue;
+    std::vector<double> about(power.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(1, k / 2)),
+                              power.begin() + static_cast<std::ptrdiff_t>(std::min(half, 2 * k) + 1));
+    if (about.size() < 5) continue;
+    std::nth_element(about.begin(), about.begin() + static_cast<std::ptrdiff_t>(about.size() / 2), about.end());
+    const double median = about[about.size() / 2];
+    if (power[k] > kLineRatio * median) amplitude[k] = std::sqrt(median);
+  }
+  return amplitude;
+}
+
+/// The largest length up to `n` whose only prime factors are 2, 3 and 5.
+Eigen::Index smooth_length(Eigen::Index n) {
+  for (Eigen::Index m = n; m > 1; --m) {
+    Eigen::Index r = m;
+    for (const Eigen::Index f : {2, 3, 5}) {
+      while (r % f == 0) r /= f;
+    }
+    if (r == 1) return m;
+  }
+  return 1;
+}
+
+Eigen::VectorXd stacked(const Eigen::MatrixX2d& m) {
+  Eigen::VectorXd y(2 * m.rows());
+  y << m.col(0), m.col(1);
+  return y;
+}
+
+/// One design made ready to project many right-hand sides.
+class Projector {
+ public:
+  /// `rows`: the rows of each channel (the design has 2 * rows).
+  Projector(const SurrogateDesign& design, Eigen::Index rows) : choose_(design.choose), levels_(levels(rows)) {
+    if (choose_ <= 0) {
+      basis_ = orthonormal(concatenated(levels_, design.columns));
+      return;
+    }
+    normalised_ = design.columns;
+    normalised_ -= levels_ * (levels_.transpose() * normalised_);
+    for (Eigen::Index j = 0; j < normalised_.cols(); ++j) {
+      const double norm = normalised_.col(j).norm();
+      const double before = design.columns.col(j).norm();
+      // A term some row cannot evaluate, or a level, is never chosen.
+      if (std::isfinite(norm) && norm > 1e-9 * before) {
+        normalised_.col(j) /= norm;
+      } else {
+        normalised_.col(j).setZero();
+      }
+    }
+  }
+
+  /// The share of what varies about each channel's level that the design explains beyond it.
+  double share(const Eigen::VectorXd& y) const {
+    const double level = (levels_.transpose() * y).squaredNorm();
+    const double total = y.squaredNorm() - level;
+    if (!(total > 0.0)) return 0.0;
+    const double fit = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() : greedy_fit(y).squaredNorm();
+    return std::clamp((fit - level) / total, 0.0, 1.0);
+  }
+
+  /// The least-squares fit of `y` on the levels and the design (the columns chosen for `y`).
+  Eigen::VectorXd fitted(const Eigen::VectorXd& y) const {
+    return choose_ <= 0 ? Eigen::VectorXd(basis_ * (basis_.transpose() * y)) : greedy_fit(y);
+  }
+
+  /// Orthonormal columns spanning the levels and the design (the columns chosen for `y`).
+  Eigen::MatrixXd span(const Eigen::VectorXd& y) const { return choose_ <= 0 ? basis_ : greedy_basis(y); }
+
+ private:
+  Eigen::VectorXd greedy_fit(const Eigen::VectorXd& y) const {
+    const Eigen::MatrixXd basis = greedy_basis(y);
+    return basis * (basis.transpose() * y);
+  }
+
+  /// Orthogonal matching pursuit: `choose_` steps, each taking the column most correlated with
+  /// what the chosen ones leave; returns the orthonormal basis of the levels and the chosen.
+  Eigen::MatrixXd greedy_basis(const Eigen::VectorXd& y) const {
+    const Eigen::Index steps = std::min<Eigen::Index>(choose_, normalised_.cols());
+    Eigen::MatrixXd basis(y.size(), levels_.cols() + steps);
+    basis.leftCols(levels_.cols()) = levels_;
+    Eigen::Index kept = levels_.cols();
+    Eigen::VectorXd left = y - basis.leftCols(kept) * (basis.leftCols(kept).transpose() * y);
+    std::vector<bool> taken(static_cast<std::size_t>(normalised_.cols()), false);
+    for (Eigen::Index step = 0; step < steps; ++step) {
+      const Eigen::VectorXd scores = (normalised_.transpose() * left).cwiseAbs();
+      Eigen::Index best = -1;
+      for (Eigen::Index j = 0; j < scores.size(); ++j) {
+        if (!taken[static_cast<std::size_t>(j)] && (best < 0 || scores(j) > scores(best))) best = j;
+      }
+      if (best < 0) break;
+      taken[static_cast<std::size_t>(best)] = true;
+      Eigen::VectorXd q = normalised_.col(best);
+      for (int pass = 0; pass < 2; ++pass) q -= basis.leftCols(kept) * (basis.leftCols(kept).transpose() * q);
+      const double norm = q.norm();
+      if (!(norm > 1e-9)) continue;
+      basis.col(kept++) = q / norm;
+      left = y - basis.leftCols(kept) * (basis.leftCols(kept).transpose() * y);
+    }
+    return basis.leftCols(kept);
+  }
+
+  /// Each channel's level, as orthonormal columns.
+  static Eigen::MatrixXd levels(Eigen::Index rows) {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(2 * rows, 2);
+    const double unit = 1.0 / std::sqrt(static_cast<double>(std::max<Eigen::Index>(rows, 1)));
+    out.col(0).head(rows).setConstant(unit);
+    out.col(1).tail(rows).setConstant(unit);
+    return out;
+  }
+
+  static Eigen::MatrixXd concatenated(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    Eigen::MatrixXd out(a.rows(), a.cols() + b.cols());
+    out << a, b;
+    return out;
+  }
+
+  /// Orthonormal columns spanning `m`'s finite columns.
+  static Eigen::MatrixXd orthonormal(Eigen::MatrixXd m) {
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      if (!m.col(j).allFinite()) m.col(j).setZero();
+    }
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
+    return qr.householderQ() * Eigen::MatrixXd::Identity(m.rows(), qr.rank());
+  }
+
+  int choose_;
+  Eigen::MatrixXd levels_;      ///< each channel's level, orthonormal
+  Eigen::MatrixXd basis_;       ///< orthonormal columns spanning the levels and the design (choose_ 0)
+  Eigen::MatrixXd normalised_;  ///< unit columns, less the levels (choose_ > 0)
+};
+
+}  // namespace
+
+std::vector<double> SurrogateSpectrum::leverage(const Eigen::MatrixXd& basis, Eigen::Index n, int channel) {
+  const Eigen::Index m = smooth_length(n);
+  std::vector<double> out(static_cast<std::size_t>(m / 2 + 1), 0.0);
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spectrum;
+  for (Eigen::Index j = 0; j < basis.cols(); ++j) {
+    const Eigen::VectorXd q = basis.col(j).segment(channel * n + (n - m), m);
+    fft.fwd(spectrum, std::vector<double>(q.data(), q.data() + m));
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] += std::norm(spectrum[k]) / static_cast<double>(m);
+  }
+  return out;
+}
+
+SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t seed, const SurrogateSpectrum& shape)
+    : n_(residual.rows()), m_(smooth_length(residual.rows())), random_(seed) {
+  if (n_ < 8) return;
+  // The FFT's length has only the factors 2, 3 and 5 (a prime length costs n^2): the last m rows;
+  // a surrogate is circular, so it wraps to the n rows.
+  for (int c = 0; c < 2; ++c) {
+    // End-matched: less the line from its level at the start to its level at the end, which a
+    // circular surrogate cannot hold; a rise of its own is drawn for each surrogate instead
+    // (rise_sigma_). Each level is the mean of a twentieth of the rows: the first and last rows
+    // alone would put a line through two samples of the noise, a slope as large as the noise (a
+    // sixth of white noise's power) that no recording has, and that slow terms then explain in
+    // every surrogate.
+    Eigen::VectorXd tail = residual.col(c).tail(m_);
+    const Eigen::Index ends = std::max<Eigen::Index>(1, m_ / 20);
+    const double first = tail.head(ends).mean(), last = tail.tail(ends).mean();
+    for (Eigen::Index i = 0; i < m_; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m_ - 1);
+    std::vector<std::complex<double>> spectrum;
+    fft_.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m_));
+    const std::vector<double>& removed = shape.removed[static_cast<std::size_t>(c)];
+    if (removed.size() == static_cast<std::size_t>(m_ / 2 + 1)) {
+      for (Eigen::Index k = 1; k <= m_ / 2; ++k) {
+        const double kept = 1.0 - std::min(removed[static_cast<std::size_t>(k)], SurrogateSpectrum::kMostRestored);
+        spectrum[static_cast<std::size_t>(k)] /= std::sqrt(kept);
+        spectrum[static_cast<std::size_t>(m_ - k)] = std::conj(spectrum[static_cast<std::size_t>(k)]);
+      }
+    }
+    amplitudes_[static_cast<std::size_t>(c)] = without_lines(spectrum);
+    rise_sigma_[static_cast<std::size_t>(c)] =
+        std::sqrt(shape.rise_variance ? (*shape.rise_variance)(c) : rise_variance(residual.col(c)));
+  }
+}
+
+Eigen::MatrixX2d SurrogateSource::next() {
+  if (n_ < 8) return Eigen::MatrixX2d::Zero(n_, 2);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  std::normal_distribution<double> normal;
+  std::vector<std::complex<double>> rotation(static_cast<std::size_t>(m_ / 2 + 1));
+  for (Eigen::Index k = 1; k <= m_ / 2; ++k) rotation[static_cast<std::size_t>(k)] = std::polar(1.0, phase(random_));
+  std::vector<std::complex<double>> turned(static_cast<std::size_t>(m_));
+  std::vector<double> back;
+  Eigen::MatrixX2d surrogate(n_, 2);
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<double>& x = amplitudes_[static_cast<std::size_t>(c)];
+    turned[0] = 0.0;  // the level is not judged (Projector::share)
+    for (Eigen::Index k = 1; k <= (m_ - 1) / 2; ++k) {
+      const std::complex<double> v = x[static_cast<std::size_t>(k)] * rotation[static_cast<std::size_t>(k)];
+      turned[static_cast<std::size_t>(k)] = v;
+      turned[static_cast<std::size_t>(m_ - k)] = std::conj(v);
+    }
+    if (m_ % 2 == 0) {
+      turned[static_cast<std::size_t>(m_ / 2)] =
+          x[static_cast<std::size_t>(m_ / 2)] * (rotation[static_cast<std::size_t>(m_ / 2)].real() < 0.0 ? -1.0 : 1.0);
+    }
+    fft_.inv(back, turned);
+    const double rise = normal(random_) * rise_sigma_[static_cast<std::size_t>(c)];
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      surrogate(i, c) = back[static_cast<std::size_t>(i % m_)] + rise * (static_cast<double>(i) / static_cast<double>(n_ - 1) - 0.5);
+    }
+  }
+  return surrogate;
+}
+
+std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d& residual, int count,
+                                                          std::uint64_t seed, const SurrogateSpectrum& shape) {
+  std::vector<Eigen::MatrixX2d> out;
+  if (residual.rows() < 8 || count <= 0) return out;
+  SurrogateSource source(residual, seed, shape);
+  for (int s = 0; s < count; ++s) out.push_back(source.next());
+  return out;
+}
+
+/// The stacked `y` (2n) as n rows of two channels.
+static Eigen::MatrixX2d as_rows(const Eigen::VectorXd& y, Eigen::Index n) {
+  Eigen::MatrixX2d m(n, 2);
+  m.col(0) = y.head(n);
+  m.col(1) = y.tail(n);
+  return m;
+}
+
+/// Two-sided p-value of Student's t with an even number of degrees of freedom `nu`:
+/// 1 - sin(theta) (1 + cos^2/2 + 1*3/(2*4) cos^4 + ... ), theta = atan(t / sqrt(nu))
+/// (Abramowitz and Stegun 26.7.3).
+double student_two_sided_p(double t, int nu) {
+  const double theta = std::atan(std::abs(t) / std::sqrt(static_cast<double>(nu)));
+  const double c2 = std::cos(theta) * std::cos(theta);
+  double term = 1.0, sum = 1.0;
+  for (int k = 2; k <= nu - 2; k += 2) {
+    term *= c2 * (k - 1.0) / k;
+    sum += term;
+  }
+  return std::clamp(1.0 - std::sin(theta) * sum, 0.0, 1.0);
+}
+
+/// After this many surrogates, none explained as well, a residual far out of their spread is
+/// judged by Cantelli's bound instead of thousands more (a strong effect needs no 8,000 surrogates).
+constexpr int kBeforeCantelli = 199;
+
+/// Cantelli's one-sided Chebyshev bound on the chance that a draw of mean `mean` and variance
+/// `variance` reaches `observed`: 1 / (1 + k^2), k standard deviations above the mean. It holds for
+/// any distribution, a skewed share included.
+double cantelli_bound(double observed, double mean, double variance) {
+  if (!(observed > mean)) return 1.0;
+  if (!(variance > 0.0)) return 0.0;
+  const double k2 = (observed - mean) * (observed - mean) / variance;
+  return 1.0 / (1.0 + k2);
+}
+
+/// The level test's blocks: 21 contiguous ones, 20 degrees of freedom.
+constexpr Eigen::Index kLevelBlocks = 21;
+
+double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander) {
+  double p = 1.0;
+  for (int c = 0; c < 2; ++c) {
+    const Eigen::VectorXd x = wander.col(c);
+    const double level = residual.col(c).mean();
+    const Eigen::Index n = x.size(), parts = kLevelBlocks;
+    if (n < 2 * parts) continue;
+    Eigen::VectorXd means(parts);
+    for (Eigen::Index k = 0; k < parts; ++k) means(k) = x.segment(k * n / parts, (k + 1) * n / parts - k * n / parts).mean();
+    const double spread = std::sqrt((means.array() - means.mean()).square().sum() / (parts - 1.0));
+    const double t = spread > 0.0 ? std::abs(level) / spread : (level != 0.0 ? 1e300 : 0.0);
+    p = std::min(p, student_two_sided_p(t, static_cast<int>(parts - 1)));
+  }
+  return std::min(1.0, 2.0 * p);  // either channel
+}
+
+std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
+                                       double level, std::uint64_t seed, std::size_t family_size) {
+  std::vector<double> adjusted(designs.size(), 1.0);
+  if (designs.empty() || !(level > 0.0)) return adjusted;
+  const double family = static_cast<double>(std::max(family_size, designs.size()));
+  // Enough surrogates that the smallest p-value, times the family and the two parts of a design
+  // (what varies, its level), is half the level.
+  const int count = std::max(199, static_cast<int>(std::ceil(4.0 * family / level)) - 1);
+  // Besag and Clifford's sequential stop: once this many surrogates are explained as well, the
+  // p-value is above level / (2 family) whatever the rest say.
+  const int enough = static_cast<int>(std::ceil(level / (2.0 * family) * (count + 1.0)));
+  const Eigen::VectorXd y = stacked(residual);
+  // The rise a noise makes over the recording, from the residual's fifths (rise_variance).
+  const Eigen::Array2d rises(rise_variance(residual.col(0)), rise_variance(residual.col(1)));
+  for (std::size_t d = 0; d < designs.size(); ++d) {
+    const Projector projector(designs[d], residual.rows());
+    std::vector<Projector> scan;
+    for (const Eigen::MatrixXd& columns : designs[d].elsewhere) scan.emplace_back(SurrogateDesign{columns, 0, false, {}}, residual.rows());
+    // The largest share the design, or any of its others in the box, explains (Davies' statistic).
+    const auto largest_share = [&](const Eigen::VectorXd& x) {
+      double best = projector.share(x);
+      for (const Projector& other : scan) best = std::max(best, other.share(x));
+      return best;
+    };
+    const Eigen::MatrixX2d left = as_rows(y - projector.fitted(y), residual.rows());
+    double p = 1.0;
+    if (designs[d].columns.cols() > 0) {
+      const double observed = largest_share(y);
+      // The null is noise like what the candidate leaves, with the rise the residual's fifths show:
+      // a real effect's own spectrum (a drag that follows a speed programme, a cross-talk of the
+      // model's moments) is not noise against it, while a walk's rise, which a staircase takes out,
+      // stays in every surrogate. Least squares took from the leftover the share of each frequency
+      // that the design spans (its leverage there): the surrogates give it back, or a slow design
+      // fitted to a slow noise would leave a null with less of the slow power than it took (ter
+      // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
+      SurrogateSpectrum shape{rises, {}};
+      const Eigen::MatrixXd span = projector.span(y);
+      for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
+      SurrogateSource surrogates(left, seed + d, shape);
+      int as_well = 0, drawn = 0;
+      double sum = 0.0, sum_of_squares = 0.0;
+      std::optional<double> beyond_doubt;
+      while (drawn < count) {
+        ++drawn;
+        const double share = largest_share(stacked(surrogates.next()));
+        sum += share;
+        sum_of_squares += share * share;
+        if (share >= observed && ++as_well >= enough) break;
+        if (drawn == kBeforeCantelli && as_well == 0) {
+          beyond_doubt = cantelli_bound(observed, sum / drawn, sum_of_squares / drawn - std::pow(sum / drawn, 2));
+          if (*beyond_doubt <= level / (4.0 * family)) break;
+          beyond_doubt.reset();
+        }
+      }
+      p = as_well >= enough ? 1.0 : beyond_doubt.value_or((1.0 + as_well) / (1.0 + static_cast<double>(drawn)));
+    }
+    // A level the design moves, against the wander of what it leaves (its levels taken out with it).
+    if (designs[d].level) p = std::min(p, level_p_value(residual, left));
+    adjusted[d] = std::min(1.0, 2.0 * family * p);
+  }
+  return adjusted;
+}
+
+}  // namespace gc
