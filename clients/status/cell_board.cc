@@ -72,9 +72,12 @@ void copy_health(const gearcoupling_CellHealth& in, v1::TestCellRecord& out) {
   out.set_proposal_msy_rmse_nm(in.proposal_msy_rmse_nm);
   out.set_proposal_msz_rmse_nm(in.proposal_msz_rmse_nm);
   out.set_proposal_samples(in.proposal_samples);
-  // With hysteresis against the badge it showed (model_health.h).
+  // With hysteresis against the badge it showed (model_health.h); a unit error is not the
+  // model's health, whatever the slipped moments say of it.
   const ModelHealth shown = model_health_from(out.model_health());
-  out.set_model_health(std::string(to_string(model_health(out.model(), in.window_samples, shown))));
+  const ModelHealth health = out.unit_error().empty() ? model_health(out.model(), in.window_samples, shown)
+                                                       : ModelHealth::unit_error;
+  out.set_model_health(std::string(to_string(health)));
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,
 
 ModelHealth model_health_from(std::string_view text) {
   for (const ModelHealth health : {ModelHealth::at_noise_level, ModelHealth::systematic,
-                                   ModelHealth::far_off}) {
+                                   ModelHealth::far_off, ModelHealth::unit_error}) {
     if (text == to_string(health)) return health;
   }
   return ModelHealth::unknown;
@@ -52,6 +52,7 @@ std::string_view to_string(ModelHealth health) {
     case ModelHealth::at_noise_level: return "at_noise_level";
     case ModelHealth::systematic: return "systematic";
     case ModelHealth::far_off: return "far_off";
+    case ModelHealth::unit_error: return "unit_error";
   }
   return "unknown";
 }

@@ -22,6 +22,9 @@ enum class ModelHealth {
   at_noise_level,  ///< both channels: s < kAtNoiseLevelShare x n, or s = 0 (green)
   systematic,      ///< a channel between the two (amber)
   far_off,         ///< a channel with s >= kFarOffRatio x n, or s > 0 with n = 0 (red)
+  /// The moments are a thousand times off (kN·m under an _nm header, the monitor's unit check):
+  /// no model's health can be read from them (red, "unit error"; issue 39).
+  unit_error,
 };
 
 /// One channel's health from its systematic part and noise [N·m] (non-negative).
@@ -39,7 +42,7 @@ inline constexpr double kHysteresis = 0.8;
 ModelHealth model_health(const ::gearcoupling::v1::ModelPeriodRecord& model,
                          std::uint64_t window_samples, ModelHealth previous);
 
-/// "unknown", "at_noise_level", "systematic", "far_off": TestCellRecord.model_health.
+/// "unknown", "at_noise_level", "systematic", "far_off", "unit_error": TestCellRecord.model_health.
 std::string_view to_string(ModelHealth health);
 /// The inverse of to_string; unknown for any other text.
 ModelHealth model_health_from(std::string_view text);

@@ -109,12 +109,12 @@ void cell_gauges(const std::vector<v1::TestCellRecord>& cells, PrometheusText& o
   }
   out.family("gearcoupling_cell_model_health", "gauge",
              "1 for the test cell's model health (the dashboard's badge: at_noise_level, "
-             "systematic, far_off, unknown; stale once the cell is stale or gone: its last "
+             "systematic, far_off, unit_error, unknown; stale once the cell is stale or gone: its last "
              "health is no news), 0 for the others.");
   for (const auto& cell : cells) {
     const bool alive = cell.state() == "alive";
-    for (const ModelHealth health : {ModelHealth::unknown, ModelHealth::at_noise_level,
-                                     ModelHealth::systematic, ModelHealth::far_off}) {
+    for (const ModelHealth health : {ModelHealth::unknown, ModelHealth::at_noise_level, ModelHealth::systematic,
+                                     ModelHealth::far_off, ModelHealth::unit_error}) {
       Labels labels = cell_labels(cell);
       labels.emplace_back("health", std::string(to_string(health)));
       out.sample("gearcoupling_cell_model_health", labels, alive && cell.model_health() == to_string(health));

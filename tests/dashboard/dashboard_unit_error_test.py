@@ -125,6 +125,7 @@ def test_the_card_shows_validates_finding_and_the_streams_fix_and_no_far_off_exp
     assert shown["worst_region"] is None and "Worst region" not in shown["text"], shown["text"]
     assert "errs most" not in shown["text"], shown["text"]
     assert shown["learning_state"] == "unit_error", shown
+    assert shown["health"] == "unit error", shown["health"]   # the badge: not "model far off"
     assert shown["proposal"] is None, shown["proposal"]
     state = json.loads(get(slipped["url"] + "api/state"))
     assert [p for p in state.get("proposals", []) if p.get("test_cell") == TEST_CELL] == [], state["proposals"]
@@ -143,6 +144,9 @@ def test_metrics_expose_the_cells_learning_state_as_the_unit_error(slipped):
     batches = [line for line in text.splitlines()
                if line.startswith("gearcoupling_cell_unit_slip_batches_total{") and cell_label in line]
     assert len(batches) == 1 and float(batches[0].split()[-1]) > 0, batches
+    healths = [line for line in text.splitlines()
+               if line.startswith("gearcoupling_cell_model_health{") and cell_label in line and line.endswith(" 1")]
+    assert len(healths) == 1 and 'health="unit_error"' in healths[0], healths   # not far_off
 
 
 def test_status_prints_the_unit_error_line_for_the_cell(slipped):

@@ -163,7 +163,7 @@ def test_the_test_cell_has_its_model_its_bias_and_its_health(scrape):
     assert set(bias) == {"msy", "msz"} and all(math.isfinite(v) for v in bias.values())
     health = {labels["health"]: value for name, labels, value in parsed
               if name == "gearcoupling_cell_model_health" and labels["test_cell"] == TEST_CELL}
-    assert set(health) == {"unknown", "at_noise_level", "systematic", "far_off", "stale"}
+    assert set(health) == {"unknown", "at_noise_level", "systematic", "far_off", "unit_error", "stale"}
     assert sum(health.values()) == 1
     # The hidden eccentricity is far beyond the noise for the paper's model.
     assert health["at_noise_level"] == 0, health

@@ -57,6 +57,12 @@ TEST(ModelHealth, UnknownBeforeTwoSamples) {
   EXPECT_EQ(to_string(ModelHealth::unknown), "unknown");
 }
 
+TEST(ModelHealth, AUnitErrorReadsBackAsItself) {
+  EXPECT_EQ(to_string(ModelHealth::unit_error), "unit_error");
+  EXPECT_EQ(model_health_from("unit_error"), ModelHealth::unit_error);
+  EXPECT_EQ(model_health_from("far off"), ModelHealth::unknown);
+}
+
 // Issue 39: a steady fault whose systematic part sat near 3 x the noise flipped the badge between
 // red and amber every second. Once red, it stays red until below 0.8 x 3; once green, until a
 // third / 0.8; entering takes the plain thresholds.
