@@ -1,7 +1,6 @@
 #include "diagnosis/input_noise_check.h"
 
 #include <algorithm>
-#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -15,33 +14,20 @@ const EffectInfo kInfo{
     "The inputs averaged over a window centred on each sample: what smooths the noise of the torque, "
     "misalignment and direction sensors out of the prediction without shifting it in time.",
     "none (a nuisance of the measurement, judged against moment_delay; docs/diagnosis.md)",
-    // The windows moment_delay can average over, a time and shaft revolutions, with the same bounds.
-    {{"window_s", "s", "the window's length in time, centred on the sample's time", 0.0, 5.0, 0.0, 0.0, {0.0, 1.0},
-      false, 0.0, "the noise of the input channels (their sensors, filters and sampling)"},
-     {"revolutions", "-", "and in shaft revolutions at the sample's speed", 0.0, 10.0, 0.0, 0.0, {0.0, 2.0}, false, 0.0,
+    {{"window_s", "s", "the window's length, centred on the sample's time", 0.0, 5.0, 0.0, 0.0, {0.0, 2.0}, false, 0.0,
       "the noise of the input channels (their sensors, filters and sampling)"}}};
-
-/// Below this speed a revolution is not a window [rpm] (as moment_delay).
-constexpr double kSlowestSpeedRpm = 0.1;
 
 class CentredInputAverage final : public Effect {
  public:
-  explicit CentredInputAverage(const ParameterValues& values)
-      : Effect(kInfo, values), window_s_(value("window_s")), revolutions_(value("revolutions")) {}
+  explicit CentredInputAverage(const ParameterValues& values) : Effect(kInfo, values), window_s_(value("window_s")) {}
 
   bool times_inputs() const override { return !neutral(); }
   // A sample seen alone (no adjust_inputs) has no neighbours to average, and a centred window no
   // lag to undo.
-  InputTiming input_timing(const MeasurementSample& sample) const override {
-    double window = window_s_;
-    if (revolutions_ > 0.0 && sample.speed_rpm && std::abs(*sample.speed_rpm) > kSlowestSpeedRpm) {
-      window += revolutions_ * 60.0 / std::abs(*sample.speed_rpm);
-    }
-    return {-0.5 * window, window};
-  }
+  InputTiming input_timing(const MeasurementSample&) const override { return {-0.5 * window_s_, window_s_}; }
 
  private:
-  double window_s_, revolutions_;
+  double window_s_;
 };
 
 bool times_inputs(const CandidateScore& c) { return c.fit && c.fit->effect && c.fit->effect->times_inputs(); }
@@ -72,8 +58,7 @@ std::optional<CandidateScore> demote_what_input_noise_explains(
     if (t.t >= least_t) continue;
     std::ostringstream why;
     why << "a window of the inputs centred on each sample (" << std::setprecision(3)
-        << centred->fit->parameters[0].value << " s and " << centred->fit->parameters[1].value
-        << " revolutions) does as well (t = " << std::setprecision(2) << t.t
+        << centred->fit->parameters.front().value << " s) does as well (t = " << std::setprecision(2) << t.t
         << "): the input sensors' noise, which the model carries into its prediction, not a lag";
     c.failure = why.str();
   }

@@ -24,9 +24,8 @@
 namespace gc {
 
 /// The nuisance a timing effect is judged against: the inputs averaged over `window_s` [s], 0 to
-/// 5 s, and `revolutions` [-], 0 to 10, at the sample's speed (moment_delay's windows), centred on
-/// each sample's time (InputTiming{-w / 2, w}). Not a library effect: the diagnosis names it, never
-/// claims it.
+/// 5 s, centred on each sample's time (InputTiming{-window_s / 2, window_s}). Not a library effect:
+/// the diagnosis names it, never claims it.
 const EffectRegistration& centred_input_average();
 
 /// Marks failed (CandidateScore::failure) each of `ranking`'s candidates that times the inputs

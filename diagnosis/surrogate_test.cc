@@ -185,8 +185,14 @@ std::vector<double> SurrogateSpectrum::leverage(const Eigen::MatrixXd& basis, Ei
   return out;
 }
 
+struct SurrogateSource::Transform {
+  Eigen::FFT<double> fft;
+};
+
+SurrogateSource::~SurrogateSource() = default;
+
 SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t seed, const SurrogateSpectrum& shape)
-    : n_(residual.rows()), m_(smooth_length(residual.rows())), random_(seed) {
+    : n_(residual.rows()), m_(smooth_length(residual.rows())), random_(seed), fft_(std::make_unique<Transform>()) {
   if (n_ < 8) return;
   // The FFT's length has only the factors 2, 3 and 5 (a prime length costs n^2): the last m rows;
   // a surrogate is circular, so it wraps to the n rows.
@@ -202,7 +208,7 @@ SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t
     const double first = tail.head(ends).mean(), last = tail.tail(ends).mean();
     for (Eigen::Index i = 0; i < m_; ++i) tail(i) -= first + (last - first) * static_cast<double>(i) / static_cast<double>(m_ - 1);
     std::vector<std::complex<double>> spectrum;
-    fft_.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m_));
+    fft_->fft.fwd(spectrum, std::vector<double>(tail.data(), tail.data() + m_));
     const std::vector<double>& removed = shape.removed[static_cast<std::size_t>(c)];
     if (removed.size() == static_cast<std::size_t>(m_ / 2 + 1)) {
       for (Eigen::Index k = 1; k <= m_ / 2; ++k) {
@@ -238,7 +244,7 @@ Eigen::MatrixX2d SurrogateSource::next() {
       turned[static_cast<std::size_t>(m_ / 2)] =
           x[static_cast<std::size_t>(m_ / 2)] * (rotation[static_cast<std::size_t>(m_ / 2)].real() < 0.0 ? -1.0 : 1.0);
     }
-    fft_.inv(back, turned);
+    fft_->fft.inv(back, turned);
     const double rise = normal(random_) * rise_sigma_[static_cast<std::size_t>(c)];
     for (Eigen::Index i = 0; i < n_; ++i) {
       surrogate(i, c) = back[static_cast<std::size_t>(i % m_)] + rise * (static_cast<double>(i) / static_cast<double>(n_ - 1) - 0.5);

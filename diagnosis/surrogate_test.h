@@ -26,12 +26,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
 
 #include <Eigen/Dense>
-#include <unsupported/Eigen/FFT>
 
 namespace gc {
 
@@ -64,12 +64,14 @@ struct SurrogateSpectrum {
 class SurrogateSource {
  public:
   SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t seed, const SurrogateSpectrum& shape = {});
+  ~SurrogateSource();
   Eigen::MatrixX2d next();
 
  private:
+  struct Transform;  // Eigen's FFT, kept out of the installed header (its module is unsupported/)
   Eigen::Index n_, m_;  ///< rows; the FFT's length (the last m_ rows, wrapped to n_)
   std::mt19937_64 random_;
-  Eigen::FFT<double> fft_;
+  std::unique_ptr<Transform> fft_;
   std::array<std::vector<double>, 2> amplitudes_;  ///< per channel, k = 0..m_/2
   std::array<double, 2> rise_sigma_{};             ///< per channel [N·m]
 };
