@@ -58,8 +58,9 @@ std::optional<CandidateScore> demote_what_input_noise_explains(
     if (t.t >= least_t) continue;
     std::ostringstream why;
     why << "a window of the inputs centred on each sample (" << std::setprecision(3)
-        << centred->fit->parameters.front().value << " s) does as well (t = " << std::setprecision(2) << t.t
-        << "): the input sensors' noise, which the model carries into its prediction, not a lag";
+        << centred->fit->parameters.front().value << " s) does about as well (paired t of the lag against it "
+        << std::setprecision(2) << t.t << ", under " << least_t << "): the input sensors' noise, which the model carries into "
+        << "its prediction, not a lag";
     c.failure = why.str();
   }
   std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
