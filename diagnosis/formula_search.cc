@@ -7,6 +7,7 @@
 #include "diagnosis/cycle_period.h"
 #include "diagnosis/noise_estimate.h"
 #include "diagnosis/ringing_estimate.h"
+#include "diagnosis/stacked_channels.h"
 #include "diagnosis/time_step.h"
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
@@ -33,12 +34,6 @@ Eigen::MatrixXd stacked_rows(const Eigen::MatrixXd& m, const std::vector<std::si
     out.row(static_cast<Eigen::Index>(at.size() + k)) = m.row(n + static_cast<Eigen::Index>(at[k]));
   }
   return out;
-}
-
-Eigen::VectorXd stacked(const Eigen::MatrixX2d& residual) {
-  Eigen::VectorXd v(2 * residual.rows());
-  v << residual.col(0), residual.col(1);
-  return v;
 }
 
 /// Least squares on the columns in `keep` (others zero), lightly damped so that columns that

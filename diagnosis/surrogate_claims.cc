@@ -10,15 +10,10 @@
 
 #include "diagnosis/formula_search.h"
 #include "diagnosis/model_residuals.h"
+#include "diagnosis/stacked_channels.h"
 
 namespace gc {
 namespace {
-
-Eigen::VectorXd stacked(const Eigen::MatrixX2d& m) {
-  Eigen::VectorXd y(2 * m.rows());
-  y << m.col(0), m.col(1);
-  return y;
-}
 
 /// The formula's design: the catalogue and the round's time terms, with its own terms beside
 /// (the mesh orders are offered by the coupling, not the catalogue); as many chosen as it has.

@@ -10,6 +10,8 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "diagnosis/stacked_channels.h"
+
 namespace gc {
 namespace {
 
@@ -61,12 +63,6 @@ Eigen::Index smooth_length(Eigen::Index n) {
   return 1;
 }
 
-Eigen::VectorXd stacked(const Eigen::MatrixX2d& m) {
-  Eigen::VectorXd y(2 * m.rows());
-  y << m.col(0), m.col(1);
-  return y;
-}
-
 /// One design made ready to project many right-hand sides.
 class Projector {
  public:
@@ -97,11 +93,6 @@ class Projector {
     if (!(total > 0.0)) return 0.0;
     const double fit = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() : greedy_fit(y).squaredNorm();
     return std::clamp((fit - level) / total, 0.0, 1.0);
-  }
-
-  /// The least-squares fit of `y` on the levels and the design (the columns chosen for `y`).
-  Eigen::VectorXd fitted(const Eigen::VectorXd& y) const {
-    return choose_ <= 0 ? Eigen::VectorXd(basis_ * (basis_.transpose() * y)) : greedy_fit(y);
   }
 
   /// Orthonormal columns spanning the levels and the design (the columns chosen for `y`).
@@ -262,14 +253,6 @@ std::vector<Eigen::MatrixX2d> phase_randomised_surrogates(const Eigen::MatrixX2d
   return out;
 }
 
-/// The stacked `y` (2n) as n rows of two channels.
-static Eigen::MatrixX2d as_rows(const Eigen::VectorXd& y, Eigen::Index n) {
-  Eigen::MatrixX2d m(n, 2);
-  m.col(0) = y.head(n);
-  m.col(1) = y.tail(n);
-  return m;
-}
-
 /// Two-sided p-value of Student's t with an even number of degrees of freedom `nu`:
 /// 1 - sin(theta) (1 + cos^2/2 + 1*3/(2*4) cos^4 + ... ), theta = atan(t / sqrt(nu))
 /// (Abramowitz and Stegun 26.7.3).
@@ -341,7 +324,10 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       for (const Projector& other : scan) best = std::max(best, other.share(x));
       return best;
     };
-    const Eigen::MatrixX2d left = as_rows(y - projector.fitted(y), residual.rows());
+    // The levels and the design's columns (those chosen for the residual), once: the leftover
+    // and the leverage the surrogates give back both come from them.
+    const Eigen::MatrixXd span = projector.span(y);
+    const Eigen::MatrixX2d left = unstacked(y - span * (span.transpose() * y));
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
       const double observed = largest_share(y);
@@ -353,7 +339,6 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       // fitted to a slow noise would leave a null with less of the slow power than it took (ter
       // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
       SurrogateSpectrum shape{rises, {}};
-      const Eigen::MatrixXd span = projector.span(y);
       for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
       SurrogateSource surrogates(left, seed + d, shape);
       int as_well = 0, drawn = 0;
