@@ -91,6 +91,30 @@ TEST(DataQuality, FindsNothingOnANoiseFreeRecordingThatHoldsStill) {
   EXPECT_TRUE(q.findings.empty()) << kinds(q);
 }
 
+TEST(DataQuality, ANoiseFreeInputThatHoldsHalfTheTimeIsAProgrammeButANoisyOneFrozenIsStuck) {
+  // A misalignment held while the direction turns, then ramped while the direction holds: each
+  // input changes on about half the samples, smoothly. Its holds are the programme's.
+  std::vector<RecordedSample> r = recording(Noise::gaussian, 4);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const bool turning = (i / 125) % 2 == 0;
+    const double k = static_cast<double>(i % 125);
+    r[i].input.misalignment_rad = turning ? 0.002 : 0.002 + 1e-5 * k;
+    r[i].input.direction_rad = turning ? 0.01 * k : 0.0;
+  }
+  const DataQuality q = check_data_quality(r);
+  EXPECT_TRUE(q.findings.empty()) << kinds(q);
+  EXPECT_TRUE(q.excluded_rows.empty());
+  // The same misalignment read by a probe with noise, frozen for 40 samples: an artefact.
+  std::mt19937_64 random(5);
+  std::normal_distribution<double> normal(0.0, 2e-6);
+  for (RecordedSample& s : r) s.input.misalignment_rad += normal(random);
+  for (std::size_t i = 500; i < 540; ++i) r[i].input.misalignment_rad = r[499].input.misalignment_rad;
+  const DataQuality frozen = check_data_quality(r);
+  const DataQualityFinding* f = find(frozen, DataQualityKind::stuck, "misalignment");
+  ASSERT_NE(f, nullptr) << kinds(frozen);
+  EXPECT_EQ(f->rows, range(499, 539));
+}
+
 TEST(DataQuality, ClippedSamplesAtTheRailAreExcludedWithTheirRows) {
   std::vector<RecordedSample> r = recording(Noise::gaussian, 2);
   double rail = -INFINITY;
