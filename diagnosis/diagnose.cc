@@ -561,6 +561,11 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   demote_what_input_noise_explains(
       round.ranking, model, observations, search, base, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+  // Every effect must add to the model fed its inputs read back from their sensors' noise.
+  demote_what_noisy_inputs_explain(
+      round.ranking, model, observations, rows, search, folds, parallel, settings.cross_validation, settings.claim_t,
+      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
+      [&](const Effect& e) { return registration_for(e, settings); });
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,

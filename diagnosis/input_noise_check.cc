@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "core/effects/registration.h"
+#include "diagnosis/model_residuals.h"
+#include "diagnosis/noise_estimate.h"
 
 namespace gc {
 namespace {
@@ -31,6 +34,60 @@ class CentredInputAverage final : public Effect {
 };
 
 bool times_inputs(const CandidateScore& c) { return c.fit && c.fit->effect && c.fit->effect->times_inputs(); }
+
+/// The model's mean square on `search` of the recording with shrunk inputs; infinite when a row
+/// cannot be predicted.
+double shrunk_mean_square(const CouplingModel& model, std::span<const RecordedSample> observations,
+                          std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                          const InputShrinks& shrinks, const ParallelFor& parallel) {
+  const std::vector<RecordedSample> shrunk = with_shrunk_inputs(observations, rows, shrinks);
+  const ModelResiduals r = model_residuals(model, shrunk, search, parallel);
+  return r.failed_rows.empty() ? pooled_mean_square(r.residual) : std::numeric_limits<double>::infinity();
+}
+
+std::vector<std::size_t> positions_of(std::span<const std::size_t> search, const std::vector<std::size_t>& positions) {
+  std::vector<std::size_t> out;
+  out.reserve(positions.size());
+  for (std::size_t p : positions) out.push_back(search[p]);
+  return out;
+}
+
+/// The candidate refitted on `shrunk` fold by fold from its full fit, its residual on each fold's
+/// held-out rows; nullopt when a fold cannot be refitted or predicted.
+std::optional<Eigen::MatrixX2d> held_out_on(const CouplingModel& model, const CandidateScore& c,
+                                            const EffectRegistration& registration,
+                                            std::span<const RecordedSample> shrunk, std::span<const std::size_t> search,
+                                            const Folds& folds, const ParallelFor& parallel, int iterations) {
+  CouplingModel base = model;
+  for (const std::string& name : c.replaces) base = base.without_effect(name);
+  Eigen::MatrixX2d out = Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(search.size()), 2);
+  for (std::size_t f = 0; f < folds.held_out.size(); ++f) {
+    const std::optional<EffectFit> fold = refit_effect(base, registration, *c.fit, shrunk,
+                                                       positions_of(search, folds.training[f]), parallel, iterations, false);
+    if (!fold) return std::nullopt;
+    const ModelResiduals r =
+        model_residuals(base.with_effect(fold->effect), shrunk, positions_of(search, folds.held_out[f]), parallel);
+    if (!r.failed_rows.empty()) return std::nullopt;
+    for (std::size_t k = 0; k < folds.held_out[f].size(); ++k) {
+      out.row(static_cast<Eigen::Index>(folds.held_out[f][k])) = r.residual.row(static_cast<Eigen::Index>(k));
+    }
+  }
+  return out;
+}
+
+std::string described(const InputShrinks& s) {
+  std::ostringstream out;
+  out << std::setprecision(2);
+  const auto one = [&](const char* name, const InputShrink& x) {
+    if (x.none()) return;
+    if (out.tellp() > 0) out << ", ";
+    out << name << " over " << x.window_s << " s keeping " << 100.0 * x.keep << " %";
+  };
+  one("torque", s.torque);
+  one("misalignment", s.misalignment);
+  one("direction", s.direction);
+  return out.str();
+}
 
 }  // namespace
 
@@ -65,6 +122,75 @@ std::optional<CandidateScore> demote_what_input_noise_explains(
   }
   std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
   return centred;
+}
+
+InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const RecordedSample> observations,
+                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                               const ParallelFor& parallel) {
+  InputShrinks best;
+  if (rows.size() < 2) return best;
+  const double duration = observations[rows.back()].input.time_s - observations[rows.front()].input.time_s;
+  const double interval = duration / static_cast<double>(rows.size() - 1);
+  double best_ms = shrunk_mean_square(model, observations, rows, search, best, parallel);
+  for (InputShrink InputShrinks::*channel : {&InputShrinks::torque, &InputShrinks::misalignment, &InputShrinks::direction}) {
+    for (double window_s : {0.25, 1.0, 4.0, 16.0, 64.0}) {
+      if (window_s < 2.0 * interval || window_s > 0.25 * duration) continue;
+      for (double keep : {0.0, 0.5}) {
+        InputShrinks trial = best;
+        trial.*channel = {window_s, keep};
+        const double ms = shrunk_mean_square(model, observations, rows, search, trial, parallel);
+        if (ms < best_ms) {
+          best_ms = ms;
+          best = trial;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+std::optional<InputShrinks> demote_what_noisy_inputs_explain(
+    std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
+    std::span<const std::size_t> rows, std::span<const std::size_t> search, const Folds& folds,
+    const ParallelFor& parallel, const CrossValidationSettings& settings, double least_t,
+    const std::function<bool(const CandidateScore&)>& claimable,
+    const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for) {
+  // An effect that times the inputs has its own nuisance, the centred average above: a read-back
+  // over a window is itself an average of the inputs in time, and takes a lag's gain in its stead.
+  const auto tested = [&](const CandidateScore& c) {
+    return c.fit && c.fit->effect && !c.fit->effect->times_inputs() && claimable(c);
+  };
+  if (std::none_of(ranking.begin(), ranking.end(), tested)) return std::nullopt;
+  const InputShrinks shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
+  if (shrinks.none()) return std::nullopt;
+  const std::vector<RecordedSample> shrunk = with_shrunk_inputs(observations, rows, shrinks);
+  const ModelResiduals nuisance = model_residuals(model, shrunk, search, parallel);
+  if (!nuisance.failed_rows.empty()) return std::nullopt;
+  for (CandidateScore& c : ranking) {
+    if (!tested(c)) continue;
+    const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect);
+    if (!registration) continue;
+    // The effect with the inputs it does best with: as recorded (its score) or read back. Physics
+    // on clean inputs keeps its whole gain over the read-back model, which may mimic a share of it
+    // (a smoothed sweep bends as an offset does); a fit to the inputs' noise has none on either.
+    // The test the claim met against the model (CandidateScore::against_base), on the same blocks.
+    PairedBlockTest t = paired_block_test(nuisance.residual, c.held_out_residual, folds.block_of, folds.blocks);
+    if (t.t >= least_t) continue;
+    const std::optional<Eigen::MatrixX2d> held_out =
+        held_out_on(model, c, *registration, shrunk, search, folds, parallel, settings.fold_iterations);
+    if (held_out) {
+      const PairedBlockTest read_back = paired_block_test(nuisance.residual, *held_out, folds.block_of, folds.blocks);
+      if (read_back.t > t.t) t = read_back;
+    }
+    if (t.t >= least_t) continue;
+    std::ostringstream why;
+    why << "it does not beat the model fed its inputs read back toward their centred means (" << described(shrinks)
+        << "), on the inputs as recorded or refitted on those (paired t " << std::setprecision(2) << t.t << ", under " << least_t
+        << "): the input sensors' noise, which the model carries into its prediction, not physics";
+    c.failure = why.str();
+  }
+  std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
+  return shrinks;
 }
 
 }  // namespace gc

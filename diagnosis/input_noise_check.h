@@ -17,6 +17,7 @@
 #include "core/coupling_model.h"
 #include "diagnosis/candidate_score.h"
 #include "diagnosis/cross_validation_folds.h"
+#include "diagnosis/input_shrinkage.h"
 #include "diagnosis/parallel_for.h"
 #include "core/effects/effect_registry.h"
 #include "core/recorded_sample.h"
@@ -38,5 +39,28 @@ std::optional<CandidateScore> demote_what_input_noise_explains(
     std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& folds, const ParallelFor& parallel,
     const CrossValidationSettings& settings, double least_t,
     const std::function<bool(const CandidateScore&)>& claimable);
+
+/// The shrinks of the inputs (input_shrinkage.h) that let `model` best predict the moments of
+/// `search` (positions of `rows`, which are in time order): channel by channel, a window of 0.25 to
+/// 64 s (at least two samples, at most a quarter of the recording) keeping 0 or half of the
+/// departure, the one with the least mean square kept. In sample: a nuisance is never claimed, and
+/// the choice that flatters it only makes a claim beside it harder. None when nothing lowers it.
+InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const RecordedSample> observations,
+                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                               const ParallelFor& parallel);
+
+/// Errors in the inputs, for every effect that does not time them (those meet the centred
+/// average above): marks failed (CandidateScore::failure) each of `ranking`'s effects for which
+/// `claimable` holds and that does not beat `model` fed the inputs
+/// read back by fit_input_shrinks by the paired t of `least_t` it met against `model` itself
+/// (CandidateScore::against_base, on the same blocks), either
+/// as scored (on the inputs as recorded) or refitted fold by fold on the inputs read back: the gain
+/// it had came from the input sensors' noise, which the model carries into its prediction. Returns the shrinks when any were fitted and used.
+std::optional<InputShrinks> demote_what_noisy_inputs_explain(
+    std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
+    std::span<const std::size_t> rows, std::span<const std::size_t> search, const Folds& folds,
+    const ParallelFor& parallel, const CrossValidationSettings& settings, double least_t,
+    const std::function<bool(const CandidateScore&)>& claimable,
+    const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for);
 
 }  // namespace gc

@@ -1,0 +1,67 @@
+// The inputs read back toward their centred means (diagnosis/input_shrinkage.h): the window is
+// centred and runs over the listed rows only, keep 1 changes nothing, and a direction is averaged
+// as a unit vector across +-pi.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "diagnosis/input_shrinkage.h"
+
+namespace gc {
+namespace {
+
+std::vector<RecordedSample> ramp(std::size_t count) {
+  std::vector<RecordedSample> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    out[i].input.time_s = 0.1 * static_cast<double>(i);
+    out[i].input.torque_nm = 1e5 * static_cast<double>(i * i);  // a parabola: its centred mean is above it
+    out[i].input.misalignment_rad = 1e-3;
+    out[i].input.direction_rad = 0.5;
+  }
+  return out;
+}
+
+TEST(InputShrinkage, KeepingNoneGivesTheCentredMeanOverTheListedRows) {
+  const std::vector<RecordedSample> r = ramp(10);
+  const std::vector<std::size_t> rows = {0, 1, 2, 3, 5, 6, 7, 8, 9};  // row 4 excluded
+  InputShrinks s;
+  s.torque = {0.25, 0.0};  // +-0.125 s: the row itself and its listed neighbours 0.1 s away
+  const std::vector<RecordedSample> out = with_shrunk_inputs(r, rows, s);
+  EXPECT_NEAR(out[2].input.torque_nm, 1e5 * (1.0 + 4.0 + 9.0) / 3.0, 1e-6);
+  EXPECT_NEAR(out[3].input.torque_nm, 1e5 * (4.0 + 9.0) / 2.0, 1e-6) << "row 4 is not listed: it feeds no mean";
+  EXPECT_EQ(out[4].input.torque_nm, r[4].input.torque_nm) << "and receives none";
+  EXPECT_NEAR(out[0].input.torque_nm, 1e5 * (0.0 + 1.0) / 2.0, 1e-6) << "the first row's window is cut at the start";
+  EXPECT_EQ(out[6].input.misalignment_rad, r[6].input.misalignment_rad);
+  EXPECT_EQ(out[6].input.time_s, r[6].input.time_s);
+}
+
+TEST(InputShrinkage, KeepingHalfIsHalfwayAndKeepingAllChangesNothing) {
+  const std::vector<RecordedSample> r = ramp(10);
+  const std::vector<std::size_t> rows = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  InputShrinks half;
+  half.torque = {0.25, 0.5};
+  const double mean = 1e5 * (16.0 + 25.0 + 36.0) / 3.0;
+  EXPECT_NEAR(with_shrunk_inputs(r, rows, half)[5].input.torque_nm, 0.5 * (mean + 25e5), 1e-6);
+  InputShrinks all;
+  all.torque = {4.0, 1.0};
+  EXPECT_TRUE(all.none());
+  EXPECT_EQ(with_shrunk_inputs(r, rows, all)[5].input.torque_nm, r[5].input.torque_nm);
+}
+
+TEST(InputShrinkage, ADirectionIsAveragedAcrossPlusMinusPi) {
+  std::vector<RecordedSample> r = ramp(3);
+  r[0].input.direction_rad = std::numbers::pi - 0.1;
+  r[1].input.direction_rad = -std::numbers::pi + 0.1;
+  r[2].input.direction_rad = std::numbers::pi - 0.1;
+  InputShrinks s;
+  s.direction = {0.25, 0.0};
+  const std::vector<RecordedSample> out = with_shrunk_inputs(r, std::vector<std::size_t>{0, 1, 2}, s);
+  // The mean of the three unit vectors points at pi - 0.1/3, not near 0.
+  EXPECT_NEAR(std::remainder(out[1].input.direction_rad - (std::numbers::pi - 0.1 / 3.0), 2.0 * std::numbers::pi), 0.0,
+              2e-3);
+}
+
+}  // namespace
+}  // namespace gc
