@@ -92,17 +92,15 @@ TEST(NoiseZoo, FiftyNoiseOnlyDrawsClaimNothing) {
   DrawLimits lim;
   lim.max_rows = kMaxRows;
   const ZooRun run = run_zoo(kMasterSeed, kDraws, lim);
-  // The target is 0 (issue 37). Measured: 1 claim, draw 35 (compliance, stiffness factor 0.63, on
-  // a torque transducer's and filtered probes' noise: errors in the inputs attenuate how the data
-  // follow them, which a softer mesh copies; a centred window of the inputs does not take it), and
-  // draw 40 an error, not a claim (the data-quality stage excludes all but 358 of 9,768 rows of
-  // white noise on an ADC step as large as the noise). A ratchet at today's count, not the goal.
-  constexpr std::size_t kMostClaimsToday = 1;
-  constexpr std::size_t kMostErrorsToday = 1;
-  EXPECT_LE(run.claims, kMostClaimsToday) << "diagnose claimed physics on " << run.claims << " of " << kDraws
+  // Issue 37's target: no claim and no error. Draw 35 (a compliance on a torque transducer's and
+  // filtered probes' noise: errors in the inputs attenuate how the data follow them) is noise since
+  // every effect must beat the model fed its inputs read back from their noise (input_noise_check.h);
+  // draw 40 (a misalignment held while the direction turns, read as a stuck sensor) is diagnosed
+  // since a smooth programme's holds are no artefact (recorded_channels.h).
+  EXPECT_EQ(run.claims, 0u) << "diagnose claimed physics on " << run.claims << " of " << kDraws
                                           << " noise-only recordings (the truth is exactly the model it was given):\n"
                                           << run.report;
-  EXPECT_LE(run.errors, kMostErrorsToday) << run.report;
+  EXPECT_EQ(run.errors, 0u) << run.report;
 }
 
 // Noise on the input channels alone (proximity probes, a torque transducer, each with random
