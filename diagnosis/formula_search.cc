@@ -171,6 +171,27 @@ bool drifts_slowly(const std::string& name) {
   return name.rfind("time", 0) == 0 || name.rfind("step_at_", 0) == 0 || name.rfind("temperature", 0) == 0;
 }
 
+/// A periodic term's phase is unknown: its sine and cosine on a channel are one component, and a
+/// formula that keeps one keeps the other. Forward selection takes them one at a time and can stop
+/// between them: a 2 kN·m tone at phase 2.0 on M_sz' put 0.8 kN·m in its sine, which was left out.
+void complete_phase_pairs(const std::vector<std::string>& terms, std::vector<bool>& support) {
+  static const std::pair<const char*, const char*> kPairs[] = {
+      {"_sin_on_", "_cos_on_"}, {"_forward_sin", "_forward_cos"}, {"_backward_sin", "_backward_cos"}};
+  const std::vector<bool> chosen = support;
+  for (std::size_t j = 0; j < terms.size(); ++j) {
+    if (!chosen[j]) continue;
+    for (const auto& [sine, cosine] : kPairs) {
+      for (const auto& [from, to] : {std::pair{sine, cosine}, std::pair{cosine, sine}}) {
+        const std::size_t at = terms[j].find(from);
+        if (at == std::string::npos) continue;
+        const std::string partner = terms[j].substr(0, at) + to + terms[j].substr(at + std::string(from).size());
+        const auto k = std::find(terms.begin(), terms.end(), partner);
+        if (k != terms.end()) support[static_cast<std::size_t>(k - terms.begin())] = true;
+      }
+    }
+  }
+}
+
 /// A term in time alone (t, t^2, t^3, a cycle, a step) may be a drift of the noise, which the
 /// interleaved folds let it interpolate. It must also predict **forward**: fitted on the rows
 /// before a stretch, it must lower the error on the last fifth of the rows (block-paired t of 2
@@ -584,6 +605,7 @@ std::optional<CandidateScore> search(std::span<const RecordedSample> observation
   std::vector<bool> stable(support.size(), false);
   for (std::size_t j = 0; j < votes.size(); ++j) stable[j] = levels[j] || 2 * votes[j] > static_cast<int>(order.size());
   if (count(stable) > count(levels)) support = stable;
+  complete_phase_pairs(design.terms, support);
   drop_drift_that_does_not_extrapolate(z, residual, design.terms, support);
   drop_slow_terms_within_the_wander(z, residual, design.terms, support);
   drop_levels_within_the_wander(z, residual, levels, support);
