@@ -5,6 +5,9 @@
 #include <map>
 #include <set>
 
+#include "diagnosis/row_selection.h"
+#include "diagnosis/row_exclusion.h"
+#include "diagnosis/test_blocks.h"
 #include "diagnosis/candidates_side_by_side.h"
 #include "diagnosis/claim_review.h"
 #include "diagnosis/delay_estimate.h"
@@ -27,32 +30,6 @@
 
 namespace gc {
 namespace {
-
-std::vector<std::size_t> time_ordered(std::span<const RecordedSample> observations) {
-  std::vector<std::size_t> rows = all_rows(observations.size());
-  std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) {
-    return observations[a].input.time_s < observations[b].input.time_s;
-  });
-  return rows;
-}
-
-/// At most `count` rows evenly spaced through `rows` (which are in time order).
-std::vector<std::size_t> evenly_spaced(const std::vector<std::size_t>& rows, std::size_t count) {
-  if (rows.size() <= count) return rows;
-  std::vector<std::size_t> out;
-  for (std::size_t k = 0; k < count; ++k) out.push_back(rows[k * rows.size() / count]);
-  return out;
-}
-
-Eigen::MatrixX2d select_rows(const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& all,
-                             const std::vector<std::size_t>& subset) {
-  Eigen::MatrixX2d out(static_cast<Eigen::Index>(subset.size()), 2);
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < all.size() && k < subset.size(); ++i) {
-    if (all[i] == subset[k]) out.row(static_cast<Eigen::Index>(k++)) = residual.row(static_cast<Eigen::Index>(i));
-  }
-  return out;
-}
 
 /// Cosine of the angle between two candidates' corrections to the base model (uncentred, so
 /// two constant offsets count as alike).
@@ -405,9 +382,6 @@ bool effect_explains_part(const CandidateScore& effect, const CandidateScore& fo
   return !without_effect || paired_block_test(*without_effect, both, folds.block_of, folds.blocks).t >= 2.0;
 }
 
-std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
-                            const DiagnosisSettings& settings);
-
 /// Removes from `time_terms` a cycle at the mains frequency (mains_pickup.h), direct or aliased by
 /// the rows' sample rate, and returns what the verdict says of it ("" when none).
 std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
@@ -431,13 +405,6 @@ std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::spa
     return mains.has_value();
   });
   return text;
-}
-
-/// The paired tests' block length of `folds` [rows].
-std::size_t test_rows_per_block(const Folds& folds) {
-  return folds.blocks > 0 ? (folds.block_of.size() + static_cast<std::size_t>(folds.blocks) - 1) /
-                                static_cast<std::size_t>(folds.blocks)
-                          : 2;
 }
 
 /// Whether the candidate's correction stands out of the wander it leaves when it is slow
@@ -767,52 +734,6 @@ std::optional<AbsorbingFormula> formula_absorbing(const CouplingModel& model, co
   std::optional<EffectFit> fitted = fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
   if (!fitted) return std::nullopt;
   return AbsorbingFormula{*fresh, std::move(*fitted)};
-}
-
-/// Search rows per block of the paired tests: three times the variance inflation of the noise's
-/// correlation between neighbouring search rows (lag-1 correlation phi^stride for search rows
-/// `stride` samples apart), so that block means are nearly independent; at most the rows of the
-/// cross-validation's blocks, the most a test needs.
-std::size_t test_block_rows(const NoiseEstimate& noise, std::size_t rows, std::size_t search,
-                            const DiagnosisSettings& settings) {
-  const double stride = static_cast<double>(rows) / static_cast<double>(std::max<std::size_t>(1, search));
-  const double phi = std::pow(std::clamp(noise.phi.maxCoeff(), 0.0, 0.99), stride);
-  const auto wanted = static_cast<std::size_t>(std::ceil(3.0 * (1.0 + phi) / (1.0 - phi)));
-  const std::size_t coarsest = search / static_cast<std::size_t>(settings.cross_validation.folds *
-                                                                  settings.cross_validation.blocks_per_fold);
-  return std::clamp<std::size_t>(wanted, 2, std::max<std::size_t>(2, coarsest));
-}
-
-/// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
-/// once, from the base model's residual. Returns them (indices into the recording).
-std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations) {
-  std::vector<std::size_t> outliers;
-  for (std::size_t position : outlier_positions(residual, deviations)) outliers.push_back(rows[position]);
-  if (outliers.empty()) return outliers;
-  std::vector<std::size_t> sorted = outliers;
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<std::size_t> kept;
-  for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
-  residual = select_rows(residual, rows, kept);
-  rows = std::move(kept);
-  return outliers;
-}
-
-/// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
-/// its rows leave `rows` and `residual` and join the data-quality findings.
-void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
-                          Eigen::MatrixX2d& residual) {
-  std::vector<std::size_t> flipped;
-  for (DataQualityFinding& f : moment_polarity_flips(observations, rows, residual)) {
-    flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
-    out.data_quality.push_back(std::move(f));
-  }
-  if (flipped.empty()) return;
-  std::sort(flipped.begin(), flipped.end());
-  std::vector<std::size_t> kept;
-  for (std::size_t r : rows) if (!std::binary_search(flipped.begin(), flipped.end(), r)) kept.push_back(r);
-  residual = select_rows(residual, rows, kept);
-  rows = std::move(kept);
 }
 
 /// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
