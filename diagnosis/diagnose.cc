@@ -8,6 +8,8 @@
 #include "diagnosis/row_selection.h"
 #include "diagnosis/row_exclusion.h"
 #include "diagnosis/test_blocks.h"
+#include "diagnosis/claimed_effects.h"
+#include "diagnosis/partly_claims.h"
 #include "diagnosis/candidates_side_by_side.h"
 #include "diagnosis/claim_review.h"
 #include "diagnosis/delay_estimate.h"
@@ -41,109 +43,6 @@ double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2
 
 bool has_held_shape(const EffectInfo& info) {
   return std::any_of(info.parameters.begin(), info.parameters.end(), [](const ParameterSpec& p) { return p.refine_only; });
-}
-
-/// The registration that refits `effect`: the library's, or an expression over its own terms.
-std::optional<EffectRegistration> registration_for(const Effect& effect, const DiagnosisSettings& settings) {
-  if (const auto members = effect.members(); !members.empty()) {
-    std::vector<EffectRegistration> parts;
-    for (const auto& m : members) {
-      const std::optional<EffectRegistration> part = registration_for(*m, settings);
-      if (!part) return std::nullopt;
-      parts.push_back(*part);
-    }
-    return joint_registration(parts);
-  }
-  if (effect.name() == kExpressionEffect) {
-    std::vector<std::string> terms;
-    for (const ParameterSpec& p : effect.info().parameters) terms.push_back(p.name);
-    return expression_registration(terms);
-  }
-  for (const EffectRegistration& r : settings.library) if (r.info->name == effect.name()) return r;
-  return std::nullopt;
-}
-
-/// `effects` as one effect to refit jointly; nullopt when one has no registration or no parameter.
-std::optional<JointEffect> joint_of(const std::vector<std::shared_ptr<const Effect>>& effects,
-                                    const DiagnosisSettings& settings) {
-  std::vector<EffectRegistration> registrations;
-  for (const auto& effect : effects) {
-    const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
-    if (!registration || registration->info->parameters.empty()) return std::nullopt;
-    registrations.push_back(*registration);
-  }
-  const EffectRegistration joint = joint_registration(registrations);
-  return JointEffect(*joint.info, joint_values(effects), registrations);
-}
-
-/// The effects earlier rounds added (the formula aside), as one effect to refit jointly, when
-/// there are two or more and one of them was said to explain only partly: fitted one after the
-/// other they trade with each other (a thermal misalignment fitted beside a weight offset that
-/// the next round explained took a share of it, and refitting each in turn creeps toward the
-/// truth a round at a time). The latest three: a fit of more parameters costs more than it finds.
-std::optional<JointEffect> partly_claims_together(const CouplingModel& model, const CouplingModel& given,
-                                                  const std::set<std::string>& partly, const DiagnosisSettings& settings) {
-  constexpr std::size_t kMostMembers = 3;
-  std::vector<std::shared_ptr<const Effect>> added;
-  for (const auto& effect : model.effects()) {
-    if (given.has_effect(effect->name()) || effect->name() == kExpressionEffect) continue;
-    const std::optional<EffectRegistration> registration = registration_for(*effect, settings);
-    if (!registration || registration->info->parameters.empty()) continue;
-    added.push_back(effect);
-  }
-  if (added.size() > kMostMembers) added.erase(added.begin(), added.end() - kMostMembers);
-  const bool any_partly = std::any_of(added.begin(), added.end(), [&](const auto& e) { return partly.count(e->name()) > 0; });
-  if (added.size() < 2 || !any_partly) return std::nullopt;
-  return joint_of(added, settings);
-}
-
-/// The fit of a joint refit: the parameters of two or three effects, some of which trade with
-/// each other (a thermal growth g and its reference temperature theta_0 along a valley), so more
-/// probes, starts and steps than one effect's. From round 1's g = -18.7 µrad/degC at 17.5 degC the
-/// default 8 probes, 2 starts and 10 steps stopped at -29 µrad/degC (2.66 kN·m held out); with
-/// these, at the truth's 59-62 µrad/degC at 35 degC (1.95 kN·m).
-CrossValidationSettings joint_refit_settings(CrossValidationSettings settings) {
-  settings.fit.probe_points = std::max(settings.fit.probe_points, 64);
-  settings.fit.starts = std::max(settings.fit.starts, 6);
-  settings.fit.least_squares.max_iterations = std::max(settings.fit.least_squares.max_iterations, 20);
-  return settings;
-}
-
-/// A partly claim's rival: an effect of the given model whose refinement came within this share
-/// of the claim's held-out RMSE in the claim's round, with fewer parameters. A round that says
-/// "partly" ranks what the residual still held beside its own effect: a channel gain and offset
-/// (four parameters) took a heavier self-weight (one) with a gain that soaked up a thermal
-/// misalignment fitted before it, 3.69 against 3.88 kN·m.
-constexpr double kRivalShare = 0.1;
-
-/// The rival of the round's partly claim (kRivalShare), if any: the effect's name.
-std::optional<std::string> rival_of_claim(const DiagnosisRound& round, const CouplingModel& given) {
-  if (round.outcome != RoundOutcome::partly_explained || round.formula_chosen || round.ranking.empty()) return std::nullopt;
-  const CandidateScore& best = round.ranking.front();
-  if (best.kind != CandidateKind::addition || !best.info) return std::nullopt;
-  for (std::size_t k = 1; k < round.ranking.size(); ++k) {
-    const CandidateScore& c = round.ranking[k];
-    if (c.held_out_rmse_nm > (1.0 + kRivalShare) * best.held_out_rmse_nm) break;
-    if (c.kind == CandidateKind::refinement && c.failure.empty() && c.info && given.has_effect(c.info->name) &&
-        c.info->parameters.size() < best.info->parameters.size()) {
-      return c.info->name;
-    }
-  }
-  return std::nullopt;
-}
-
-/// The names a claimed effect stands for: its own, or its members' when several were fitted as one.
-std::vector<std::string> claimed_names(const Effect& effect) {
-  std::vector<std::string> names;
-  for (const auto& m : effect.members()) names.push_back(m->name());
-  if (names.empty()) names.push_back(effect.name());
-  return names;
-}
-
-/// The effects a claim puts in the model: itself, or its members.
-std::vector<std::shared_ptr<const Effect>> claimed_effects(const std::shared_ptr<const Effect>& effect) {
-  std::vector<std::shared_ptr<const Effect>> members = effect->members();
-  return members.empty() ? std::vector<std::shared_ptr<const Effect>>{effect} : members;
 }
 
 std::vector<CandidateScore> rank_candidates(const CouplingModel& model, std::span<const RecordedSample> observations,
