@@ -11,6 +11,10 @@
 #include "diagnosis/claimed_effects.h"
 #include "diagnosis/partly_claims.h"
 #include "diagnosis/candidate_ranking.h"
+#include "diagnosis/claim_rule.h"
+#include "diagnosis/alike_candidates.h"
+#include "diagnosis/claim_order.h"
+#include "diagnosis/claim_carries.h"
 #include "diagnosis/candidates_side_by_side.h"
 #include "diagnosis/claim_review.h"
 #include "diagnosis/delay_estimate.h"
@@ -34,69 +38,8 @@
 namespace gc {
 namespace {
 
-/// Cosine of the angle between two candidates' corrections to the base model (uncentred, so
-/// two constant offsets count as alike).
-double correction_similarity(const Eigen::MatrixX2d& base, const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b) {
-  const Eigen::MatrixX2d ca = base - a, cb = base - b;
-  const double denominator = ca.norm() * cb.norm();
-  return denominator > 0.0 ? (ca.array() * cb.array()).sum() / denominator : 0.0;
-}
-
-/// The claim rule (docs/diagnosis.md, "The claim rule"): significant on held-out blocks (a paired t
-/// against the long-run variance of the block means), and a material fall of the held-out mean
-/// square: a share of the excess over the noise, and a share of the mean square itself.
-bool claimable(const CandidateScore& c, double base_ms, double noise_ms, const DiagnosisSettings& settings) {
-  if (!c.failure.empty() || c.against_base.t < settings.claim_t) return false;
-  const double effect_ms = c.held_out_rmse_nm * c.held_out_rmse_nm;
-  const double excess = std::max(base_ms - noise_ms, 0.0);
-  const double fall = base_ms - effect_ms;
-  return fall >= settings.claim_excess_share * excess && fall >= settings.claim_least_fall * base_ms && fall > 0.0;
-}
-
-bool plausible(const CandidateScore& c) { return c.fit && c.fit->plausible(); }
-
 /// An input that carries at least this share of an effect's correction is one the effect explains.
 constexpr double kExplainedInputShare = 0.1;
-
-/// A parameter on a physical bound: the truth may lie beyond what the effect can say.
-bool at_bound(const CandidateScore& c) { return !c.fit || c.fit->at_bound(); }
-
-/// Alike: corrections that point the same way, and held-out errors within a small share of each
-/// other or not significantly different.
-bool alike(const CandidateScore& best, const CandidateScore& other, const Eigen::MatrixX2d& base,
-           const Folds& folds, const DiagnosisSettings& settings, double& similarity, PairedBlockTest& t) {
-  similarity = correction_similarity(base, best.held_out_residual, other.held_out_residual);
-  t = paired_block_test(other.held_out_residual, best.held_out_residual, folds.block_of, folds.blocks);
-  const bool close = other.held_out_rmse_nm <= (1.0 + settings.alike_rmse_share) * best.held_out_rmse_nm;
-  return similarity >= settings.alike_correlation && (close || t.t < settings.alike_t);
-}
-
-/// `model` with the candidate's effect, and without the earlier claims it replaces.
-CouplingModel model_with_candidate(const CouplingModel& model, const CandidateScore& c) {
-  CouplingModel out = model;
-  for (const std::string& name : c.replaces) out = out.without_effect(name);
-  return out.with_effect(c.fit->effect);
-}
-
-std::vector<AlikeEffect> alike_effects(const CouplingModel& model, const std::vector<CandidateScore>& ranking,
-                                       const Eigen::MatrixX2d& base, const Folds& folds, double base_ms,
-                                       double noise_ms, std::span<const RecordedSample> observations,
-                                       const std::vector<std::size_t>& rows, double noise_sigma,
-                                       const DiagnosisSettings& settings) {
-  std::vector<AlikeEffect> out;
-  const CandidateScore& best = ranking.front();
-  for (std::size_t k = 1; k < ranking.size(); ++k) {
-    const CandidateScore& other = ranking[k];
-    if (!claimable(other, base_ms, noise_ms, settings) || !plausible(other) || other.info->name == best.info->name) continue;
-    double similarity = 0.0;
-    PairedBlockTest t;
-    if (!alike(best, other, base, folds, settings, similarity, t)) continue;
-    out.push_back({other.info->name, similarity, t,
-                   separating_experiment(model_with_candidate(model, best), model_with_candidate(model, other),
-                                         observations, rows, noise_sigma)});
-  }
-  return out;
-}
 
 /// Per channel, the share of the base mean square that the candidate's held-out residual removes.
 Eigen::Vector2d channel_reduction(const Eigen::MatrixX2d& base, const Eigen::MatrixX2d& held_out) {
@@ -113,67 +56,6 @@ bool is_systematic(double all_ms, double noise_ms, std::size_t rows, const Noise
   const double n = static_cast<double>(rows);
   const double inflation = noise.variance_inflation();
   return all_ms > noise_ms * (1.0 + 4.5 * std::sqrt(inflation / n + 5.4 * inflation / n)) || signature.systematic();
-}
-
-/// Moves the effect to claim to the front: the best plausible one unless an implausible one is
-/// significantly better (then it is claimed as partly explaining).
-void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, double noise_ms, const Folds& folds,
-                     const DiagnosisSettings& settings) {
-  if (ranking.empty() || plausible(ranking.front())) return;
-  for (std::size_t k = 1; k < ranking.size(); ++k) {
-    if (!claimable(ranking[k], base_ms, noise_ms, settings) || !plausible(ranking[k])) continue;
-    const PairedBlockTest t = paired_block_test(ranking[k].held_out_residual, ranking.front().held_out_residual,
-                                                folds.block_of, folds.blocks);
-    if (t.t < settings.alike_t) std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(k),
-                                             ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
-    return;
-  }
-}
-
-/// A swap (CandidateScore::replaces) that does as well as the candidate ranked first, on fewer
-/// parameters, goes first: alike on held-out rows (within alike_rmse_share, or not significantly
-/// worse), the simpler model. A joint refit of a thermal growth and a channel gain and offset (7
-/// parameters) and the same with the self-weight in the place of the gain and offset (4) both
-/// reached the truth's growth, 1.95 against 1.97 kN·m held out.
-void put_simpler_swap_first(std::vector<CandidateScore>& ranking, const Folds& folds, const DiagnosisSettings& settings) {
-  if (ranking.empty() || !ranking.front().replaces.empty() || !ranking.front().info) return;
-  const CandidateScore& first = ranking.front();
-  for (std::size_t k = 1; k < ranking.size(); ++k) {
-    const CandidateScore& swap = ranking[k];
-    if (swap.replaces.empty() || !swap.failure.empty() || !swap.info ||
-        swap.info->parameters.size() >= first.info->parameters.size()) {
-      continue;
-    }
-    const PairedBlockTest t = paired_block_test(swap.held_out_residual, first.held_out_residual, folds.block_of, folds.blocks);
-    const bool close = swap.held_out_rmse_nm <= (1.0 + settings.alike_rmse_share) * first.held_out_rmse_nm;
-    if (close || t.t < settings.alike_t) {
-      std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(k),
-                  ranking.begin() + static_cast<std::ptrdiff_t>(k) + 1);
-    }
-    return;
-  }
-}
-
-/// Of the claimable, plausible effects alike to the one ranked first (alike()), the one with the
-/// fewest parameters goes first: where the data cannot tell two apart, the simpler model. An
-/// assembly misalignment (two parameters) and a thermal misalignment (more) fit a recording at a
-/// nearly steady oil temperature alike; the simpler says as much with less.
-void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen::MatrixX2d& base, const Folds& folds,
-                              double base_ms, double noise_ms, const DiagnosisSettings& settings) {
-  if (ranking.empty() || !ranking.front().info || !claimable(ranking.front(), base_ms, noise_ms, settings)) return;
-  std::size_t simplest = 0;
-  for (std::size_t k = 1; k < ranking.size(); ++k) {
-    const CandidateScore& c = ranking[k];
-    if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || !plausible(c)) continue;
-    if (c.info->parameters.size() >= ranking[simplest].info->parameters.size()) continue;
-    double similarity = 0.0;
-    PairedBlockTest t;
-    if (alike(ranking.front(), c, base, folds, settings, similarity, t)) simplest = k;
-  }
-  if (simplest > 0) {
-    std::rotate(ranking.begin(), ranking.begin() + static_cast<std::ptrdiff_t>(simplest),
-                ranking.begin() + static_cast<std::ptrdiff_t>(simplest) + 1);
-  }
 }
 
 FormulaSettings formula_settings(const DiagnosisRound& round, const DiagnosisSettings& settings) {
@@ -225,63 +107,6 @@ std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::spa
     return mains.has_value();
   });
   return text;
-}
-
-/// Whether the candidate's correction stands out of the wander it leaves when it is slow
-/// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
-/// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
-/// a swap (CandidateScore::replaces) refits what earlier rounds claimed and is not tested again.
-bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::span<const RecordedSample> observations,
-                    const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base, const Folds& fifths,
-                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
-  if (!c.fit || !c.fit->effect || !c.replaces.empty() || !c.fit->effect->members().empty()) return true;
-  if (!stands_out_of_wander(base - c.held_out_residual, c.held_out_residual)) return false;
-  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
-  if (!registration) return true;
-  const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
-  const CandidateScore on_fifths = score_candidate(model, *registration, observations, search, base, fifths, parallel,
-                                                   settings.cross_validation, current.get());
-  return on_fifths.failure.empty() && carries_to_whole_fifths(base, on_fifths.held_out_residual, fifths);
-}
-
-/// The formula's terms refitted on four contiguous fifths and judged on the fifth it never saw.
-bool formula_carries(const CandidateScore& formula, std::span<const RecordedSample> observations,
-                     std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths) {
-  if (!formula.fit) return false;
-  std::vector<std::string> terms;
-  for (const ParameterEstimate& p : formula.fit->parameters) terms.push_back(p.name);
-  const std::optional<Eigen::MatrixX2d> held_out = formula_held_out(observations, rows, base, terms, fifths);
-  return held_out && carries_to_whole_fifths(base, *held_out, fifths);
-}
-
-/// A claim that takes less than this share of the model's held-out mean square is tested again on
-/// whole fifths and against the slow wander: what leaks from a slow noise through interleaved folds
-/// takes a few percent (9 % of a random walk's), a real effect at SNR 1.5 takes 69 %. A strong claim
-/// is left to the other rounds: judged against the wander it leaves beside a second mechanism not yet
-/// explained (a hysteresis beside a channel's gain), a real effect looked like noise.
-constexpr double kWeakClaimFall = 0.2;
-
-bool weak_claim(const CandidateScore& c, double base_ms) {
-  return base_ms - c.held_out_rmse_nm * c.held_out_rmse_nm < kWeakClaimFall * base_ms;
-}
-
-/// The claim rule's second test on the effect that would be claimed: one that does not carry to
-/// whole fifths is marked failed and goes last, and the next claimable one is tried (three at most,
-/// each test costs a fit).
-void demote_what_does_not_carry(std::vector<CandidateScore>& ranking, const CouplingModel& model,
-                                std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
-                                const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,
-                                double base_ms, double noise_ms, const DiagnosisSettings& settings) {
-  for (int tried = 0; tried < 3 && !ranking.empty(); ++tried) {
-    CandidateScore& front = ranking.front();
-    if (!claimable(front, base_ms, noise_ms, settings) || !weak_claim(front, base_ms) ||
-        effect_carries(front, model, observations, search, base, fifths, parallel, settings)) {
-      return;
-    }
-    front.failure = "as slow as the noise's wander and not out of it, or does not carry to a fifth of the recording "
-                    "it was not fitted on";
-    std::rotate(ranking.begin(), ranking.begin() + 1, ranking.end());
-  }
 }
 
 /// One round: residual, noise, signature, candidates, outcome.
