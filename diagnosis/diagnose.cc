@@ -1,159 +1,23 @@
 #include "diagnosis/diagnose.h"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <set>
 
-#include "diagnosis/row_selection.h"
-#include "diagnosis/row_exclusion.h"
-#include "diagnosis/test_blocks.h"
-#include "diagnosis/claimed_effects.h"
-#include "diagnosis/partly_claims.h"
-#include "diagnosis/candidate_ranking.h"
-#include "diagnosis/claim_rule.h"
-#include "diagnosis/alike_candidates.h"
-#include "diagnosis/claim_order.h"
-#include "diagnosis/claim_carries.h"
-#include "diagnosis/search_round.h"
-#include "diagnosis/candidates_side_by_side.h"
+#include "core/model_error.h"
+#include "diagnosis/claim_refit.h"
 #include "diagnosis/claim_review.h"
-#include "diagnosis/delay_estimate.h"
-#include "diagnosis/mains_pickup.h"
+#include "diagnosis/claimed_effects.h"
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/noise_estimate.h"
-#include "diagnosis/polarity_flip.h"
-#include "diagnosis/signature_held_out.h"
-#include "diagnosis/slow_wander.h"
-#include "diagnosis/input_noise_check.h"
-#include "diagnosis/surrogate_claims.h"
+#include "diagnosis/partly_claims.h"
+#include "diagnosis/row_exclusion.h"
+#include "diagnosis/row_selection.h"
+#include "diagnosis/search_round.h"
+#include "diagnosis/test_blocks.h"
 #include "diagnosis/verdict_text.h"
-#include "diagnosis/time_step.h"
-#include "diagnosis/whole_fifths.h"
-#include "core/effects/effect_registry.h"
-#include "core/effects/expression.h"
-#include "core/effects/expression_terms.h"
-#include "core/effects/joint_effect.h"
-#include "core/model_error.h"
 
 namespace gc {
-namespace {
-
-/// The round's claim refitted on the refit rows (an effect from its search fit; a formula by least
-/// squares), or nullopt when the refit cannot predict those rows.
-std::optional<EffectFit> refit_claim(const CouplingModel& model, const DiagnosisRound& round,
-                                     std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
-                                     const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& refit,
-                                     const ParallelFor& parallel, const DiagnosisSettings& settings) {
-  const CandidateScore& chosen = round.chosen();
-  if (round.formula_chosen) {
-    std::vector<std::string> terms;
-    for (const ParameterEstimate& p : chosen.fit->parameters) terms.push_back(p.name);
-    const std::shared_ptr<const Effect> earlier = model.effect(kExpressionEffect);
-    if (!earlier) return fit_formula(observations, refit, select_rows(residual, rows, refit), terms, round.noise.variance_inflation());
-    // A model with a formula already gets one formula over both sets of terms, refitted together on
-    // what the model leaves without it: a second expression would replace the first.
-    for (const ParameterSpec& p : earlier->info().parameters) {
-      if (std::find(terms.begin(), terms.end(), p.name) == terms.end()) terms.push_back(p.name);
-    }
-    const ModelResiduals without = model_residuals(model.without_effect(kExpressionEffect), observations, refit, parallel);
-    if (!without.failed_rows.empty()) return std::nullopt;
-    return fit_formula(observations, refit, without.residual, terms, round.noise.variance_inflation());
-  }
-  CouplingModel base = model;
-  for (const std::string& name : chosen.replaces) base = base.without_effect(name);
-  const std::shared_ptr<const Effect> current = base.effect(chosen.info->name);
-  const std::optional<EffectRegistration> registration =
-      current ? registration_for(*current, settings) : registration_for(*chosen.fit->effect, settings);
-  if (!registration) return std::nullopt;
-  std::optional<EffectFit> fit =
-      refit_effect(base, *registration, *chosen.fit, observations, refit, parallel, settings.final_iterations, true);
-  // s^2 (J'J)^-1 counts every sample as independent; correlated noise carries fewer.
-  const double inflation = std::sqrt(round.noise.variance_inflation());
-  if (fit) for (ParameterEstimate& p : fit->parameters) if (p.standard_error) *p.standard_error *= inflation;
-  return fit;
-}
-
-/// A fresh formula that takes over an earlier claim: its search-row score and its refit.
-struct AbsorbingFormula {
-  CandidateScore score;
-  EffectFit refit;
-};
-
-/// A formula claimed this round may take over an earlier claim (an offset that took the mean of a
-/// drift in round 1): the formula searched afresh on what the model leaves without that claim and
-/// without its formula. When it does as well on held-out blocks as the model with both (paired t
-/// below keep_t), it is returned, with its refit on the refit rows, to replace them.
-std::optional<AbsorbingFormula> formula_absorbing(const CouplingModel& model, const std::string& name,
-                                           const Eigen::MatrixX2d& held_out, std::span<const RecordedSample> observations,
-                                           const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit,
-                                           const Folds& folds, const ParallelFor& parallel, const FormulaSettings& settings,
-                                           double keep_t) {
-  const CouplingModel bare = model.without_effect(name).without_effect(kExpressionEffect);
-  const ModelResiduals on_search = model_residuals(bare, observations, search, parallel);
-  if (!on_search.failed_rows.empty()) return std::nullopt;
-  const std::optional<CandidateScore> fresh = formula_candidate(observations, search, on_search.residual, folds, settings);
-  if (!fresh || paired_block_test(fresh->held_out_residual, held_out, folds.block_of, folds.blocks).t >= keep_t) {
-    return std::nullopt;
-  }
-  const ModelResiduals on_refit = model_residuals(bare, observations, refit, parallel);
-  if (!on_refit.failed_rows.empty()) return std::nullopt;
-  std::vector<std::string> terms;
-  for (const ParameterEstimate& p : fresh->fit->parameters) terms.push_back(p.name);
-  std::optional<EffectFit> fitted = fit_formula(observations, refit, on_refit.residual, terms, settings.variance_inflation);
-  if (!fitted) return std::nullopt;
-  return AbsorbingFormula{*fresh, std::move(*fitted)};
-}
-
-/// After the round's claim is in `model`: drops the earlier claims (in `added`) it makes idle, and,
-/// when the claim is a formula, those a fresh formula can take over (the claim becomes that formula).
-/// Refinements of the given model's effects are refined again later, never removed.
-void revisit_claims(CouplingModel& model, DiagnosisRound& round, std::vector<std::shared_ptr<const Effect>>& added,
-                    const CouplingModel& given, std::span<const RecordedSample> observations,
-                    const std::vector<std::size_t>& search, const std::vector<std::size_t>& refit, const Folds& folds,
-                    const ParallelFor& parallel, const DiagnosisSettings& settings) {
-  std::vector<std::string> revisit;
-  const std::vector<std::string> claimed = claimed_names(*round.claimed->effect);
-  for (const auto& earlier : added) {
-    if (!given.has_effect(earlier->name()) &&
-        std::find(claimed.begin(), claimed.end(), earlier->name()) == claimed.end()) {
-      revisit.push_back(earlier->name());
-    }
-  }
-  const auto drop = [&](const std::string& name) {
-    round.dropped.push_back(name);
-    std::erase_if(added, [&](const auto& e) { return e->name() == name; });
-  };
-  for (const std::string& name : redundant_claims(model, revisit, round.chosen().held_out_residual, observations, search,
-                                                  folds, parallel, settings.keep_t)) {
-    model = model.without_effect(name);
-    drop(name);
-  }
-  if (!round.formula_chosen) return;
-  for (const std::string& name : revisit) {
-    if (name == kExpressionEffect || std::find(round.dropped.begin(), round.dropped.end(), name) != round.dropped.end()) {
-      continue;
-    }
-    std::optional<AbsorbingFormula> absorbed = formula_absorbing(model, name, round.chosen().held_out_residual,
-                                                                 observations, search, refit, folds, parallel,
-                                                                 formula_settings(round, settings), settings.keep_t);
-    if (!absorbed) continue;
-    const CouplingModel taken = model.without_effect(name).with_effect(absorbed->refit.effect);
-    if (!model_residuals(taken, observations, refit, parallel).failed_rows.empty()) continue;
-    model = taken;
-    // The round's formula record becomes the one claimed, so the JSON's formula, its claimed
-    // parameters and the verdict's held-out figures are of one formula. Its fall is quoted against
-    // the round's model, as every candidate's.
-    absorbed->score.reduction = round.search_base_rmse_nm > 0.0
-                                    ? 1.0 - absorbed->score.held_out_rmse_nm / round.search_base_rmse_nm
-                                    : 0.0;
-    round.formula = std::move(absorbed->score);
-    round.claimed = std::move(absorbed->refit);
-    drop(name);
-  }
-}
-
-}  // namespace
 
 const char* to_string(RoundOutcome outcome) {
   switch (outcome) {
