@@ -33,7 +33,7 @@ struct CandidateScore {
   PairedBlockTest against_base;   ///< t > 0: better than the base model on held-out blocks
   std::string failure;            ///< non-empty when the effect could not be fitted or scored
   /// Earlier claims this candidate takes out of the model: a joint refit that puts a simpler effect
-  /// of the model in the place of one (diagnose.cc, rival_of_claim).
+  /// of the model in the place of one (partly_claims.h, rival_of_claim).
   std::vector<std::string> replaces;
   int evaluations = 0;            ///< model evaluations of all rows it cost
   /// The family-wise p-value that noise with the residual's spectrum is explained as well

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/effects/expression_terms.h"
+#include "diagnosis/time_step.h"
 #include "diagnosis/verdict_text.h"
 
 namespace gc {
@@ -35,6 +37,29 @@ std::string mains_pickup_text(double cycle_hz, double mains_hz) {
                              : short_number(cycle_hz) + " Hz (" + short_number(mains_hz) + " Hz aliased by the sample rate)";
   return "a cycle at " + at + " is mains pickup in the bridges or their cables, an instrument artefact: not offered "
          "as physics (screen and ground the bridge cables, or filter it)";
+}
+
+std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
+                                  const std::vector<std::size_t>& rows) {
+  if (rows.size() < 2) return "";
+  Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
+  const double step = typical_time_step(t);
+  const double duration = t(t.size() - 1) - t(0);
+  if (!(step > 0.0) || !(duration > 0.0)) return "";
+  std::string text;
+  std::erase_if(time_terms, [&](const std::string& name) {
+    const ExpressionTerm* term = find_expression_term(name);
+    if (!term || !(term->period_s > 0.0)) return false;
+    const double f = 1.0 / term->period_s;
+    // Only mains that the rows resolve: aliased, 60 Hz at 50 Hz sampling lands at 10 Hz, where a
+    // 56-tooth mesh at 10.7 rpm also is.
+    const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
+    if (mains && *mains >= 0.5 / step) return false;
+    if (mains && text.empty()) text = mains_pickup_text(f, *mains);
+    return mains.has_value();
+  });
+  return text;
 }
 
 }  // namespace gc

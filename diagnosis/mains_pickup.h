@@ -5,8 +5,13 @@
 // "time cycle of 0.0200218 s" with two shaft-order terms beside it.
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
+
+#include "core/recorded_sample.h"
 
 namespace gc {
 
@@ -17,5 +22,10 @@ std::optional<double> mains_frequency(double frequency_hz, double sample_rate_hz
 
 /// "a cycle at 50.0 Hz (mains pickup ...)" for the verdict.
 std::string mains_pickup_text(double cycle_hz, double mains_hz);
+
+/// Removes from `time_terms` a cycle at the mains frequency (mains_frequency), direct or aliased by
+/// the rows' sample rate, and returns what the verdict says of it ("" when none).
+std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
+                                  const std::vector<std::size_t>& rows);
 
 }  // namespace gc

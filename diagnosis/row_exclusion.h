@@ -1,0 +1,25 @@
+// Rows left out before the physics is diagnosed, from the base model's residual: spikes (outliers)
+// and the rows of a moment channel whose sign turned. Each leaves the rows in use and their residual.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/recorded_sample.h"
+#include "diagnosis/diagnose.h"
+
+namespace gc {
+
+/// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
+/// once, from the base model's residual. Returns them (indices into the recording).
+std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations);
+
+/// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
+/// its rows leave `rows` and `residual` and join the data-quality findings.
+void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                          Eigen::MatrixX2d& residual);
+
+}  // namespace gc
