@@ -4,16 +4,10 @@
 
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/noise_estimate.h"
+#include "diagnosis/row_selection.h"
 
 namespace gc {
 namespace {
-
-std::vector<std::size_t> select(std::span<const std::size_t> rows, const std::vector<std::size_t>& positions) {
-  std::vector<std::size_t> out;
-  out.reserve(positions.size());
-  for (std::size_t p : positions) out.push_back(rows[p]);
-  return out;
-}
 
 /// Fits on the fold's training rows (warm start) and returns the residual on its held-out rows,
 /// or a reason it could not.
@@ -50,8 +44,8 @@ CandidateScore score_candidate(const CouplingModel& base, const EffectRegistrati
   score.evaluations = score.fit->evaluations;
   score.held_out_residual = Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(rows.size()), 2);
   for (std::size_t f = 0; f < folds.held_out.size(); ++f) {
-    const auto r = held_out_residual(base, registration, *score.fit, observations, select(rows, folds.training[f]),
-                                     select(rows, folds.held_out[f]), parallel, settings.fold_iterations,
+    const auto r = held_out_residual(base, registration, *score.fit, observations, rows_at(rows, folds.training[f]),
+                                     rows_at(rows, folds.held_out[f]), parallel, settings.fold_iterations,
                                      score.evaluations);
     if (!r) {
       score.failure = "the model fitted on fold " + std::to_string(f + 1) + " cannot predict its held-out rows";

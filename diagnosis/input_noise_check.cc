@@ -8,6 +8,7 @@
 #include "core/effects/registration.h"
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/noise_estimate.h"
+#include "diagnosis/row_selection.h"
 
 namespace gc {
 namespace {
@@ -45,13 +46,6 @@ double shrunk_mean_square(const CouplingModel& model, std::span<const RecordedSa
   return r.failed_rows.empty() ? pooled_mean_square(r.residual) : std::numeric_limits<double>::infinity();
 }
 
-std::vector<std::size_t> positions_of(std::span<const std::size_t> search, const std::vector<std::size_t>& positions) {
-  std::vector<std::size_t> out;
-  out.reserve(positions.size());
-  for (std::size_t p : positions) out.push_back(search[p]);
-  return out;
-}
-
 /// The candidate refitted on `shrunk` fold by fold from its full fit, its residual on each fold's
 /// held-out rows; nullopt when a fold cannot be refitted or predicted.
 std::optional<Eigen::MatrixX2d> held_out_on(const CouplingModel& model, const CandidateScore& c,
@@ -63,10 +57,10 @@ std::optional<Eigen::MatrixX2d> held_out_on(const CouplingModel& model, const Ca
   Eigen::MatrixX2d out = Eigen::MatrixX2d::Zero(static_cast<Eigen::Index>(search.size()), 2);
   for (std::size_t f = 0; f < folds.held_out.size(); ++f) {
     const std::optional<EffectFit> fold = refit_effect(base, registration, *c.fit, shrunk,
-                                                       positions_of(search, folds.training[f]), parallel, iterations, false);
+                                                       rows_at(search, folds.training[f]), parallel, iterations, false);
     if (!fold) return std::nullopt;
     const ModelResiduals r =
-        model_residuals(base.with_effect(fold->effect), shrunk, positions_of(search, folds.held_out[f]), parallel);
+        model_residuals(base.with_effect(fold->effect), shrunk, rows_at(search, folds.held_out[f]), parallel);
     if (!r.failed_rows.empty()) return std::nullopt;
     for (std::size_t k = 0; k < folds.held_out[f].size(); ++k) {
       out.row(static_cast<Eigen::Index>(folds.held_out[f][k])) = r.residual.row(static_cast<Eigen::Index>(k));

@@ -21,6 +21,13 @@ std::vector<std::size_t> evenly_spaced(const std::vector<std::size_t>& rows, std
   return out;
 }
 
+std::vector<std::size_t> rows_at(std::span<const std::size_t> rows, const std::vector<std::size_t>& positions) {
+  std::vector<std::size_t> out;
+  out.reserve(positions.size());
+  for (std::size_t p : positions) out.push_back(rows[p]);
+  return out;
+}
+
 Eigen::MatrixX2d select_rows(const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& all,
                              const std::vector<std::size_t>& subset) {
   Eigen::MatrixX2d out(static_cast<Eigen::Index>(subset.size()), 2);

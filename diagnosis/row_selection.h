@@ -19,6 +19,9 @@ std::vector<std::size_t> time_ordered(std::span<const RecordedSample> observatio
 /// At most `count` rows evenly spaced through `rows` (which are in time order).
 std::vector<std::size_t> evenly_spaced(const std::vector<std::size_t>& rows, std::size_t count);
 
+/// The rows at `positions` of `rows` (a fold's positions into the search rows, as recording rows).
+std::vector<std::size_t> rows_at(std::span<const std::size_t> rows, const std::vector<std::size_t>& positions);
+
 /// The rows of `residual` (one per row of `all`) that `subset` names; `subset` in the order of `all`.
 Eigen::MatrixX2d select_rows(const Eigen::MatrixX2d& residual, const std::vector<std::size_t>& all,
                              const std::vector<std::size_t>& subset);
