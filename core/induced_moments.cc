@@ -75,15 +75,12 @@ QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint&
 
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ToothContact& contact) {
-  ToothLoadPattern pattern;  // what the quarter sums read of it
-  pattern.load_sharing = contact.load_sharing;
-  pattern.offset_alpha_rad = contact.offset_alpha_rad;
-  pattern.max_contact_offset_m = contact.max_contact_offset_m;
-  pattern.sin_alpha = std::sin(contact.offset_alpha_rad);
-  pattern.cos_alpha = std::cos(contact.offset_alpha_rad);
+  // P_d of eq 9 from the contact's members, as its table holds them: a contact solved without
+  // listing its teeth (tooth_contact_without_teeth) gives the same moments.
+  const ToothLoadPattern pattern = tooth_load_pattern(contact);
   const QuarterSums sums =
       quarter_sums(coupling, point, pattern, contact.continuous_quarter_sums,
-                   [&contact](int j) { return contact.teeth[static_cast<std::size_t>(j)].load_n; });
+                   [&](int j) { return pattern.load_n(coupling, j); });
   InducedMoments m;
   m.teeth_summed = sums.teeth_summed;
   m.moment_y_dd_nm = sums.moment_y_dd_nm;  // eq 43
@@ -103,19 +100,16 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
 
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ContactOptions& options) {
-  return induced_moments(coupling, point, tooth_contact(coupling, point, options));
+  ToothContact contact;
+  tooth_contact_without_teeth(coupling, point, options, contact);
+  return induced_moments(coupling, point, contact);
 }
 
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options) {
   const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  const int n = coupling.teeth();
-  double carried = 0.0;  // in tooth order, as tooth_contact() sums them: the same refusals
-  for (Eigen::Index first = 0; first < n; first += kToothBlock) {
-    const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
-    const ToothBlock load = pattern.load_n(pattern.sin_theta(coupling, first, count));  // eq 9
-    for (Eigen::Index i = 0; i < count; ++i) carried += load[i];
-  }
+  // In tooth order, as tooth_contact() sums them: the same refusals.
+  const double carried = tooth_load_totals(coupling, pattern).sum_of_loads_n;
   require_load_carried(pattern, carried, point, options.min_load_fraction);
   return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
                       [&](int j) { return pattern.load_n(coupling, j); });

@@ -47,11 +47,13 @@ struct QuarterSums {
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options);
 
-/// Eqs 36-48 from a solved tooth contact at `point` (point.friction_coefficient is mu).
+/// Eqs 36-48 from a solved tooth contact at `point` (point.friction_coefficient is mu). Reads
+/// the contact's members, not its table of teeth: a contact from tooth_contact_without_teeth()
+/// gives the same moments, bit for bit.
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ToothContact& contact);
 
-/// Tooth contact (eqs 5-22) then eqs 36-48.
+/// Tooth contact (eqs 5-22, without listing the teeth) then eqs 36-48.
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ContactOptions& options = {});
 

@@ -62,6 +62,53 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
   return p;
 }
 
+ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
+  const int n = coupling.teeth();
+  const double* const tooth_sin = coupling.tooth_sin().data();
+  const double* const tooth_cos = coupling.tooth_cos().data();
+  const double cos_alpha = pattern.cos_alpha, sin_alpha = pattern.sin_alpha;
+  const double ratio = pattern.separation_ratio, peak = pattern.peak_tooth_load_n;
+  ToothLoadTotals totals;
+  // A block of loads on the stack: the first loop runs in the vector units, the second keeps the
+  // sum in tooth order (its bits) and adds only the loaded teeth (an unloaded tooth's +0 would
+  // change no bit).
+  alignas(16) double load[kToothBlock];
+  for (int first = 0; first < n; first += kToothBlock) {
+    const int count = std::min(kToothBlock, n - first);
+    for (int i = 0; i < count; ++i) {
+      const double s = tooth_sin[first + i] * cos_alpha + tooth_cos[first + i] * sin_alpha;
+      const double share = 1.0 - ratio * s * s;
+      load[i] = share > 0.0 ? peak * share : 0.0;  // a NaN share too: as load_n
+    }
+    for (int i = 0; i < count; ++i) {
+      if (!(load[i] > 0.0)) continue;
+      ++totals.loaded_teeth;
+      totals.sum_of_loads_n += load[i];
+      if (load[i] > totals.max_load_n) {
+        totals.max_load_n = load[i];
+        totals.max_load_tooth = first + i;
+      }
+    }
+  }
+  return totals;
+}
+
+ToothLoadPattern tooth_load_pattern(const ToothContact& contact) {
+  ToothLoadPattern p;
+  p.total_normal_load_n = contact.total_normal_load_n;
+  p.mean_tooth_load_n = contact.mean_tooth_load_n;
+  p.max_separation_m = contact.max_separation_m;
+  p.load_sharing = contact.load_sharing;
+  p.peak_tooth_load_n = contact.peak_tooth_load_n;
+  p.elastic_deformation_m = contact.elastic_deformation_m;
+  p.offset_alpha_rad = contact.offset_alpha_rad;
+  p.max_contact_offset_m = contact.max_contact_offset_m;
+  p.separation_ratio = p.max_separation_m / p.elastic_deformation_m;
+  p.sin_alpha = std::sin(p.offset_alpha_rad);
+  p.cos_alpha = std::cos(p.offset_alpha_rad);
+  return p;
+}
+
 void require_load_carried(const ToothLoadPattern& pattern, double sum_of_loads_n, const OperatingPoint& point,
                           double minimum) {
   const double carried = sum_of_loads_n / pattern.total_normal_load_n;

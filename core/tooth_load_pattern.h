@@ -17,6 +17,7 @@
 namespace gc {
 
 struct ContactOptions;
+struct ToothContact;
 
 /// Teeth evaluated at once as arrays: a block lives on the stack (an evaluation allocates
 /// nothing) and is long enough for the vector units, short enough to stay in L1 beside the
@@ -67,10 +68,27 @@ struct ToothLoadPattern {
   }
 };
 
+/// Eq 9 summed over the teeth: what tooth_contact() reports of the loads without listing them.
+struct ToothLoadTotals {
+  int loaded_teeth = 0;        ///< count of P_d > 0
+  int max_load_tooth = 0;      ///< j of the largest P_d, the first if several (0 if none)
+  double max_load_n = 0.0;     ///< largest P_d [N]
+  double sum_of_loads_n = 0.0; ///< sum of P_d in tooth order [N]
+};
+
+/// Eq 9 for every tooth of `coupling` in one pass over its tooth tables, the same operations and
+/// bits as ToothLoadPattern::load_n, then the totals.
+ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern);
+
 /// The pattern at `point`. Validates the operating point and the options (throws InvalidInput
 /// naming the field) and throws NotConverged when eqs 20-22 do not converge.
 ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const OperatingPoint& point,
                                     const ContactOptions& options);
+
+/// The pattern a solved contact's teeth follow from (its members; sin and cos of alpha again),
+/// bit for bit the one tooth_contact() solved: what list_teeth() and the quarter sums of
+/// induced_moments() read, with or without the contact's tooth table.
+ToothLoadPattern tooth_load_pattern(const ToothContact& contact);
 
 /// Rejects a pattern whose tooth loads, summing to `sum_of_loads_n`, carry less than `minimum` of
 /// P_t: eq 22 is a fitted curve, and far below its range (light torque near the jam angle) eq 9
