@@ -49,14 +49,13 @@ BENCHMARK(BM_ToothContactAndInducedMomentsIntoOneContact);
 
 // A load case as batch, the service's load cases and Python's induced_moments_many need it: the
 // contact's summary (q, loads, zones at the edge, stress) and the moments, without the table of
-// N teeth (list_teeth() derives it on request).
+// N teeth (list_teeth() derives it on request): induced_moments(coupling, point, options, contact).
 void BM_ToothContactWithoutTeethAndInducedMoments(benchmark::State& state) {
   const gc::CouplingGeometry& coupling = upwind();
   const gc::ContactOptions options;
   for (auto _ : state) {
     gc::ToothContact contact;
-    gc::tooth_contact_without_teeth(coupling, kPoint, options, contact);
-    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, contact));
+    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, options, contact));
   }
 }
 BENCHMARK(BM_ToothContactWithoutTeethAndInducedMoments);
@@ -66,8 +65,7 @@ void BM_ToothContactWithoutTeethAndInducedMomentsIntoOneContact(benchmark::State
   const gc::ContactOptions options;
   gc::ToothContact contact;
   for (auto _ : state) {
-    gc::tooth_contact_without_teeth(coupling, kPoint, options, contact);
-    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, contact));
+    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, options, contact));
   }
 }
 BENCHMARK(BM_ToothContactWithoutTeethAndInducedMomentsIntoOneContact);

@@ -148,30 +148,45 @@ void set_members(const CouplingGeometry& coupling, const OperatingPoint& point,
   c.max_stress = tooth_stress(coupling, c.max_tooth_load_n, governing_length);
 }
 
-}  // namespace
-
-void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
-                   const ContactOptions& options, ToothContact& c) {
-  std::vector<ToothLoad> teeth = std::move(c.teeth);  // its storage is reused
-  c = ToothContact{};
-  const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  teeth.resize(static_cast<std::size_t>(coupling.teeth()));
-  const ListedTotals totals = fill_teeth(coupling, pattern, teeth.data());
-  c.teeth = std::move(teeth);
-  set_members(coupling, point, options, pattern, totals, c);
-}
-
-void tooth_contact_without_teeth(const CouplingGeometry& coupling, const OperatingPoint& point,
-                                 const ContactOptions& options, ToothContact& c) {
-  std::vector<ToothLoad> teeth = std::move(c.teeth);  // its storage is kept for list_teeth()
+// On a throw `c` holds no result: its members back to their defaults, the table's storage kept.
+void discard(ToothContact& c) {
+  std::vector<ToothLoad> teeth = std::move(c.teeth);
   teeth.clear();
   c = ToothContact{};
-  const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  ListedTotals totals;
-  totals.loads = tooth_load_totals(coupling, pattern);  // eq 9
-  totals.edge_loaded = zone_reaches_an_edge(coupling, pattern, totals.loads.max_load_n);
   c.teeth = std::move(teeth);
-  set_members(coupling, point, options, pattern, totals, c);
+}
+
+}  // namespace
+
+// set_members() writes every member but the table, so `c` is not first reset (a zeroed
+// temporary of its 200 bytes was a tenth of an evaluation without the table).
+void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
+                   const ContactOptions& options, ToothContact& c) {
+  try {
+    const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
+    c.teeth.resize(static_cast<std::size_t>(coupling.teeth()));
+    const ListedTotals totals = fill_teeth(coupling, pattern, c.teeth.data());
+    set_members(coupling, point, options, pattern, totals, c);
+  } catch (...) {
+    discard(c);
+    throw;
+  }
+}
+
+ToothLoadPattern tooth_contact_without_teeth(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                             const ContactOptions& options, ToothContact& c) {
+  c.teeth.clear();  // its storage is kept for list_teeth()
+  try {
+    const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
+    ListedTotals totals;
+    totals.loads = tooth_load_totals(coupling, pattern);  // eq 9
+    totals.edge_loaded = zone_reaches_an_edge(coupling, pattern, totals.loads.max_load_n);
+    set_members(coupling, point, options, pattern, totals, c);
+    return pattern;
+  } catch (...) {
+    discard(c);
+    throw;
+  }
 }
 
 void list_teeth(const CouplingGeometry& coupling, ToothContact& c) {

@@ -13,6 +13,7 @@
 #include "core/load_sharing.h"
 #include "core/operating_point.h"
 #include "core/stress.h"
+#include "core/tooth_load_pattern.h"
 
 namespace gc {
 
@@ -98,8 +99,9 @@ void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point
 /// F_i, C and R_F), so the count, the largest load, the sum of P_d, edge_loaded and the stress
 /// need no table: what a load case, a batch or induced_moments() reads, at a fraction of the
 /// cost of 7 numbers for each of N teeth. list_teeth() adds the table when an output needs it.
-void tooth_contact_without_teeth(const CouplingGeometry& coupling, const OperatingPoint& point,
-                                 const ContactOptions& options, ToothContact& contact);
+/// Returns the eq 9 pattern the teeth follow from, with zeta's sine and cosine (eqs 15, 37).
+ToothLoadPattern tooth_contact_without_teeth(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                             const ContactOptions& options, ToothContact& contact);
 
 /// Eqs 9 and 16-19 for every tooth of `contact`, solved for `coupling`: fills contact.teeth as
 /// tooth_contact() does (bit for bit), reusing its storage.

@@ -55,7 +55,9 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
   p.elastic_deformation_m = p.peak_tooth_load_n / stiffness;                         // eq 10
   p.offset_alpha_rad =
       offset_alpha_rad(p.load_sharing.q, n, options.continuous_quarter_sums);          // eq 13
-  p.max_contact_offset_m = coupling.crown_radius_m() * std::sin(point.misalignment_rad);  // eq 15
+  p.sin_misalignment = std::sin(point.misalignment_rad);  // one sincos with the cosine
+  p.cos_misalignment = std::cos(point.misalignment_rad);
+  p.max_contact_offset_m = coupling.crown_radius_m() * p.sin_misalignment;  // eq 15
   p.separation_ratio = p.max_separation_m / p.elastic_deformation_m;
   p.sin_alpha = std::sin(p.offset_alpha_rad);
   p.cos_alpha = std::cos(p.offset_alpha_rad);

@@ -37,6 +37,10 @@ struct ToothLoadPattern {
   double separation_ratio = 0.0;        ///< z_o / z_e of eq 9 [-]
   double sin_alpha = 0.0;
   double cos_alpha = 1.0;
+  /// sin and cos of the misalignment zeta, for eq 15 and eq 37. tooth_load_pattern(contact)
+  /// leaves them at 0 and 1: a contact does not hold zeta (induced_moments() sets them).
+  double sin_misalignment = 0.0;
+  double cos_misalignment = 1.0;
 
   /// sin and cos of theta_j = 2 pi j / N + alpha by the angle-sum rule on the coupling's tooth
   /// table, for one tooth and for the block of `count` teeth from `first`. The block forms
@@ -85,7 +89,8 @@ ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothL
 ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const OperatingPoint& point,
                                     const ContactOptions& options);
 
-/// The pattern a solved contact's teeth follow from (its members; sin and cos of alpha again),
+/// The pattern a solved contact's teeth follow from (its members; sin and cos of alpha again;
+/// not zeta's, see above),
 /// bit for bit the one tooth_contact() solved: what list_teeth() and the quarter sums of
 /// induced_moments() read, with or without the contact's tooth table.
 ToothLoadPattern tooth_load_pattern(const ToothContact& contact);
