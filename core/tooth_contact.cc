@@ -27,6 +27,7 @@ double contact_length_m(double crown_radius_m, double deformation_m) {
 struct ListedTotals {
   ToothLoadTotals loads;
   bool edge_loaded = false;
+  double governing_chord_m = 0.0;  ///< F_c of the most loaded tooth, eq 18 [m]
 };
 
 ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, ToothLoad* table) {
@@ -89,7 +90,7 @@ ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern
       }
     }
   }
-  return {{in_contact, max_tooth, max_load, sum_loads}, edge};
+  return {{in_contact, max_tooth, max_load, sum_loads}, edge, table[max_tooth].contact_length_m};
 }
 
 // Whether some loaded tooth's eq 19 zone reaches past a facewidth edge, without the table. Every
@@ -98,12 +99,11 @@ ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern
 // zone can, and no tooth is visited: the usual case. Otherwise each loaded tooth's zone is
 // computed as fill_teeth() does.
 bool zone_reaches_an_edge(const CouplingGeometry& coupling, const ToothLoadPattern& pattern,
-                          double max_load_n) {
+                          double widest_chord_m) {
   const double stiffness = coupling.mesh_stiffness_n_per_m();
   const double crown = coupling.crown_radius_m();
   const double half_face = 0.5 * coupling.facewidth_m();
-  const double widest = contact_length_m(crown, max_load_n / stiffness);
-  if ((pattern.max_contact_offset_m + 0.5 * widest) * (1.0 + 1e-9) < half_face) return false;
+  if ((pattern.max_contact_offset_m + 0.5 * widest_chord_m) * (1.0 + 1e-9) < half_face) return false;
   const int n = coupling.teeth();
   for (Eigen::Index first = 0; first < n; first += kToothBlock) {
     const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
@@ -142,10 +142,7 @@ void set_members(const CouplingGeometry& coupling, const OperatingPoint& point,
   require_load_carried(pattern, c.sum_tooth_loads_n, point, options.min_load_fraction);
   c.slices = options.slices;
   c.continuous_quarter_sums = options.continuous_quarter_sums;
-  // The most loaded tooth governs: eqs 17-18 for it alone (no tooth loaded: no stress).
-  const double governing_length = contact_length_m(
-      coupling.crown_radius_m(), c.max_tooth_load_n / coupling.mesh_stiffness_n_per_m());
-  c.max_stress = tooth_stress(coupling, c.max_tooth_load_n, governing_length);
+  c.max_stress = tooth_stress(coupling, c.max_tooth_load_n, totals.governing_chord_m);  // it governs
 }
 
 // On a throw `c` holds no result: its members back to their defaults, the table's storage kept.
@@ -180,7 +177,10 @@ ToothLoadPattern tooth_contact_without_teeth(const CouplingGeometry& coupling, c
     const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
     ListedTotals totals;
     totals.loads = tooth_load_totals(coupling, pattern);  // eq 9
-    totals.edge_loaded = zone_reaches_an_edge(coupling, pattern, totals.loads.max_load_n);
+    // Eqs 17-18 for the most loaded tooth alone (no tooth loaded: no chord).
+    totals.governing_chord_m = contact_length_m(
+        coupling.crown_radius_m(), totals.loads.max_load_n / coupling.mesh_stiffness_n_per_m());
+    totals.edge_loaded = zone_reaches_an_edge(coupling, pattern, totals.governing_chord_m);
     set_members(coupling, point, options, pattern, totals, c);
     return pattern;
   } catch (...) {

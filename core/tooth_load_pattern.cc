@@ -71,33 +71,21 @@ ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothL
   const double cos_alpha = pattern.cos_alpha, sin_alpha = pattern.sin_alpha;
   const double ratio = pattern.separation_ratio, peak = pattern.peak_tooth_load_n;
   ToothLoadTotals totals;
-  // A block of loads on the stack: the first loop runs in the vector units; the second gathers
-  // the loaded teeth and keeps the maximum, the third sums the gathered loads in tooth order (its
-  // bits; an unloaded tooth's +0 would change none), a chain of one addition per loaded tooth.
-  // No loop branches on a tooth: the loaded teeth form arcs whose ends a branch predictor misses
-  // at every evaluation. A tooth takes the maximum only from a smaller one, so the first of equal
-  // loads keeps it.
-  alignas(16) double load[kToothBlock];
-  alignas(16) double gathered[kToothBlock];
+  // One pass, no branch on a tooth: the loaded teeth form arcs whose ends a branch predictor
+  // misses when the point changes. The sum keeps tooth order (its bits; an unloaded tooth's +0
+  // changes none): a chain of one addition per tooth, which the rest of the pass runs beside.
+  // A tooth takes the maximum only from a smaller one, so the first of equal loads keeps it.
   int loaded = 0, max_tooth = 0;
   double max_load = 0.0, sum = 0.0;
-  for (int first = 0; first < n; first += kToothBlock) {
-    const int count = std::min(kToothBlock, n - first);
-    for (int i = 0; i < count; ++i) {
-      const double s = tooth_sin[first + i] * cos_alpha + tooth_cos[first + i] * sin_alpha;
-      const double share = 1.0 - ratio * s * s;
-      load[i] = peak * (share > 0.0 ? share : 0.0);  // a NaN share too: as load_n
-    }
-    int in_block = 0;
-    for (int i = 0; i < count; ++i) {
-      gathered[in_block] = load[i];
-      in_block += load[i] > 0.0;
-      const bool larger = load[i] > max_load;
-      max_load = larger ? load[i] : max_load;
-      max_tooth = larger ? first + i : max_tooth;
-    }
-    for (int k = 0; k < in_block; ++k) sum += gathered[k];
-    loaded += in_block;
+  for (int j = 0; j < n; ++j) {
+    const double s = tooth_sin[j] * cos_alpha + tooth_cos[j] * sin_alpha;
+    const double share = 1.0 - ratio * s * s;
+    const double load = peak * (share > 0.0 ? share : 0.0);  // a NaN share too: as load_n
+    loaded += load > 0.0;
+    sum += load;
+    const bool larger = load > max_load;
+    max_load = larger ? load : max_load;
+    max_tooth = larger ? j : max_tooth;
   }
   totals.loaded_teeth = loaded;
   totals.max_load_tooth = max_tooth;
