@@ -1,7 +1,7 @@
 // Google Benchmark of the core on the NREL upwind coupling (100 teeth): one tooth contact plus
 // induced moments at 1.5 MN·m, 0.4 deg, mu 0.1 (issue 40's target: 0.5 us), returned by value
-// and into a caller's ToothContact (what a loop over many points does: no allocation), the
-// contact alone, and building a CouplingGeometry (validation plus the jam angle, eqs 23-35).
+// and into a caller's ToothContact (what a loop over many points does: no allocation), with and
+// without the table of teeth, the contact alone, and building a CouplingGeometry (validation plus the jam angle, eqs 23-35).
 #include <cmath>
 #include <string>
 
@@ -46,6 +46,29 @@ void BM_ToothContactAndInducedMomentsIntoOneContact(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ToothContactAndInducedMomentsIntoOneContact);
+
+// A load case as batch, the service's load cases and Python's induced_moments_many need it: the
+// contact's summary (q, loads, zones at the edge, stress) and the moments, without the table of
+// N teeth (list_teeth() derives it on request): induced_moments(coupling, point, options, contact).
+void BM_ToothContactWithoutTeethAndInducedMoments(benchmark::State& state) {
+  const gc::CouplingGeometry& coupling = upwind();
+  const gc::ContactOptions options;
+  for (auto _ : state) {
+    gc::ToothContact contact;
+    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, options, contact));
+  }
+}
+BENCHMARK(BM_ToothContactWithoutTeethAndInducedMoments);
+
+void BM_ToothContactWithoutTeethAndInducedMomentsIntoOneContact(benchmark::State& state) {
+  const gc::CouplingGeometry& coupling = upwind();
+  const gc::ContactOptions options;
+  gc::ToothContact contact;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gc::induced_moments(coupling, kPoint, options, contact));
+  }
+}
+BENCHMARK(BM_ToothContactWithoutTeethAndInducedMomentsIntoOneContact);
 
 void BM_ToothContact(benchmark::State& state) {
   const gc::CouplingGeometry& coupling = upwind();

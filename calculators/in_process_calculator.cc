@@ -72,6 +72,22 @@ LoadCase InProcessCalculator::load_case(std::string_view coupling, const Operati
   return result;
 }
 
+std::vector<LoadCaseOutcome> InProcessCalculator::load_cases(const std::vector<LoadCaseInput>& cases,
+                                                             const ContactOptions& options) const {
+  std::vector<LoadCaseOutcome> out(cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    try {
+      const CouplingGeometry& g = geometry(cases[i].coupling);
+      LoadCase& result = out[i].result.emplace();
+      result.moments = gc::induced_moments(g, cases[i].point, options, result.contact);
+    } catch (...) {
+      out[i].result.reset();
+      out[i].error = std::current_exception();
+    }
+  }
+  return out;
+}
+
 JamAngleReport InProcessCalculator::jam_angle(std::string_view coupling) const {
   const CouplingGeometry& g = geometry(coupling);
   return {g.jam_angle(), g.crown_radius_m(), g.crown_radius_derived()};

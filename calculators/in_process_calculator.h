@@ -22,6 +22,10 @@ class InProcessCalculator final : public Calculator {
                              const ContactOptions& options) const override;
   LoadCase load_case(std::string_view coupling, const OperatingPoint& point,
                      const ContactOptions& options) const override;
+  /// Each case as gc::induced_moments(coupling, point, options, contact): the contact without
+  /// its table of teeth, which a batch does not keep (bit for bit load_case()'s members).
+  std::vector<LoadCaseOutcome> load_cases(const std::vector<LoadCaseInput>& cases,
+                                          const ContactOptions& options) const override;
   JamAngleReport jam_angle(std::string_view coupling) const override;
   RestoringTorque restoring_torque(std::string_view coupling) const override;
   FrictionEstimate estimate_friction(std::string_view coupling,

@@ -9,10 +9,18 @@
 
 namespace gc {
 
+namespace {
+
+// Eq 37's W_d / P_d from cos and sin of zeta.
+double axial_load_factor(double cos_misalignment, double sin_misalignment, double friction) {
+  return (friction * cos_misalignment + sin_misalignment) /
+         (cos_misalignment - friction * sin_misalignment);  // eq 37
+}
+
+}  // namespace
+
 double axial_load_factor(double misalignment_rad, double friction) {
-  const double c = std::cos(misalignment_rad);
-  const double s = std::sin(misalignment_rad);
-  return (friction * c + s) / (c - friction * s);  // eq 37
+  return axial_load_factor(std::cos(misalignment_rad), std::sin(misalignment_rad), friction);
 }
 
 double axial_tooth_load_n(double tooth_load_n, double misalignment_rad, double friction) {
@@ -28,7 +36,8 @@ double self_weight_moment_nm(const CouplingGeometry& coupling) {
 
 namespace {
 
-// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q);
+// Eqs 37-43 for a tooth load pattern (eq 13's alpha, eq 15's F_i, the load-sharing ratio q,
+// zeta's sine and cosine);
 // `load_of(j)` is P_d of tooth j (eq 9). `continuous`: ContactOptions'. A template, not a
 // std::function: it runs for every tooth summed of every evaluation.
 template <typename LoadOf>
@@ -36,7 +45,8 @@ QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint&
                          const ToothLoadPattern& pattern, bool continuous, const LoadOf& load_of) {
   const double q_n = pattern.load_sharing.q * coupling.teeth();
   const double radius = coupling.pitch_radius_m();
-  const double axial_factor = axial_load_factor(point.misalignment_rad, point.friction_coefficient);
+  const double axial_factor = axial_load_factor(pattern.cos_misalignment, pattern.sin_misalignment,
+                                                point.friction_coefficient);
   const double max_offset = pattern.max_contact_offset_m;  // R_F sin(zeta), eq 15
 
   // Eqs 42-43: the symmetric quarter j = 0 .. int(qN/4), four times.
@@ -73,17 +83,13 @@ QuarterSums quarter_sums(const CouplingGeometry& coupling, const OperatingPoint&
 
 }  // namespace
 
-InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
-                               const ToothContact& contact) {
-  ToothLoadPattern pattern;  // what the quarter sums read of it
-  pattern.load_sharing = contact.load_sharing;
-  pattern.offset_alpha_rad = contact.offset_alpha_rad;
-  pattern.max_contact_offset_m = contact.max_contact_offset_m;
-  pattern.sin_alpha = std::sin(contact.offset_alpha_rad);
-  pattern.cos_alpha = std::cos(contact.offset_alpha_rad);
-  const QuarterSums sums =
-      quarter_sums(coupling, point, pattern, contact.continuous_quarter_sums,
-                   [&contact](int j) { return contact.teeth[static_cast<std::size_t>(j)].load_n; });
+namespace {
+
+// Eqs 36-48 from the pattern of a solved contact.
+InducedMoments moments_of(const CouplingGeometry& coupling, const OperatingPoint& point,
+                          const ToothLoadPattern& pattern, bool continuous) {
+  const QuarterSums sums = quarter_sums(coupling, point, pattern, continuous,
+                                        [&](int j) { return pattern.load_n(coupling, j); });
   InducedMoments m;
   m.teeth_summed = sums.teeth_summed;
   m.moment_y_dd_nm = sums.moment_y_dd_nm;  // eq 43
@@ -101,21 +107,35 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
   return m;
 }
 
+}  // namespace
+
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ToothContact& contact) {
+  // P_d of eq 9 from the contact's members, as its table holds them: a contact solved without
+  // listing its teeth (tooth_contact_without_teeth) gives the same moments.
+  ToothLoadPattern pattern = tooth_load_pattern(contact);
+  pattern.sin_misalignment = std::sin(point.misalignment_rad);
+  pattern.cos_misalignment = std::cos(point.misalignment_rad);
+  return moments_of(coupling, point, pattern, contact.continuous_quarter_sums);
+}
+
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ContactOptions& options, ToothContact& contact) {
+  const ToothLoadPattern pattern = tooth_contact_without_teeth(coupling, point, options, contact);
+  return moments_of(coupling, point, pattern, contact.continuous_quarter_sums);
+}
+
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ContactOptions& options) {
-  return induced_moments(coupling, point, tooth_contact(coupling, point, options));
+  ToothContact contact;
+  return induced_moments(coupling, point, options, contact);
 }
 
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options) {
   const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  const int n = coupling.teeth();
-  double carried = 0.0;  // in tooth order, as tooth_contact() sums them: the same refusals
-  for (Eigen::Index first = 0; first < n; first += kToothBlock) {
-    const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
-    const ToothBlock load = pattern.load_n(pattern.sin_theta(coupling, first, count));  // eq 9
-    for (Eigen::Index i = 0; i < count; ++i) carried += load[i];
-  }
+  // In tooth order, as tooth_contact() sums them: the same refusals.
+  const double carried = tooth_load_totals(coupling, pattern).sum_of_loads_n;
   require_load_carried(pattern, carried, point, options.min_load_fraction);
   return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
                       [&](int j) { return pattern.load_n(coupling, j); });

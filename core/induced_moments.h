@@ -47,11 +47,20 @@ struct QuarterSums {
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options);
 
-/// Eqs 36-48 from a solved tooth contact at `point` (point.friction_coefficient is mu).
+/// Eqs 36-48 from a solved tooth contact at `point` (point.friction_coefficient is mu). Reads
+/// the contact's members, not its table of teeth: a contact from tooth_contact_without_teeth()
+/// gives the same moments, bit for bit.
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ToothContact& contact);
 
-/// Tooth contact (eqs 5-22) then eqs 36-48.
+/// A load case: tooth_contact_without_teeth() into `contact`, then eqs 36-48 from it, bit for
+/// bit the two calls, sharing what both read (eq 13's alpha, zeta's sine and cosine). What a
+/// batch, the service's load cases and Python's induced_moments_many need; with a reused
+/// `contact` it allocates nothing. Throws as tooth_contact().
+InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
+                               const ContactOptions& options, ToothContact& contact);
+
+/// Tooth contact (eqs 5-22, without listing the teeth) then eqs 36-48.
 InducedMoments induced_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                const ContactOptions& options = {});
 

@@ -20,7 +20,11 @@ void validate_operating_point(const CouplingGeometry& coupling, const OperatingP
   require_finite("operating_point.direction_rad", point.direction_rad);
   require_in_range("operating_point.friction_coefficient", point.friction_coefficient, 0.0, 1.0);
   require_below_jam_angle(coupling, "operating_point.misalignment_rad", point.misalignment_rad);
-  if (point.friction_coefficient * std::tan(point.misalignment_rad) >= 1.0) {
+  // tan(zeta) < 1.56 zeta up to 1 rad, so below that and with mu zeta < 1/4 the bound holds
+  // without a tangent (every coupling's jam angle is a few degrees).
+  const bool near_the_bound =
+      point.misalignment_rad > 1.0 || point.friction_coefficient * point.misalignment_rad >= 0.25;
+  if (near_the_bound && point.friction_coefficient * std::tan(point.misalignment_rad) >= 1.0) {
     throw InvalidInput("operating_point.friction_coefficient", point.friction_coefficient,
                        "mu tan(zeta) < 1 (eq 37)");
   }

@@ -13,6 +13,7 @@
 #include "core/load_sharing.h"
 #include "core/operating_point.h"
 #include "core/stress.h"
+#include "core/tooth_load_pattern.h"
 
 namespace gc {
 
@@ -59,7 +60,7 @@ struct ToothContact {
   double offset_alpha_rad = 0.0;        ///< alpha, eq 13 (residue as an angle) [rad]
   double max_contact_offset_m = 0.0;    ///< F_i = R_F sin(zeta), eq 15 [m]
   double z_axis_angle_rad = 0.0;        ///< phi + beta: z'' from z' [rad]
-  std::vector<ToothLoad> teeth;         ///< j = 0 .. N-1
+  std::vector<ToothLoad> teeth;         ///< j = 0 .. N-1; empty from tooth_contact_without_teeth()
   int teeth_in_contact = 0;             ///< count of P_d > 0
   int max_load_tooth = 0;               ///< j of the largest P_d
   double max_tooth_load_n = 0.0;        ///< largest P_d [N]
@@ -73,8 +74,10 @@ struct ToothContact {
   Eigen::VectorXd slice_weights() const;
 
   /// Eq 14: load on every slice, P_ds = P_d cos(pi l / N_s): row j, column l + N_s/2 [N].
+  /// From the table of teeth (no rows for a contact without it: list_teeth() adds it).
   Eigen::MatrixXd slice_loads() const;
   /// Facewidth position of slice l of tooth j: F_d + (l / N_s) F_c, from the flank centre [m].
+  /// From the table of teeth, as slice_loads().
   double slice_position_m(int tooth, int slice) const;
 };
 
@@ -89,5 +92,19 @@ ToothContact tooth_contact(const CouplingGeometry& coupling, const OperatingPoin
 /// overwritten; on a throw `contact` holds no result.
 void tooth_contact(const CouplingGeometry& coupling, const OperatingPoint& point,
                    const ContactOptions& options, ToothContact& contact);
+
+/// Eqs 5-22 without listing the teeth: every member of ToothContact but `teeth`, which is left
+/// empty (its storage kept), bit for bit tooth_contact()'s, with the same errors. Every tooth
+/// follows in closed form from the members (eq 9 from P_i, z_o / z_e and alpha; eqs 16-19 from
+/// F_i, C and R_F), so the count, the largest load, the sum of P_d, edge_loaded and the stress
+/// need no table: what a load case, a batch or induced_moments() reads, at a fraction of the
+/// cost of 7 numbers for each of N teeth. list_teeth() adds the table when an output needs it.
+/// Returns the eq 9 pattern the teeth follow from, with zeta's sine and cosine (eqs 15, 37).
+ToothLoadPattern tooth_contact_without_teeth(const CouplingGeometry& coupling, const OperatingPoint& point,
+                                             const ContactOptions& options, ToothContact& contact);
+
+/// Eqs 9 and 16-19 for every tooth of `contact`, solved for `coupling`: fills contact.teeth as
+/// tooth_contact() does (bit for bit), reusing its storage.
+void list_teeth(const CouplingGeometry& coupling, ToothContact& contact);
 
 }  // namespace gc

@@ -55,7 +55,55 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
   p.elastic_deformation_m = p.peak_tooth_load_n / stiffness;                         // eq 10
   p.offset_alpha_rad =
       offset_alpha_rad(p.load_sharing.q, n, options.continuous_quarter_sums);          // eq 13
-  p.max_contact_offset_m = coupling.crown_radius_m() * std::sin(point.misalignment_rad);  // eq 15
+  p.sin_misalignment = std::sin(point.misalignment_rad);  // one sincos with the cosine
+  p.cos_misalignment = std::cos(point.misalignment_rad);
+  p.max_contact_offset_m = coupling.crown_radius_m() * p.sin_misalignment;  // eq 15
+  p.separation_ratio = p.max_separation_m / p.elastic_deformation_m;
+  p.sin_alpha = std::sin(p.offset_alpha_rad);
+  p.cos_alpha = std::cos(p.offset_alpha_rad);
+  return p;
+}
+
+ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
+  const int n = coupling.teeth();
+  const double* const tooth_sin = coupling.tooth_sin().data();
+  const double* const tooth_cos = coupling.tooth_cos().data();
+  const double cos_alpha = pattern.cos_alpha, sin_alpha = pattern.sin_alpha;
+  const double ratio = pattern.separation_ratio, peak = pattern.peak_tooth_load_n;
+  ToothLoadTotals totals;
+  // One pass, no branch on a tooth: the loaded teeth form arcs whose ends a branch predictor
+  // misses when the point changes. The sum keeps tooth order (its bits; an unloaded tooth's +0
+  // changes none): a chain of one addition per tooth, which the rest of the pass runs beside.
+  // A tooth takes the maximum only from a smaller one, so the first of equal loads keeps it.
+  int loaded = 0, max_tooth = 0;
+  double max_load = 0.0, sum = 0.0;
+  for (int j = 0; j < n; ++j) {
+    const double s = tooth_sin[j] * cos_alpha + tooth_cos[j] * sin_alpha;
+    const double share = 1.0 - ratio * s * s;
+    const double load = peak * (share > 0.0 ? share : 0.0);  // a NaN share too: as load_n
+    loaded += load > 0.0;
+    sum += load;
+    const bool larger = load > max_load;
+    max_load = larger ? load : max_load;
+    max_tooth = larger ? j : max_tooth;
+  }
+  totals.loaded_teeth = loaded;
+  totals.max_load_tooth = max_tooth;
+  totals.max_load_n = max_load;
+  totals.sum_of_loads_n = sum;
+  return totals;
+}
+
+ToothLoadPattern tooth_load_pattern(const ToothContact& contact) {
+  ToothLoadPattern p;
+  p.total_normal_load_n = contact.total_normal_load_n;
+  p.mean_tooth_load_n = contact.mean_tooth_load_n;
+  p.max_separation_m = contact.max_separation_m;
+  p.load_sharing = contact.load_sharing;
+  p.peak_tooth_load_n = contact.peak_tooth_load_n;
+  p.elastic_deformation_m = contact.elastic_deformation_m;
+  p.offset_alpha_rad = contact.offset_alpha_rad;
+  p.max_contact_offset_m = contact.max_contact_offset_m;
   p.separation_ratio = p.max_separation_m / p.elastic_deformation_m;
   p.sin_alpha = std::sin(p.offset_alpha_rad);
   p.cos_alpha = std::cos(p.offset_alpha_rad);

@@ -17,6 +17,7 @@
 namespace gc {
 
 struct ContactOptions;
+struct ToothContact;
 
 /// Teeth evaluated at once as arrays: a block lives on the stack (an evaluation allocates
 /// nothing) and is long enough for the vector units, short enough to stay in L1 beside the
@@ -36,6 +37,10 @@ struct ToothLoadPattern {
   double separation_ratio = 0.0;        ///< z_o / z_e of eq 9 [-]
   double sin_alpha = 0.0;
   double cos_alpha = 1.0;
+  /// sin and cos of the misalignment zeta, for eq 15 and eq 37. tooth_load_pattern(contact)
+  /// leaves them at 0 and 1: a contact does not hold zeta (induced_moments() sets them).
+  double sin_misalignment = 0.0;
+  double cos_misalignment = 1.0;
 
   /// sin and cos of theta_j = 2 pi j / N + alpha by the angle-sum rule on the coupling's tooth
   /// table, for one tooth and for the block of `count` teeth from `first`. The block forms
@@ -67,10 +72,28 @@ struct ToothLoadPattern {
   }
 };
 
+/// Eq 9 summed over the teeth: what tooth_contact() reports of the loads without listing them.
+struct ToothLoadTotals {
+  int loaded_teeth = 0;        ///< count of P_d > 0
+  int max_load_tooth = 0;      ///< j of the largest P_d, the first if several (0 if none)
+  double max_load_n = 0.0;     ///< largest P_d [N]
+  double sum_of_loads_n = 0.0; ///< sum of P_d in tooth order [N]
+};
+
+/// Eq 9 for every tooth of `coupling` in one pass over its tooth tables, the same operations and
+/// bits as ToothLoadPattern::load_n, then the totals.
+ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern);
+
 /// The pattern at `point`. Validates the operating point and the options (throws InvalidInput
 /// naming the field) and throws NotConverged when eqs 20-22 do not converge.
 ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const OperatingPoint& point,
                                     const ContactOptions& options);
+
+/// The pattern a solved contact's teeth follow from (its members; sin and cos of alpha again;
+/// not zeta's, see above),
+/// bit for bit the one tooth_contact() solved: what list_teeth() and the quarter sums of
+/// induced_moments() read, with or without the contact's tooth table.
+ToothLoadPattern tooth_load_pattern(const ToothContact& contact);
 
 /// Rejects a pattern whose tooth loads, summing to `sum_of_loads_n`, carry less than `minimum` of
 /// P_t: eq 22 is a fitted curve, and far below its range (light torque near the jam angle) eq 9

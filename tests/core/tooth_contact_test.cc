@@ -3,7 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <string>
+#include <tuple>
+#include <vector>
+
 #include "core/coupling_geometry.h"
+#include "core/induced_moments.h"
 #include "core/model_error.h"
 #include "tests/core/nrel_couplings.h"
 
@@ -168,6 +174,94 @@ TEST(ToothContact, SliceLoadsFollowEq14) {
   EXPECT_NEAR(slices(0, 5), c.teeth[0].load_n * std::cos(M_PI * -5 / 20), 1e-9);
   EXPECT_NEAR(c.slice_position_m(0, 10), c.teeth[0].zone_end_m, 1e-12);
   EXPECT_NEAR(c.slice_position_m(0, -10), c.teeth[0].zone_begin_m, 1e-12);
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_same_contact(const ToothContact& a, const ToothContact& b, const std::string& at) {
+  for (const auto& [name, x, y] : {
+           std::tuple{"q", a.load_sharing.q, b.load_sharing.q},
+           std::tuple{"x", a.load_sharing.ze_over_zo, b.load_sharing.ze_over_zo},
+           std::tuple{"P_t", a.total_normal_load_n, b.total_normal_load_n},
+           std::tuple{"P_t'", a.mean_tooth_load_n, b.mean_tooth_load_n},
+           std::tuple{"P_i", a.peak_tooth_load_n, b.peak_tooth_load_n},
+           std::tuple{"z_e", a.elastic_deformation_m, b.elastic_deformation_m},
+           std::tuple{"z_o", a.max_separation_m, b.max_separation_m},
+           std::tuple{"alpha", a.offset_alpha_rad, b.offset_alpha_rad},
+           std::tuple{"F_i", a.max_contact_offset_m, b.max_contact_offset_m},
+           std::tuple{"z''", a.z_axis_angle_rad, b.z_axis_angle_rad},
+           std::tuple{"max P_d", a.max_tooth_load_n, b.max_tooth_load_n},
+           std::tuple{"sum P_d", a.sum_tooth_loads_n, b.sum_tooth_loads_n},
+           std::tuple{"contact stress", a.max_stress.contact_stress_pa, b.max_stress.contact_stress_pa},
+           std::tuple{"half width", a.max_stress.contact_half_width_m, b.max_stress.contact_half_width_m},
+           std::tuple{"bending stress", a.max_stress.bending_stress_pa, b.max_stress.bending_stress_pa},
+           std::tuple{"S_H", a.max_stress.contact_safety_factor, b.max_stress.contact_safety_factor},
+           std::tuple{"S_F", a.max_stress.bending_safety_factor, b.max_stress.bending_safety_factor}}) {
+    EXPECT_TRUE(same_bits(x, y)) << name << " " << x << " " << y << at;
+  }
+  EXPECT_EQ(a.load_sharing.iterations, b.load_sharing.iterations) << at;
+  EXPECT_EQ(a.teeth_in_contact, b.teeth_in_contact) << at;
+  EXPECT_EQ(a.max_load_tooth, b.max_load_tooth) << at;
+  EXPECT_EQ(a.edge_loaded, b.edge_loaded) << at;
+  EXPECT_EQ(a.slices, b.slices) << at;
+  EXPECT_EQ(a.continuous_quarter_sums, b.continuous_quarter_sums) << at;
+}
+
+// tooth_contact_without_teeth() reports the counts, the largest load, the sum, edge_loaded and
+// the stress from closed forms without the table; list_teeth() then derives the table. Both must
+// be tooth_contact()'s to the bit: over both couplings, light torque to heavy, aligned to 99.9 %
+// of the jam angle, a spacing error and the continuous variant, and finely across the downwind
+// coupling's first edge-loaded angle (about 88 % of its jam angle at 1.5 MN·m), where
+// edge_loaded leaves its shortcut and visits the teeth.
+TEST(ToothContact, WithoutTeethThenListTeethIsBitForBitTheFullContact) {
+  ContactOptions permissive;
+  permissive.min_load_fraction = 0.0;
+  ContactOptions spaced;
+  spaced.spacing_error_m = 2e-5;
+  spaced.continuous_quarter_sums = true;
+  std::vector<double> fractions = {0.0, 0.01, 0.2, 0.5, 0.8, 0.95, 0.999};
+  for (double f = 0.86; f < 0.90; f += 0.0005) fractions.push_back(f);
+  ToothContact reused;  // its storage kept across points, as a batch keeps it
+  int edge_loaded = 0;
+  for (const CouplingGeometry& coupling : {CouplingGeometry(nrel_upwind()), CouplingGeometry(testing::nrel_downwind())}) {
+    for (const ContactOptions& options : {ContactOptions{}, permissive, spaced}) {
+      for (double torque : {1e3, 2e5, 1.5e6, 5e6}) {
+        for (double fraction : fractions) {
+          const OperatingPoint point{torque, fraction * coupling.jam_angle().angle_rad, 0.7, 0.1};
+          const std::string at = " at " + coupling.name() + ", " + std::to_string(torque) + " N·m, " +
+                                 std::to_string(fraction) + " of the jam angle";
+          ToothContact full;
+          try {
+            full = tooth_contact(coupling, point, options);
+          } catch (const InvalidInput&) {  // light torque near the jam angle: the same refusal
+            EXPECT_THROW(tooth_contact_without_teeth(coupling, point, options, reused), InvalidInput) << at;
+            continue;
+          }
+          tooth_contact_without_teeth(coupling, point, options, reused);
+          EXPECT_TRUE(reused.teeth.empty()) << at;
+          expect_same_contact(full, reused, at);
+          edge_loaded += reused.edge_loaded;
+          const InducedMoments from_full = induced_moments(coupling, point, full);
+          const InducedMoments from_members = induced_moments(coupling, point, reused);  // no table
+          EXPECT_TRUE(same_bits(from_full.moment_y_nm, from_members.moment_y_nm) &&
+                      same_bits(from_full.moment_z_nm, from_members.moment_z_nm)) << at;
+          list_teeth(coupling, reused);
+          ASSERT_EQ(reused.teeth.size(), full.teeth.size()) << at;
+          for (std::size_t j = 0; j < full.teeth.size(); ++j) {
+            const ToothLoad& a = full.teeth[j];
+            const ToothLoad& b = reused.teeth[j];
+            EXPECT_TRUE(same_bits(a.angle_rad, b.angle_rad) && same_bits(a.load_n, b.load_n) &&
+                        same_bits(a.contact_offset_m, b.contact_offset_m) &&
+                        same_bits(a.deformation_m, b.deformation_m) &&
+                        same_bits(a.contact_length_m, b.contact_length_m) &&
+                        same_bits(a.zone_begin_m, b.zone_begin_m) && same_bits(a.zone_end_m, b.zone_end_m))
+                << "tooth " << j << at;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(edge_loaded, 20);  // the sweep reached the teeth-visiting branch
 }
 
 TEST(ToothContact, DirectionRotatesOnlyTheFrame) {
