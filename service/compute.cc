@@ -43,8 +43,11 @@ protocol::ContactAndMoments compute_load_case(const CouplingGeometry& coupling,
                                               const OperatingPoint& point,
                                               const ContactOptions& options,
                                               const CancelPredicate& cancelled) {
-  const ToothContact contact = tooth_contact(coupling, point, cancellable(options, cancelled));
-  return {protocol::summary_of(contact), induced_moments(coupling, point, contact)};
+  // The summary reads the contact's members, not its table of teeth: the load case without it
+  // (core/induced_moments.h), bit for bit the two single calls.
+  ToothContact contact;
+  const InducedMoments moments = induced_moments(coupling, point, cancellable(options, cancelled), contact);
+  return {protocol::summary_of(contact), moments};
 }
 
 }  // namespace gc::service

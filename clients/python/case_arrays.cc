@@ -288,8 +288,9 @@ CaseTableObject induced_moments_many(const CouplingArgument& coupling, const Arr
   return run_cases(load_case_columns(), in, threads, failed_cases_argument(errors),
                    [&](std::size_t i) {
                      const OperatingPoint point{in(0, i), in(1, i), in(2, i), in(3, i)};
-                     LoadCase result{gc::tooth_contact(*c->geometry, point, options), {}};
-                     result.moments = gc::induced_moments(*c->geometry, point, result.contact);
+                     // The load case without the table of teeth, which its columns do not read.
+                     LoadCase result;
+                     result.moments = gc::induced_moments(*c->geometry, point, options, result.contact);
                      return result;
                    });
 }
