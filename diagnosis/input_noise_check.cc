@@ -143,23 +143,35 @@ InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const Recor
   return best;
 }
 
+std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::span<const RecordedSample> observations,
+                                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                                               const ParallelFor& parallel) {
+  ReadBackInputs out;
+  out.shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
+  if (out.shrinks.none()) return std::nullopt;
+  out.recording = with_shrunk_inputs(observations, rows, out.shrinks);
+  ModelResiduals r = model_residuals(model, out.recording, search, parallel);
+  if (!r.failed_rows.empty()) return std::nullopt;
+  out.residual = std::move(r.residual);
+  return out;
+}
+
 std::optional<InputShrinks> demote_what_noisy_inputs_explain(
     std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
     std::span<const std::size_t> rows, std::span<const std::size_t> search, const Folds& folds,
     const ParallelFor& parallel, const CrossValidationSettings& settings, double least_t,
     const std::function<bool(const CandidateScore&)>& claimable,
     const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for) {
-  // An effect that times the inputs has its own nuisance, the centred average above: a read-back
-  // over a window is itself an average of the inputs in time, and takes a lag's gain in its stead.
-  const auto tested = [&](const CandidateScore& c) {
-    return c.fit && c.fit->effect && !c.fit->effect->times_inputs() && claimable(c);
-  };
+  // Timing effects too: the centred window above reaches 5 s, and a moment_delay averaging over
+  // revolutions of a slow shaft (1.8 revolutions at 3.7 Hz sampling) reached beyond it on white
+  // probe noise. A real lag keeps its shift over the read-back inputs (a DAQ skew of 0.3 s, a
+  // demodulator's trailing revolution).
+  const auto tested = [&](const CandidateScore& c) { return c.fit && c.fit->effect && claimable(c); };
   if (std::none_of(ranking.begin(), ranking.end(), tested)) return std::nullopt;
-  const InputShrinks shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
-  if (shrinks.none()) return std::nullopt;
-  const std::vector<RecordedSample> shrunk = with_shrunk_inputs(observations, rows, shrinks);
-  const ModelResiduals nuisance = model_residuals(model, shrunk, search, parallel);
-  if (!nuisance.failed_rows.empty()) return std::nullopt;
+  const std::optional<ReadBackInputs> read_back = read_back_inputs(model, observations, rows, search, parallel);
+  if (!read_back) return std::nullopt;
+  const InputShrinks& shrinks = read_back->shrinks;
+  const std::vector<RecordedSample>& shrunk = read_back->recording;
   for (CandidateScore& c : ranking) {
     if (!tested(c)) continue;
     const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect);
@@ -168,13 +180,13 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
     // on clean inputs keeps its whole gain over the read-back model, which may mimic a share of it
     // (a smoothed sweep bends as an offset does); a fit to the inputs' noise has none on either.
     // The test the claim met against the model (CandidateScore::against_base), on the same blocks.
-    PairedBlockTest t = paired_block_test(nuisance.residual, c.held_out_residual, folds.block_of, folds.blocks);
+    PairedBlockTest t = paired_block_test(read_back->residual, c.held_out_residual, folds.block_of, folds.blocks);
     if (t.t >= least_t) continue;
     const std::optional<Eigen::MatrixX2d> held_out =
         held_out_on(model, c, *registration, shrunk, search, folds, parallel, settings.fold_iterations);
     if (held_out) {
-      const PairedBlockTest read_back = paired_block_test(nuisance.residual, *held_out, folds.block_of, folds.blocks);
-      if (read_back.t > t.t) t = read_back;
+      const PairedBlockTest refitted = paired_block_test(read_back->residual, *held_out, folds.block_of, folds.blocks);
+      if (refitted.t > t.t) t = refitted;
     }
     if (t.t >= least_t) continue;
     std::ostringstream why;

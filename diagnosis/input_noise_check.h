@@ -49,8 +49,20 @@ InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const Recor
                                std::span<const std::size_t> rows, std::span<const std::size_t> search,
                                const ParallelFor& parallel);
 
-/// Errors in the inputs, for every effect that does not time them (those meet the centred
-/// average above): marks failed (CandidateScore::failure) each of `ranking`'s effects for which
+/// The recording with its inputs read back by fit_input_shrinks, and `model`'s residual on
+/// `search` of it: the model a claim must beat when the inputs are noisy. nullopt when no shrink
+/// lowers the mean square, or the model cannot predict a row of it.
+struct ReadBackInputs {
+  InputShrinks shrinks;
+  std::vector<RecordedSample> recording;
+  Eigen::MatrixX2d residual;  ///< measured minus predicted, one row per search row [N·m]
+};
+std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::span<const RecordedSample> observations,
+                                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                                               const ParallelFor& parallel);
+
+/// Errors in the inputs, for every effect (timing ones after the centred average above): marks
+/// failed (CandidateScore::failure) each of `ranking`'s effects for which
 /// `claimable` holds and that does not beat `model` fed the inputs
 /// read back by fit_input_shrinks by the paired t of `least_t` it met against `model` itself
 /// (CandidateScore::against_base, on the same blocks), either

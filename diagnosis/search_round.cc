@@ -237,6 +237,16 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     round.unstructured_excess = !held_signature || !claimable(*held_signature, base_ms, noise_ms, settings) ||
                                 !signature_on_fifths ||
                                 !carries_to_whole_fifths(base, signature_on_fifths->held_out_residual, fifths);
+    if (!round.unstructured_excess) {
+      // Noisy input sensors put structure in the inputs too (errors in the variables): it must pay
+      // beside the model fed its inputs read back from their noise, as an effect must.
+      if (const std::optional<ReadBackInputs> read_back = read_back_inputs(model, observations, rows, search, parallel)) {
+        const std::optional<CandidateScore> beside =
+            signature_held_out(observations, search, read_back->residual, folds, round.signature);
+        round.unstructured_excess =
+            !beside || !claimable(*beside, pooled_mean_square(read_back->residual), noise_ms, settings);
+      }
+    }
     if (round.unstructured_excess) {
       round.systematic = false;
       round.noise = estimate_noise(residual, true);
