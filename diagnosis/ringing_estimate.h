@@ -10,7 +10,10 @@
 // golden sections in f_n and zeta. The mode is offered only when it stands out of the noise: what
 // it explains, over the noise variance the rest leaves times the noise's variance inflation
 // (1 + phi) / (1 - phi), exceeds what the largest of the grid's chi-square(2) statistics reaches
-// once in a thousand in pure noise (the cycle period's rule, cycle_period.h).
+// once in a thousand in pure noise (the cycle period's rule, cycle_period.h), and when the grid finds
+// more in the residual than in each of 19 copies of it turned round in time against the load (a
+// ringing is locked to the load's changes; narrowband noise is not, and its spectral peak hides from
+// a lag-1 inflation).
 #pragma once
 
 #include <optional>
