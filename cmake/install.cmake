@@ -43,7 +43,7 @@ install(DIRECTORY ${PROJECT_BINARY_DIR}/idl/ DESTINATION ${gc_include_dir}/idl
   FILES_MATCHING PATTERN "*.pb.h" PATTERN CMakeFiles EXCLUDE)
 if(GC_BUILD_SERVICE)
   # What client/client.h includes, and no more: no Cyclone header, nothing idlc wrote.
-  install(FILES protocol/batch.h protocol/calculation.h protocol/calculation_types.h protocol/dds_error.h
+  install(FILES protocol/batch_types.h protocol/calculation.h protocol/calculation_types.h protocol/dds_error.h
                 protocol/jam_angle_result.h protocol/requests.h
     DESTINATION ${gc_include_dir}/protocol)
   install(FILES client/client.h client/client_error.h

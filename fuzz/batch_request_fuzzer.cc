@@ -23,7 +23,7 @@
 
 #include "fuzz/fuzz_checks.h"
 #include "fuzz/wire_bytes.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/calculation_traits.h"
 #include "protocol/samples.h"
 #include "protocol/wire_requests.h"

@@ -13,7 +13,7 @@ enum class Calculation {
   kInducedMoments,
   kRestoringTorque,
   kFrictionEstimate,
-  kBatch,  ///< many cases of one of the others in one request (protocol/batch.h, issue 40)
+  kBatch,  ///< many cases of one of the others in one request (protocol/batch_types.h, issue 40)
 };
 
 /// How many calculations (request/reply topic pairs) there are.

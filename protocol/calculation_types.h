@@ -6,7 +6,7 @@
 #include "core/induced_moments.h"
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/calculation.h"
 #include "protocol/jam_angle_result.h"
 #include "protocol/requests.h"

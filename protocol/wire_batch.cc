@@ -1,4 +1,4 @@
-// Batches between core value types (protocol/batch.h) and the IDL's C types.
+// Batches between core value types (protocol/batch_types.h) and the IDL's C types.
 #include <cstring>
 
 #include <fmt/format.h>

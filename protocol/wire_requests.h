@@ -3,7 +3,7 @@
 #pragma once
 
 #include "gearcoupling.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/requests.h"
 
 namespace gc::protocol {

@@ -8,7 +8,7 @@
 #include "core/restoring_torque.h"
 #include "core/tooth_contact.h"
 #include "gearcoupling.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/jam_angle_result.h"
 
 namespace gc::protocol {

@@ -1,4 +1,4 @@
-// A batch request (protocol/batch.h): every case answered with what a single request of it gets,
+// A batch request (protocol/batch_types.h): every case answered with what a single request of it gets,
 // from the same core calls (compute.h) and the same error classification (reply_error_from), so
 // a case's result equals the single request's bit for bit and its error names the same field.
 #pragma once
@@ -6,7 +6,7 @@
 #include <exception>
 #include <functional>
 
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "service/catalogue.h"
 #include "service/compute.h"
 

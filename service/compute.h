@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "core/coupling_geometry.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/jam_angle_result.h"
 #include "service/catalogue.h"
 #include "protocol/requests.h"

@@ -11,7 +11,7 @@
 
 #include "core/load_sharing.h"
 #include "core/tooth_contact.h"
-#include "protocol/batch.h"
+#include "protocol/batch_types.h"
 #include "protocol/requests.h"
 #include "service/catalogue.h"
 
