@@ -113,7 +113,8 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
 /// of the variation about the levels, by the surrogates, and a level it moves, by level_p_value): (1 + surrogates
 /// explained at least as well) / (1 + surrogates drawn). Enough surrogates are drawn for a p-value
 /// of half `level`, fewer once the p-value is sure to be above it (Besag and Clifford, 1991), or
-/// once the first 199, none explained as well, put Cantelli's bound on it below half the level.
+/// once the first 199, none explained as well, put a bound on its tail below half the level
+/// (Cantelli's, or ten times the Beta of their moments).
 ///
 /// `family_size`: how many candidates the search tried (at least the designs): the designs tested
 /// are those that passed the claim rule's other tests on the same residual, so the one that fits
