@@ -1,5 +1,6 @@
 #include "diagnosis/mains_pickup.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/effects/expression_terms.h"
@@ -14,6 +15,33 @@ double aliased(double f, double fs) {
   if (!(fs > 0.0) || !std::isfinite(fs)) return f;
   const double folded = std::fmod(f, fs);
   return folded > 0.5 * fs ? fs - folded : folded;
+}
+
+/// Whether a shaft or tooth-mesh order of a coupling of `teeth` turning at `speed_rpm` (orders 1-4,
+/// the mesh order and its sidebands N - 2..N + 2, twice the mesh) lies within `tolerance_hz` of
+/// `frequency_hz`, directly or aliased by `sample_rate_hz`.
+bool near_an_order(double frequency_hz, double speed_rpm, int teeth, double sample_rate_hz, double tolerance_hz) {
+  if (!(speed_rpm > 0.0)) return false;
+  std::vector<int> orders{1, 2, 3, 4};
+  if (teeth > 2) {
+    for (int k = teeth - 2; k <= teeth + 2; ++k) orders.push_back(k);
+    orders.push_back(2 * teeth);
+  }
+  for (const int order : orders) {
+    if (std::abs(aliased(order * speed_rpm / 60.0, sample_rate_hz) - frequency_hz) <= tolerance_hz) return true;
+  }
+  return false;
+}
+
+/// The median recorded speed on `rows` [rpm]; 0 when none is recorded.
+double median_speed_rpm(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows) {
+  std::vector<double> speeds;
+  for (const std::size_t r : rows) {
+    if (observations[r].input.speed_rpm) speeds.push_back(std::abs(*observations[r].input.speed_rpm));
+  }
+  if (speeds.empty()) return 0.0;
+  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() / 2), speeds.end());
+  return speeds[speeds.size() / 2];
 }
 
 }  // namespace
@@ -40,22 +68,26 @@ std::string mains_pickup_text(double cycle_hz, double mains_hz) {
 }
 
 std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
-                                  const std::vector<std::size_t>& rows) {
+                                  const std::vector<std::size_t>& rows, int teeth) {
   if (rows.size() < 2) return "";
   Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
   for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
   const double step = typical_time_step(t);
   const double duration = t(t.size() - 1) - t(0);
   if (!(step > 0.0) || !(duration > 0.0)) return "";
+  const double speed_rpm = median_speed_rpm(observations, rows);
   std::string text;
   std::erase_if(time_terms, [&](const std::string& name) {
     const ExpressionTerm* term = find_expression_term(name);
     if (!term || !(term->period_s > 0.0)) return false;
     const double f = 1.0 / term->period_s;
-    // Only mains that the rows resolve: aliased, 60 Hz at 50 Hz sampling lands at 10 Hz, where a
-    // 56-tooth mesh at 10.7 rpm also is.
     const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
-    if (mains && *mains >= 0.5 / step) return false;
+    // An aliased mains line where a shaft or mesh order also shows is left to the physics: 60 Hz
+    // at 50 Hz sampling lands at 10 Hz, where a 56-tooth mesh at 10.7 rpm also is. Elsewhere it is
+    // mains: 50 Hz sampled at 11 Hz was claimed as a cycle of 5.02 Hz in a zoo draw.
+    if (mains && *mains >= 0.5 / step && near_an_order(f, speed_rpm, teeth, 1.0 / step, 1.0 / duration + 0.005 * f)) {
+      return false;
+    }
     if (mains && text.empty()) text = mains_pickup_text(f, *mains);
     return mains.has_value();
   });
