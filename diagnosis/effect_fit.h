@@ -60,7 +60,7 @@ struct FitSettings {
   /// Starts from the data beside the generic ones (e.g. a skew by cross-correlation,
   /// delay_estimate.h), each for the effect whose parameters it names; the others at their defaults.
   std::vector<ParameterValues> hints;
-  int probe_points = 32;  ///< Halton points whose cost picks the starts
+  int probe_points = 8;  ///< Halton points whose cost picks the starts
   int starts = 2;        ///< Levenberg-Marquardt runs from the best probes
 };
 
