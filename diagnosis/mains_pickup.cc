@@ -17,31 +17,34 @@ double aliased(double f, double fs) {
   return folded > 0.5 * fs ? fs - folded : folded;
 }
 
-/// Whether a shaft or tooth-mesh order of a coupling of `teeth` turning at `speed_rpm` (orders 1-4,
-/// the mesh order and its sidebands N - 2..N + 2, twice the mesh) lies within `tolerance_hz` of
+/// The shaft's speeds on `rows` [rpm], each rounded to 0.1 rpm, without repeats; empty when none is
+/// recorded.
+std::vector<double> recorded_speeds_rpm(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows) {
+  std::vector<double> speeds;
+  for (const std::size_t r : rows) {
+    if (observations[r].input.speed_rpm) speeds.push_back(std::round(10.0 * std::abs(*observations[r].input.speed_rpm)) / 10.0);
+  }
+  std::sort(speeds.begin(), speeds.end());
+  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  return speeds;
+}
+
+/// Whether a shaft or tooth-mesh order of a coupling of `teeth` (orders 1-4, the mesh order and its
+/// sidebands N - 2..N + 2, twice the mesh) at one of `speeds_rpm` lies within `tolerance_hz` of
 /// `frequency_hz`, directly or aliased by `sample_rate_hz`.
-bool near_an_order(double frequency_hz, double speed_rpm, int teeth, double sample_rate_hz, double tolerance_hz) {
-  if (!(speed_rpm > 0.0)) return false;
+bool near_an_order(double frequency_hz, const std::vector<double>& speeds_rpm, int teeth, double sample_rate_hz,
+                   double tolerance_hz) {
   std::vector<int> orders{1, 2, 3, 4};
   if (teeth > 2) {
     for (int k = teeth - 2; k <= teeth + 2; ++k) orders.push_back(k);
     orders.push_back(2 * teeth);
   }
-  for (const int order : orders) {
-    if (std::abs(aliased(order * speed_rpm / 60.0, sample_rate_hz) - frequency_hz) <= tolerance_hz) return true;
+  for (const double rpm : speeds_rpm) {
+    for (const int order : orders) {
+      if (std::abs(aliased(order * rpm / 60.0, sample_rate_hz) - frequency_hz) <= tolerance_hz) return true;
+    }
   }
   return false;
-}
-
-/// The median recorded speed on `rows` [rpm]; 0 when none is recorded.
-double median_speed_rpm(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows) {
-  std::vector<double> speeds;
-  for (const std::size_t r : rows) {
-    if (observations[r].input.speed_rpm) speeds.push_back(std::abs(*observations[r].input.speed_rpm));
-  }
-  if (speeds.empty()) return 0.0;
-  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() / 2), speeds.end());
-  return speeds[speeds.size() / 2];
 }
 
 }  // namespace
@@ -75,17 +78,18 @@ std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::spa
   const double step = typical_time_step(t);
   const double duration = t(t.size() - 1) - t(0);
   if (!(step > 0.0) || !(duration > 0.0)) return "";
-  const double speed_rpm = median_speed_rpm(observations, rows);
+  const std::vector<double> speeds_rpm = recorded_speeds_rpm(observations, rows);
   std::string text;
   std::erase_if(time_terms, [&](const std::string& name) {
     const ExpressionTerm* term = find_expression_term(name);
     if (!term || !(term->period_s > 0.0)) return false;
     const double f = 1.0 / term->period_s;
     const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
-    // An aliased mains line where a shaft or mesh order also shows is left to the physics: 60 Hz
-    // at 50 Hz sampling lands at 10 Hz, where a 56-tooth mesh at 10.7 rpm also is. Elsewhere it is
+    // An aliased mains line where a shaft or mesh order also shows, at any speed the shaft ran, is
+    // left to the physics: 60 Hz at 50 Hz sampling lands at 10 Hz, where a 56-tooth mesh at 10.7 rpm
+    // also is, on a staircase of 10-14 rpm. Elsewhere it is
     // mains: 50 Hz sampled at 11 Hz was claimed as a cycle of 5.02 Hz in a zoo draw.
-    if (mains && *mains >= 0.5 / step && near_an_order(f, speed_rpm, teeth, 1.0 / step, 1.0 / duration + 0.005 * f)) {
+    if (mains && *mains >= 0.5 / step && near_an_order(f, speeds_rpm, teeth, 1.0 / step, 1.0 / duration + 0.005 * f)) {
       return false;
     }
     if (mains && text.empty()) text = mains_pickup_text(f, *mains);

@@ -25,8 +25,8 @@ std::string mains_pickup_text(double cycle_hz, double mains_hz);
 
 /// Removes from `time_terms` a cycle at the mains frequency (mains_frequency), direct or aliased by
 /// the rows' sample rate, and returns what the verdict says of it ("" when none). An aliased one is
-/// kept where a shaft or tooth-mesh order of a coupling of `teeth` (0: unknown) at the rows' median
-/// speed lies as near: the data cannot tell the two apart there.
+/// kept where a shaft or tooth-mesh order of a coupling of `teeth` (0: unknown) at any speed the
+/// rows recorded lies as near: the data cannot tell the two apart there.
 std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
                                   const std::vector<std::size_t>& rows, int teeth);
 
