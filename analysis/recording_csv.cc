@@ -16,7 +16,7 @@
 #include "analysis/format_error.h"
 #include "analysis/number_text.h"
 #include "core/model_error.h"
-#include "parallel/thread_parallel_for.h"
+#include "parallel/chunked_parallel_for.h"
 
 namespace gc::analysis {
 namespace {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "core/model_error.h"
-#include "parallel/thread_parallel_for.h"
+#include "parallel/chunked_parallel_for.h"
 
 namespace gc::analysis {
 namespace {
