@@ -27,13 +27,20 @@ std::size_t unquote(std::string_view text, std::string& out) {
 
 }  // namespace
 
+std::string_view record_text(std::string_view line, long line_number) {
+  if (line_number == 1 && line.starts_with(kByteOrderMark)) line.remove_prefix(kByteOrderMark.size());
+  if (line.ends_with('\r')) line.remove_suffix(1);
+  return trim(line).empty() ? std::string_view() : line;
+}
+
 bool next_csv_line(std::istream& in, std::string& line, long& line_number) {
   while (std::getline(in, line)) {
-    if (line_number++ == 0 && std::string_view(line).starts_with(kByteOrderMark)) {
-      line.erase(0, kByteOrderMark.size());
-    }
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!trim(line).empty()) return true;
+    const std::string_view record = record_text(line, ++line_number);
+    if (record.empty()) continue;
+    const auto start = static_cast<std::size_t>(record.data() - line.data());
+    line.resize(start + record.size());
+    line.erase(0, start);
+    return true;
   }
   return false;
 }

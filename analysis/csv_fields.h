@@ -21,6 +21,11 @@ namespace gc::analysis {
 /// ones included, so errors can name the line a user sees in an editor. Returns false at the end.
 bool next_csv_line(std::istream& in, std::string& line, long& line_number);
 
+/// The record that physical line `line_number` (1-based) holds, by the rules above: without the
+/// byte-order mark of line 1 and a final '\r'; empty when the line is blank. One place for them,
+/// for next_csv_line and the block reader (analysis/csv_line_reader.h).
+std::string_view record_text(std::string_view physical_line, long line_number);
+
 /// The fields of one record. Views point into the line or into the splitter's own storage (for
 /// fields whose quotes were undone): valid until the next split() or the splitter's end.
 class CsvFields {

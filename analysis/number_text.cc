@@ -26,26 +26,27 @@ void append_shortest(std::string& out, Number value) {
 
 }  // namespace
 
-namespace {
-// A loop, not find_first_not_of(" \t\r"): that asks memchr of the set for every character,
-// and trimming every cell was a fifth of reading a recording.
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-}  // namespace
-
-std::string_view trim_start(std::string_view text) {
-  std::size_t first = 0;
-  while (first < text.size() && blank(text[first])) ++first;
-  return text.substr(first);
-}
-
-std::string_view trim(std::string_view text) {
-  text = trim_start(text);
-  std::size_t end = text.size();
-  while (end > 0 && blank(text[end - 1])) --end;
-  return text.substr(0, end);
-}
-
 std::optional<double> parse_double(std::string_view text) { return parse_whole<double>(text); }
+
+bool plainly_moderate_number(std::string_view text) {
+  constexpr std::size_t kMostCharacters = 40, kMostExponentDigits = 2;
+  if (text.size() > kMostCharacters) return false;
+  std::size_t i = text.starts_with('-') ? 1 : 0;
+  const auto digits = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - start;
+  };
+  if (digits() == 0) return false;
+  if (i < text.size() && text[i] == '.' && (++i, digits() == 0)) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    const std::size_t exponent_digits = digits();
+    if (exponent_digits == 0 || exponent_digits > kMostExponentDigits) return false;
+  }
+  return i == text.size();
+}
 std::optional<int> parse_int(std::string_view text) { return parse_whole<int>(text); }
 
 void append_number(std::string& out, double value) { append_shortest(out, value); }

@@ -15,13 +15,33 @@ std::optional<double> parse_double(std::string_view text);
 /// The whole of `text` as an int, or empty.
 std::optional<int> parse_int(std::string_view text);
 
+/// True when `text` is plainly a number parse_double reads as finite and below 1e140 in
+/// magnitude, told from its characters without converting it (a tenth of the time): at most 40
+/// of them, as [-]digits[.digits][e|E[+|-]d[d]]. False tells nothing: convert it to know.
+bool plainly_moderate_number(std::string_view text);
+
 /// Appends the shortest round-trip text of `value` to `out`.
 void append_number(std::string& out, double value);
 void append_number(std::string& out, long value);
 
-/// `text` without leading and trailing blanks (spaces, tabs, '\r').
-std::string_view trim(std::string_view text);
+// Inline: trimmed three times a cell (split, its field, the number), they were a tenth of
+// reading a recording as calls. A loop, not find_first_not_of(" \t\r"): that asks memchr of
+// the set for every character.
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
 /// `text` without leading blanks.
-std::string_view trim_start(std::string_view text);
+inline std::string_view trim_start(std::string_view text) {
+  std::size_t first = 0;
+  while (first < text.size() && is_blank(text[first])) ++first;
+  return text.substr(first);
+}
+
+/// `text` without leading and trailing blanks (spaces, tabs, '\r').
+inline std::string_view trim(std::string_view text) {
+  text = trim_start(text);
+  std::size_t end = text.size();
+  while (end > 0 && is_blank(text[end - 1])) --end;
+  return text.substr(0, end);
+}
 
 }  // namespace gc::analysis

@@ -16,7 +16,7 @@
 #include "analysis/format_error.h"
 #include "analysis/number_text.h"
 #include "core/model_error.h"
-#include "parallel/thread_parallel_for.h"
+#include "parallel/chunked_parallel_for.h"
 
 namespace gc::analysis {
 namespace {
@@ -171,6 +171,12 @@ std::optional<std::string> si_complaint(std::string_view cell, Quantity quantity
   return std::nullopt;
 }
 
+// What the dead band's pass over the rows reads: the time (its order), the misalignment, and
+// the quantities whose range is limited in SI (si_limit).
+bool dead_band_value(Quantity quantity) {
+  return quantity == Quantity::time || quantity == Quantity::misalignment || si_limit(quantity).has_value();
+}
+
 std::string_view cell_complaint(std::string_view cell) {
   if (cell.empty()) return "empty cell";
   return "not a number";
@@ -304,17 +310,19 @@ RecordingReader::RecordingReader(const std::filesystem::path& path,
 
 RecordingReader::RecordingReader(const std::filesystem::path& path, const RecordingOptions& options)
     : source_name_(options.source_name.empty() ? path.filename().string() : options.source_name),
-      in_(path, std::ios::binary) {
+      in_(path, std::ios::binary),
+      lines_(in_) {
   if (!in_) {
     // The OS's reason: no such file, permission denied, a directory (issue 39).
     const int reason = errno;
     throw InvalidInput("recording", "cannot read recording " + path.string() + ": " +
                                         std::strerror(reason));
   }
-  if (!next_csv_line(in_, line_, line_number_)) {
+  CsvLine header;
+  if (!lines_.next(header)) {
     throw InvalidInput("recording.header", source_name_ + ":1: empty file, expected a header");
   }
-  header_ = parse_recording_header(line_, source_name_, options.renames);
+  header_ = parse_recording_header(lines_.line_text(header), source_name_, options.renames);
   for (const Quantity quantity : options.negated) {
     const auto column = std::find_if(header_.columns.begin(), header_.columns.end(),
                                      [&](const RecordingColumn& c) { return c.quantity == quantity; });
@@ -335,29 +343,28 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
 }
 
 double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
-  const std::streampos first_row = in_.tellg();
-  const long header_line = line_number_;
+  const std::streamoff first_row = lines_.position();
+  const long header_line = lines_.line_number();
   std::vector<double> amplitudes;
-  while (const std::size_t rows = read_rows(kRowsParsedAtOnce)) {
+  while (const std::size_t rows = read_rows(kRowsParsedAtOnce, Values::dead_band)) {
     for (std::size_t r = 0; r < rows; ++r) {
       const ParsedRow& row = parsed_[r];
       // Problems are reported on pass 2.
-      if (row.problem || time_problem(row.sample, row.line_number)) continue;
+      if (row.problem || time_problem(row.sample, row.line.line_number)) continue;
       last_time_s_ = row.sample.input.time_s;
       amplitudes.push_back(row.sample.input.misalignment_rad);
     }
   }
   last_time_s_.reset();
-  line_number_ = header_line;
-  in_.clear();
-  if (!in_.seekg(first_row)) {
+  if (!lines_.rewind(first_row, header_line)) {
     throw InvalidInput("recording", source_name_ + ": cannot be read twice (not a regular file?)");
   }
   return gc::loading_dead_band_rad(amplitudes, loading);
 }
 
 std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, long line_number,
-                                                       CsvFields& fields, RecordedSample& s) const {
+                                                       CsvFields& fields, RecordedSample& s,
+                                                       Values values) const {
   if (auto problem = fields.split(line)) return RowProblem{line_number, 0, "", std::move(*problem)};
   if (fields.size() != header_.field_count) {
     return RowProblem{line_number, 0, "",
@@ -366,6 +373,9 @@ std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, lo
   s = RecordedSample{};
   for (const RecordingColumn& column : header_.columns) {
     const std::string_view cell = fields[column.index];
+    if (values == Values::dead_band && !dead_band_value(column.quantity) && plainly_moderate_number(cell)) {
+      continue;  // finite in SI whatever the unit (the largest scale, MN·m, is 1e6)
+    }
     const std::optional<double> value = parse_double(cell);
     const int column_number = static_cast<int>(column.index) + 1;
     if (!value) {
@@ -401,18 +411,16 @@ void RecordingReader::exclude(RowProblem problem) {
   if (problems_.size() < kKeptProblems) problems_.push_back(std::move(problem));
 }
 
-std::size_t RecordingReader::read_rows(std::size_t max_rows) {
+std::size_t RecordingReader::read_rows(std::size_t max_rows, Values values) {
   if (parsed_.size() < max_rows) parsed_.resize(max_rows);
+  lines_.release();
   std::size_t rows = 0;
-  while (rows < max_rows && next_csv_line(in_, parsed_[rows].line, line_number_)) {
-    parsed_[rows++].line_number = line_number_;
-  }
+  while (rows < max_rows && lines_.next(parsed_[rows].line)) ++rows;
   parallel_for_(rows, [&](std::size_t begin, std::size_t end) {
     CsvFields fields;  // the views it hands out live until its next split
     for (std::size_t r = begin; r < end; ++r) {
       ParsedRow& row = parsed_[r];
-      row.sample = RecordedSample{};
-      row.problem = parse_cells(row.line, row.line_number, fields, row.sample);
+      row.problem = parse_cells(lines_.line_text(row.line), row.line.line_number, fields, row.sample, values);
     }
   });
   return rows;
@@ -423,12 +431,12 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
   // Never more rows than the samples still wanted: the reader stops where one read row by row
   // would, so a caller reading a file's first rows reads no further.
   while (samples.size() < max_samples) {
-    const std::size_t rows = read_rows(std::min(max_samples - samples.size(), kRowsParsedAtOnce));
+    const std::size_t rows = read_rows(std::min(max_samples - samples.size(), kRowsParsedAtOnce), Values::all);
     if (rows == 0) break;
     for (std::size_t r = 0; r < rows; ++r) {
       ParsedRow& row = parsed_[r];
       ++rows_read_;
-      if (!row.problem) row.problem = time_problem(row.sample, row.line_number);
+      if (!row.problem) row.problem = time_problem(row.sample, row.line.line_number);
       if (row.problem) {
         exclude(std::move(*row.problem));
         continue;
@@ -438,7 +446,7 @@ bool RecordingReader::next_chunk(std::vector<RecordedSample>& samples, std::size
       samples.push_back(row.sample);
     }
   }
-  return !samples.empty() || !in_.eof();
+  return !samples.empty() || !lines_.at_end();
 }
 
 Recording read_recording(const std::filesystem::path& path, LoadingDirectionOptions loading) {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "analysis/csv_fields.h"
+#include "analysis/csv_line_reader.h"
 #include "analysis/derived_inputs.h"
 #include "diagnosis/parallel_for.h"
 #include "core/loading_direction.h"
@@ -140,15 +141,19 @@ class RecordingReader {
   static constexpr std::size_t kKeptProblems = 1000;
 
  private:
+  /// The values a pass over the rows needs: every one, or the dead band's (time and
+  /// misalignment, and the quantities with a range limit); the other cells of that pass need
+  /// only be known good, which most are at a glance (plainly_moderate_number).
+  enum class Values { all, dead_band };
   /// A row's cells, without the checks that depend on the rows before it: safe to run on
-  /// several rows at once, each thread with its own `fields`.
+  /// several rows at once, each thread with its own `fields`. The same problems whatever `values`.
   std::optional<RowProblem> parse_cells(std::string_view line, long line_number, CsvFields& fields,
-                                        RecordedSample& sample) const;
+                                        RecordedSample& sample, Values values) const;
   /// Time going backwards against the last good row.
   std::optional<RowProblem> time_problem(const RecordedSample& sample, long line_number) const;
   /// Reads up to `max_rows` rows and parses their cells on the reader's threads into parsed_;
   /// returns how many were read.
-  std::size_t read_rows(std::size_t max_rows);
+  std::size_t read_rows(std::size_t max_rows, Values values);
   void exclude(RowProblem problem);
   /// The first pass: the dead band from the misalignment of the good rows, then back to the
   /// first row.
@@ -156,19 +161,17 @@ class RecordingReader {
 
   std::string source_name_;
   std::ifstream in_;
+  CsvLineReader lines_;
   RecordingHeader header_;
   double loading_dead_band_rad_ = 0.0;
   std::optional<DerivedInputs> derived_;   // once the dead band is known
   struct ParsedRow {
-    std::string line;
-    long line_number = 0;
+    CsvLine line;
     RecordedSample sample;
     std::optional<RowProblem> problem;
   };
-  std::string line_;
   ParallelFor parallel_for_;
-  std::vector<ParsedRow> parsed_;     // one batch; its lines keep their storage
-  long line_number_ = 0;
+  std::vector<ParsedRow> parsed_;     // one batch, its lines in lines_ until the next
   std::size_t rows_read_ = 0;
   std::size_t excluded_rows_ = 0;
   std::optional<double> last_time_s_;

@@ -123,4 +123,12 @@ void require_load_carried(const ToothLoadPattern& pattern, double sum_of_loads_n
   throw InvalidInput("operating_point.torque_nm", point.torque_nm, allowed.str());
 }
 
+bool loads_clearly_carried(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double minimum) {
+  constexpr double kMargin = 1e-9;  // of P_t; the order moves the sum by ~N ulp (1e-14 for 100 teeth)
+  const auto s = coupling.tooth_sin() * pattern.cos_alpha + coupling.tooth_cos() * pattern.sin_alpha;
+  const auto share = 1.0 - pattern.separation_ratio * s * s;
+  const double sum = pattern.peak_tooth_load_n * share.max(0.0).sum();  // one pass, no temporary
+  return sum >= (minimum + kMargin) * pattern.total_normal_load_n;  // NaN: false
+}
+
 }  // namespace gc

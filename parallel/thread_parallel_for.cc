@@ -1,7 +1,6 @@
 #include "parallel/thread_parallel_for.h"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -9,10 +8,6 @@
 namespace gc {
 
 namespace {
-
-unsigned resolved(unsigned threads) {
-  return threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
-}
 
 // Runs run(0) .. run(workers - 1), run(0) on the caller; rethrows the first exception.
 void on_threads(std::size_t workers, const std::function<void(std::size_t)>& run) {
@@ -39,8 +34,12 @@ void on_threads(std::size_t workers, const std::function<void(std::size_t)>& run
 
 }  // namespace
 
+unsigned resolved_threads(unsigned threads) {
+  return threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
+}
+
 ParallelFor thread_parallel_for(unsigned threads) {
-  threads = resolved(threads);
+  threads = resolved_threads(threads);
   return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
     const std::size_t chunks = std::min<std::size_t>(threads, count);
     if (chunks <= 1) {
@@ -48,24 +47,6 @@ ParallelFor thread_parallel_for(unsigned threads) {
       return;
     }
     on_threads(chunks, [&](std::size_t c) { body(c * count / chunks, (c + 1) * count / chunks); });
-  };
-}
-
-ParallelFor chunked_parallel_for(unsigned threads) {
-  threads = resolved(threads);
-  return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-    const std::size_t workers = std::min<std::size_t>(threads, count);
-    if (workers <= 1) {
-      if (count > 0) body(0, count);
-      return;
-    }
-    const std::size_t chunk = std::max<std::size_t>(1, count / (16 * workers));
-    std::atomic<std::size_t> next{0};
-    on_threads(workers, [&](std::size_t) {
-      for (std::size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk)) {
-        body(begin, std::min(count, begin + chunk));
-      }
-    });
   };
 }
 

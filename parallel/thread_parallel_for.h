@@ -11,10 +11,7 @@ namespace gc {
 /// threads = 0 means std::thread::hardware_concurrency().
 ParallelFor thread_parallel_for(unsigned threads = 0);
 
-/// The same contract, the range handed out in small chunks (about 16 a thread) from a shared
-/// counter: where a thread may be slowed more than the others (a host shared with other work),
-/// the others take its share instead of waiting for it. `body` may not assume which thread or
-/// how many calls cover the range.
-ParallelFor chunked_parallel_for(unsigned threads = 0);
+/// `threads`, or std::thread::hardware_concurrency() (at least 1) for 0.
+unsigned resolved_threads(unsigned threads);
 
 }  // namespace gc

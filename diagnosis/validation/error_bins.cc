@@ -173,18 +173,27 @@ ValidationAccumulator::ValidationAccumulator(const BinningOptions& options)
 }
 
 void ValidationAccumulator::add(const RecordedSample& sample, const SensorMoments& predicted) {
-  overall_.add(sample.measured, predicted);
-  for (ErrorBinning& binning : binnings_) binning.add(sample.input, sample.measured, predicted);
-  map_.add(sample.input, sample.measured, predicted);
-  const SensorMoments error{predicted.y_nm - sample.measured.y_nm,
-                            predicted.z_nm - sample.measured.z_nm};
-  if (last_error_) {
-    const double dy = error.y_nm - last_error_->y_nm, dz = error.z_nm - last_error_->z_nm;
-    difference_sum_sq_[0] += dy * dy;
-    difference_sum_sq_[1] += dz * dz;
-    ++differences_;
+  for (std::size_t part = 0; part < kParts; ++part) add_part(part, sample, predicted);
+}
+
+void ValidationAccumulator::add_part(std::size_t part, const RecordedSample& sample,
+                                     const SensorMoments& predicted) {
+  if (part > 1) {
+    binnings_[part - 2].add(sample.input, sample.measured, predicted);
+  } else if (part == 1) {
+    map_.add(sample.input, sample.measured, predicted);
+  } else {
+    overall_.add(sample.measured, predicted);
+    const SensorMoments error{predicted.y_nm - sample.measured.y_nm,
+                              predicted.z_nm - sample.measured.z_nm};
+    if (last_error_) {
+      const double dy = error.y_nm - last_error_->y_nm, dz = error.z_nm - last_error_->z_nm;
+      difference_sum_sq_[0] += dy * dy;
+      difference_sum_sq_[1] += dz * dz;
+      ++differences_;
+    }
+    last_error_ = error;
   }
-  last_error_ = error;
 }
 
 double ValidationAccumulator::noise_estimate_nm(Channel channel) const {

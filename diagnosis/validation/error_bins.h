@@ -103,6 +103,12 @@ class ValidationAccumulator {
   void add(const RecordedSample& sample, const SensorMoments& predicted);
   void reject(const RecordedSample& sample, const std::string& field, std::string_view message);
 
+  /// add() as kParts independent parts (the overall errors and the noise; each binning; the
+  /// map): fed every sample in order, part by part, they hold the same bits as add(), so a
+  /// caller may feed different parts on different threads.
+  static constexpr std::size_t kParts = 2 + kBinDimensions.size();
+  void add_part(std::size_t part, const RecordedSample& sample, const SensorMoments& predicted);
+
   const BinningOptions& options() const { return options_; }
   const ChannelErrors& overall() const { return overall_; }
   const std::vector<ErrorBinning>& binnings() const { return binnings_; }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/csv_fields.h"
+#include "analysis/csv_line_reader.h"
 #include "analysis/number_text.h"
 
 namespace gc::analysis {
@@ -24,6 +25,36 @@ std::vector<Line> lines_of(const std::string& text) {
   std::string line;
   long number = 0;
   while (next_csv_line(in, line, number)) lines.push_back({line, number});
+  return lines;
+}
+
+// The block reader's lines, read twice: through to the end, then again from the second line
+// on after a rewind.
+std::vector<Line> block_lines_of(const std::string& text) {
+  std::istringstream in(text);
+  CsvLineReader reader(in);
+  std::vector<Line> lines;
+  CsvLine line;
+  std::streamoff second = -1;
+  long second_number = 0;
+  while (reader.next(line)) {
+    lines.push_back({std::string(reader.line_text(line)), line.line_number});
+    if (lines.size() == 1) {
+      second = reader.position();
+      second_number = reader.line_number();
+    }
+    if (lines.size() % 3 == 0) reader.release();  // the rest stays readable across a release
+  }
+  EXPECT_TRUE(reader.at_end());
+  if (second >= 0 && reader.rewind(second, second_number)) {
+    std::size_t again = 1;
+    while (reader.next(line)) {
+      EXPECT_LT(again, lines.size());
+      if (again >= lines.size()) break;
+      EXPECT_EQ((Line{std::string(reader.line_text(line)), line.line_number}), lines[again++]);
+    }
+    EXPECT_EQ(again, lines.size());
+  }
   return lines;
 }
 
@@ -95,6 +126,18 @@ TEST(CsvFields, OutputQuotingReadsBack) {
   append_csv_field(out, R"(a, "b")");
   EXPECT_EQ(out, R"("a, ""b""")");
   EXPECT_EQ(fields_of(out), (std::vector<std::string>{R"(a, "b")"}));
+}
+
+// The block reader (validate's) gives next_csv_line's lines and numbers: a byte-order mark,
+// CRLF, blank and blank-looking lines, no final line break, and a line longer than a block.
+TEST(CsvLines, TheBlockReaderGivesTheLinesOfNextCsvLine) {
+  const std::string long_line(3u << 20, '7');
+  for (const std::string& text :
+       {std::string("\xEF\xBB\xBFtime_s,a\r\n1,2\r\n\r\n \t\n3,4"), std::string("a\n\n\nb\n"),
+        std::string(""), std::string("\n\n"), std::string("h\n") + long_line + "\n" + long_line + ",1",
+        std::string("x,y\n1,2\n")}) {
+    EXPECT_EQ(block_lines_of(text), lines_of(text)) << text.substr(0, 40);
+  }
 }
 
 }  // namespace

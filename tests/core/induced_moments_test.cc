@@ -8,6 +8,7 @@
 
 #include "core/coupling_geometry.h"
 #include "core/model_error.h"
+#include "core/tooth_load_pattern.h"
 #include "tests/core/nrel_couplings.h"
 
 namespace gc {
@@ -158,6 +159,32 @@ TEST(InducedMoments, DoublePrimeMomentsAloneAreThoseOfTheFullContactBitForBit) {
   }
   EXPECT_GT(compared, 700);
   EXPECT_GT(refused, 0);  // light torque near the jam angle
+}
+
+// The quick check that lets a prediction skip summing the loads in tooth order never vouches for
+// a pattern whose loads carry less than asked, and vouches for all but those near the limit.
+TEST(InducedMoments, LoadsClearlyCarriedAgreesWithTheSumInToothOrder) {
+  const double jam = upwind().jam_angle().angle_rad;
+  int vouched = 0, carried = 0;
+  for (const double minimum : {0.5, 0.9, 0.99}) {
+    ContactOptions options;
+    options.min_load_fraction = minimum;
+    for (int t = 1; t <= 40; ++t) {
+      for (int z = 0; z <= 39; ++z) {
+        const OperatingPoint point{2e3 * t * t, jam * z / 40.0, 0.1 * t, 0.1};
+        const ToothLoadPattern pattern = tooth_load_pattern(upwind(), point, options);
+        const double in_order = tooth_load_totals(upwind(), pattern).sum_of_loads_n / pattern.total_normal_load_n;
+        const bool clearly = loads_clearly_carried(upwind(), pattern, minimum);
+        if (clearly) {
+          EXPECT_GE(in_order, minimum) << "T " << point.torque_nm << " N·m, zeta " << point.misalignment_rad;
+        }
+        vouched += clearly;
+        carried += in_order >= minimum + 1e-6;
+      }
+    }
+  }
+  EXPECT_GT(carried, 1000);
+  EXPECT_GE(vouched, carried);  // none clearly carried goes to the slow sum
 }
 
 }  // namespace

@@ -1,0 +1,120 @@
+// validate's run (analysis/validation_run.h): a recording streamed in chunks, rows parsed and
+// samples predicted on several threads, the statistics fed part by part on several threads,
+// gives the numbers of the plain loop: the whole recording read, each sample predicted and
+// added to one accumulator in file order.
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "analysis/recording_csv.h"
+#include "analysis/validation_run.h"
+#include "core/model_error.h"
+#include "run_process.h"
+#include "test_models.h"
+
+namespace gc::analysis {
+namespace {
+
+// Relative tolerance of the comparison: the parts keep the plain loop's order, so the bits
+// agree today; a change that sums in another order (per-thread sums merged) may move the last
+// digits, never the third.
+constexpr double kRelative = 1e-12;
+
+void expect_close(double actual, double expected, const std::string& what) {
+  EXPECT_NEAR(actual, expected, kRelative * std::max(1.0, std::abs(expected))) << what;
+}
+
+void expect_same(const ErrorAccumulator& actual, const ErrorAccumulator& expected, const std::string& what) {
+  const ErrorMetrics a = actual.metrics(), e = expected.metrics();
+  ASSERT_EQ(a.count, e.count) << what;
+  expect_close(a.rmse_nm, e.rmse_nm, what + " rmse");
+  expect_close(a.bias_nm, e.bias_nm, what + " bias");
+  expect_close(a.max_abs_error_nm, e.max_abs_error_nm, what + " max");
+  ASSERT_EQ(a.r_squared.has_value(), e.r_squared.has_value()) << what;
+  if (a.r_squared) expect_close(*a.r_squared, *e.r_squared, what + " R^2");
+}
+
+void expect_same(const ChannelErrors& actual, const ChannelErrors& expected, const std::string& what) {
+  expect_same(actual.y, expected.y, what + " y");
+  expect_same(actual.z, expected.z, what + " z");
+}
+
+// A torque sweep over the misalignment range, some rows beyond the jam angle (the model refuses
+// them), measured moments from a made-up law plus a wobble, one malformed row.
+std::string sweep_recording(double jam_angle_rad) {
+  std::string text = "time_s,torque_nm,misalignment_rad,direction_rad,msy_nm,msz_nm\n";
+  for (int i = 0; i < 6000; ++i) {
+    const double torque = 2e5 + 300.0 * i;
+    const double misalignment = jam_angle_rad * (0.05 + 1.1 * (i % 600) / 600.0);
+    text += i == 4321 ? "0.5,x,0,0,0,0\n"
+                      : fmt::format("{},{},{},{},{},{}\n", 0.01 * i, torque, misalignment, 0.3,
+                                    -0.1 * torque + 3e3 * std::sin(0.1 * i), 1e4 * std::cos(0.07 * i));
+  }
+  return text;
+}
+
+TEST(ValidationRun, StreamedOnThreadsGivesTheNumbersOfThePlainLoop) {
+  const codec::ModelFile model = gc::testing::bundled_model("paper");
+  BinningOptions binning;
+  binning.jam_angle_rad = model.model.geometry().jam_angle().angle_rad;
+  const std::string path = cli::testing::temp_path("validation_run") + ".csv";
+  cli::testing::write_file(path, sweep_recording(binning.jam_angle_rad));
+
+  // The plain loop.
+  const Recording recording = read_recording(path);
+  ValidationAccumulator expected(binning);
+  PointSampler expected_points(500);
+  for (std::size_t i = 0; i < recording.samples.size(); ++i) {
+    const RecordedSample& sample = recording.samples[i];
+    try {
+      const SensorMoments predicted =
+          model.model.predict_at(std::span<const RecordedSample>(recording.samples), i).moments;
+      expected.add(sample, predicted);
+      expected_points.add(sample, predicted);
+    } catch (const InvalidInput& error) {
+      expected.reject(sample, error.field(), error.what());
+      expected_points.add(sample, std::nullopt);
+    }
+  }
+
+  for (const int threads : {1, 3}) {
+    std::vector<ModelRun> runs;
+    runs.push_back({"paper", &model.model, ValidationAccumulator(binning), PointSampler(500)});
+    const RecordingSummary summary = run_validation(path, runs, {threads, 1000});
+    const ValidationAccumulator& actual = runs[0].validation;
+    const std::string on = fmt::format("{} threads", threads);
+    EXPECT_EQ(summary.rows_read, 6000u);
+    EXPECT_EQ(summary.excluded_rows, 1u);
+    expect_same(actual.overall(), expected.overall(), on + ", overall");
+    for (const Channel channel : kChannels) {
+      expect_close(actual.noise_estimate_nm(channel), expected.noise_estimate_nm(channel), on + ", noise");
+    }
+    for (const BinDimension dimension : kBinDimensions) {
+      const auto& bins = actual.binning(dimension).bins();
+      const auto& expected_bins = expected.binning(dimension).bins();
+      ASSERT_EQ(bins.size(), expected_bins.size()) << on;
+      for (std::size_t b = 0; b < bins.size(); ++b) {
+        expect_same(bins[b].errors, expected_bins[b].errors,
+                    fmt::format("{}, {} bin {}", on, to_string(dimension), b));
+      }
+    }
+    ASSERT_EQ(actual.map().cells.size(), expected.map().cells.size());
+    for (std::size_t c = 0; c < actual.map().cells.size(); ++c) {
+      expect_same(actual.map().cells[c], expected.map().cells[c], fmt::format("{}, map cell {}", on, c));
+    }
+    ASSERT_EQ(actual.rejections().size(), expected.rejections().size()) << on;
+    EXPECT_GT(actual.rejected_count(), 100u);  // beyond the jam angle
+    EXPECT_EQ(actual.rejected_count(), expected.rejected_count()) << on;
+    ASSERT_EQ(runs[0].points.points().size(), expected_points.points().size()) << on;
+    for (std::size_t p = 0; p < expected_points.points().size(); ++p) {
+      EXPECT_EQ(runs[0].points.points()[p].recorded.input.time_s,
+                expected_points.points()[p].recorded.input.time_s) << on;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gc::analysis
