@@ -13,7 +13,6 @@
 #include "diagnosis/input_noise_check.h"
 #include "diagnosis/mains_pickup.h"
 #include "diagnosis/noise_estimate.h"
-#include "diagnosis/plausible_against_noise.h"
 #include "diagnosis/row_selection.h"
 #include "diagnosis/signature_held_out.h"
 #include "diagnosis/surrogate_claims.h"
@@ -141,11 +140,6 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
-      [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
-      [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims);
-  // An implausible first keeps its place only by more than noise would give it (plausible_against_noise.h).
-  put_plausible_first_unless_beyond_noise(
-      round.ranking, model, observations, search, base, parallel,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
       [&](const Effect& e) { return registration_for(e, settings); }, settings.surrogate_claims);
   // Refitting an effect an earlier round added and said explains only partly makes no new claim:

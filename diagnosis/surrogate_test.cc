@@ -27,89 +27,6 @@ double rise_variance(const Eigen::VectorXd& x) {
   return rise * rise;
 }
 
-/// The unit vector (2n rows, stacked) whose product with a series is its rise on `channel`, up to
-/// rise_variance's scale: the last fifth's mean less the first's.
-Eigen::VectorXd rise_direction(Eigen::Index n, int channel) {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(2 * n);
-  const Eigen::Index fifth = n / 5;
-  if (fifth < 1) return out;
-  out.segment(channel * n, fifth).setConstant(-1.0);
-  out.segment(channel * n + n - fifth, fifth).setConstant(1.0);
-  return out / std::sqrt(2.0 * static_cast<double>(fifth));
-}
-
-/// The rise variance that `x` would show over its fifths, from how the means of adjacent blocks of
-/// a tenth, a twentieth and a fortieth of the rows differ (at least 4 rows a block): fitted as white
-/// noise and a walk, D(L) = a 2/L + b 2L/3 for blocks of L rows (a the white variance, b the walk's
-/// variance per row), each scale weighted by its count of contrasts, the walk kept only where it is
-/// significant (one-sided 1 %); then the fifths' contrast, four blocks of n/5 apart:
-/// 1.25^2 (a 2/L + b 11L/3). Measured on 400 draws of 1,500 rows: the rise's spread within 0.7-1.2
-/// of the truth's at the 10th-90th percentiles for white noise, a walk and both; 0.6-0.8 for AR(1)
-/// noise of phi 0.95. Blocks this long lie within what a slow design moves: they see a walk's
-/// wander where the design took its rise, and not an effect's slow course.
-double extrapolated_rise_variance(const Eigen::VectorXd& x) {
-  const Eigen::Index n = x.size();
-  std::vector<Eigen::Vector3d> rows;  // weighted: 2/L, 2L/3; the weight itself (the scaled observation)
-  for (const Eigen::Index parts : {10, 20, 40}) {
-    const Eigen::Index length = n / parts;
-    if (length < 4) break;
-    double sum = 0.0, previous = x.segment(0, length).mean();
-    for (Eigen::Index k = 1; k < parts; ++k) {
-      const double mean = x.segment(k * length, length).mean();
-      sum += (mean - previous) * (mean - previous);
-      previous = mean;
-    }
-    const double contrasts = static_cast<double>(parts - 1), d = sum / contrasts;
-    if (!(d > 0.0)) continue;
-    // A mean of m squared contrasts has a relative spread of about sqrt(2 / m).
-    const double w = std::sqrt(contrasts / 2.0) / d;
-    const double l = static_cast<double>(length);
-    rows.push_back({w * 2.0 / l, w * 2.0 * l / 3.0, w * d});
-  }
-  if (rows.empty()) return 0.0;
-  Eigen::MatrixX2d a(static_cast<Eigen::Index>(rows.size()), 2);
-  Eigen::VectorXd b(a.rows());
-  for (Eigen::Index j = 0; j < a.rows(); ++j) a.row(j) = rows[static_cast<std::size_t>(j)].head<2>().transpose(), b(j) = rows[static_cast<std::size_t>(j)](2);
-  double white = (a.col(0).dot(b)) / a.col(0).squaredNorm(), walk = 0.0;
-  if (a.rows() >= 3) {
-    const Eigen::Matrix2d normal = a.transpose() * a;
-    const Eigen::Vector2d both = normal.ldlt().solve(a.transpose() * b);
-    const double se = std::sqrt(normal.inverse()(1, 1));
-    if (both(1) > 2.33 * se) {
-      white = std::max(both(0), 0.0);
-      // A standard error up: a walk's rise is taken at the upper end of what its blocks say (the
-      // fit alone left 6 of 300 walks under a staircase claimed, for a level of 1 %).
-      walk = (both(0) >= 0.0 ? both(1) : a.col(1).dot(b) / a.col(1).squaredNorm()) + se;
-    }
-  }
-  const double l = static_cast<double>(n / 5);
-  return 1.25 * 1.25 * (std::max(white, 0.0) * 2.0 / l + walk * 11.0 * l / 3.0);
-}
-
-/// The rise variance of the noise a candidate leaves, per channel. Where the design's `span`
-/// (orthonormal) takes at most half of the rise's direction: the larger of the leftover's own rise,
-/// given back the share the span took (as the spectrum is, SurrogateSpectrum::removed), and the rise
-/// its blocks extrapolate to. Not the residual's own: it gives every surrogate the rise of a real
-/// effect whose programme ends elsewhere than it began (a compliance of 8 kN·m in 5 kN·m of brown
-/// and resonant noise was judged against surrogates with rises of 25 kN·m and lost its claim).
-/// Where the span takes more (a staircase, a drift in time, a formula's slow terms chosen from many),
-/// the leftover says nothing of the noise's slow wander, which the design took at every scale, and
-/// the residual's own rise is used (a formula of five slow terms took a brown noise's rise of 17
-/// kN·m; its leftover's blocks said 0.9).
-Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left,
-                                 const Eigen::MatrixXd& span) {
-  Eigen::Array2d out;
-  for (int c = 0; c < 2; ++c) {
-    const double taken = (span.transpose() * rise_direction(left.rows(), c)).squaredNorm();
-    if (taken > 0.5) {
-      out(c) = rise_variance(residual.col(c));
-      continue;
-    }
-    out(c) = std::max(rise_variance(left.col(c)) / (1.0 - taken), extrapolated_rise_variance(left.col(c)));
-  }
-  return out;
-}
-
 /// A bin this many times the median power about it is a line (a cycle, or a test programme that
 /// repeats), not the noise's continuum.
 constexpr double kLineRatio = 10.0;
@@ -406,6 +323,8 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   // p-value is above level / (2 family) whatever the rest say.
   const int enough = static_cast<int>(std::ceil(level / (2.0 * family) * (count + 1.0)));
   const Eigen::VectorXd y = stacked(residual);
+  // The rise a noise makes over the recording, from the residual's fifths (rise_variance).
+  const Eigen::Array2d rises(rise_variance(residual.col(0)), rise_variance(residual.col(1)));
   for (std::size_t d = 0; d < designs.size(); ++d) {
     const Projector projector(designs[d], residual.rows());
     std::vector<Projector> scan;
@@ -423,13 +342,14 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
       const double observed = largest_share(y);
-      // The null is noise like what the candidate leaves, with the rise it leaves given back
-      // (rise_of_the_noise): a real effect's own spectrum (a drag that follows a speed programme, a
-      // cross-talk of the model's moments) is not noise against it. Least squares took from the leftover the share of each frequency
+      // The null is noise like what the candidate leaves, with the rise the residual's fifths show:
+      // a real effect's own spectrum (a drag that follows a speed programme, a cross-talk of the
+      // model's moments) is not noise against it, while a walk's rise, which a staircase takes out,
+      // stays in every surrogate. Least squares took from the leftover the share of each frequency
       // that the design spans (its leverage there): the surrogates give it back, or a slow design
       // fitted to a slow noise would leave a null with less of the slow power than it took (ter
       // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
-      SurrogateSpectrum shape{rise_of_the_noise(residual, left, span), {}};
+      SurrogateSpectrum shape{rises, {}};
       for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
       SurrogateSource surrogates(left, seed + d, shape);
       int as_well = 0, drawn = 0;
