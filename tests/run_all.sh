@@ -11,12 +11,19 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
-stage_start=$SECONDS
-stage() {  # stage NAME: prints the previous stage's duration, then NAME
+times_file=$(mktemp)
+trap 'rm -f "$times_file"' EXIT
+children_cpu() {  # CPU seconds (user + system) of the finished child processes so far, in $cpu
+  times >"$times_file"   # in this shell: a $(times) subshell has no children of its own
+  cpu=$(awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%.0f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$times_file")
+}
+stage() {  # stage NAME: prints the previous stage's duration (its CPU time, the load), then NAME
+  children_cpu
   if [ -n "${stage_name:-}" ]; then
-    echo "-- ${stage_name}: $((SECONDS - stage_start)) s"
+    echo "-- ${stage_name}: $((SECONDS - stage_start)) s (CPU $((cpu - stage_cpu)) s;" \
+         "load $(cut -d' ' -f1-3 /proc/loadavg))"
   fi
-  stage_name=$1 stage_start=$SECONDS
+  stage_name=$1 stage_start=$SECONDS stage_cpu=$cpu
   [ -z "$1" ] || echo "== $1"
 }
 stage "packages (deploy/install-deps.sh)"
