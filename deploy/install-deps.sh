@@ -4,6 +4,7 @@
 set -euo pipefail
 packages=(
   cmake g++ make
+  ninja-build     # the build trees of tests/run_all.sh and tests/run_fuzz.sh
   libeigen3-dev
   libprotobuf-dev protobuf-compiler
   libspdlog-dev libfmt-dev libcli11-dev

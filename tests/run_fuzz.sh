@@ -14,7 +14,9 @@ seconds=${1:-5}
 dir=build-fuzz
 targets=(recording_csv batch_csv coupling_text model_text wire_request batch_request)
 
-cmake -S . -B "$dir" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DGC_FUZZ=ON \
+generator=()   # Ninja for a new tree; one configured before keeps its generator
+[ -f "$dir/CMakeCache.txt" ] || generator=(-G Ninja)
+cmake -S . -B "$dir" "${generator[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DGC_FUZZ=ON \
   -DGC_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$dir" -j "$(nproc)" --target fuzzers >/dev/null
 
