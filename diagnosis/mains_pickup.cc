@@ -87,8 +87,9 @@ std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::spa
     const std::optional<double> mains = mains_frequency(f, 1.0 / step, 1.0 / duration);
     // An aliased mains line where a shaft or mesh order also shows, at any speed the shaft ran, is
     // left to the physics: 60 Hz at 50 Hz sampling lands at 10 Hz, where a 56-tooth mesh at 10.7 rpm
-    // also is, on a staircase of 10-14 rpm. Elsewhere it is
-    // mains: 50 Hz sampled at 11 Hz was claimed as a cycle of 5.02 Hz in a zoo draw.
+    // also is, on a staircase of 10-14 rpm. Elsewhere it is mains: 50 Hz sampled at 11 Hz was
+    // claimed as a cycle of 5.02 Hz in a zoo draw. A wide speed sweep puts an order near most
+    // frequencies, and the line stays with the physics, as before.
     if (mains && *mains >= 0.5 / step && near_an_order(f, speeds_rpm, teeth, 1.0 / step, 1.0 / duration + 0.005 * f)) {
       return false;
     }
