@@ -21,6 +21,7 @@
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
 #include "diagnosis/synthesis/synthesize.h"
+#include "parallel/thread_parallel_for.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 
@@ -298,6 +299,24 @@ TEST(RigVocabulary, RingingOfTheModelAgreesWithTheSequenceAndTheOde) {
   EXPECT_NEAR(with.predict(c.recording[503].input).moments.y_nm, c.model.predict(c.recording[503].input).moments.y_nm, 1e-9);
 }
 
+// The ringing estimate's grid makes the ringings of several dampings in one pass: each must be
+// the single sequence's to the bit, or the grid's best and its ties could move.
+TEST(RigVocabulary, RingingSequencesSideBySideAreEachSequenceToTheBit) {
+  const RingingCase c = ringing_case(true);
+  std::vector<double> times, torques;
+  for (const RecordedSample& o : c.recording) { times.push_back(o.input.time_s); torques.push_back(o.input.torque_nm); }
+  const std::vector<RingingMode> modes = {{kModeHz, kModeZeta}, {0.2, 0.01}, {kModeHz, 0.2}, {44.9, 0.07}};
+  const std::vector<std::vector<double>> side_by_side = ringing_sequences(times, torques, modes);
+  ASSERT_EQ(side_by_side.size(), modes.size());
+  for (std::size_t m = 0; m < modes.size(); ++m) {
+    const std::vector<double> alone = ringing_sequence(times, torques, modes[m]);
+    ASSERT_EQ(side_by_side[m].size(), alone.size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < alone.size(); ++i) differing += side_by_side[m][i] != alone[i];
+    EXPECT_EQ(differing, 0u) << m;
+  }
+}
+
 /// f_n and zeta of the ringing term `name` ("ringing_<f>Hz_zeta<z>_on_y").
 std::pair<double, double> mode_of(const std::string& name) {
   std::smatch m;
@@ -333,6 +352,26 @@ bool offers_ringing(const RingingCase& c) {
     residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
   }
   return dominant_ringing(c.recording, rows, residual).has_value();
+}
+
+// The grid's frequencies are shared over the threads and taken back in the grid's order: the mode
+// found does not depend on the threads.
+TEST(RigVocabulary, RingingEstimateIsTheSameOnOneThreadAndTwo) {
+  const RingingCase c = ringing_case(true);
+  std::vector<std::size_t> rows;
+  Eigen::MatrixX2d residual(static_cast<Eigen::Index>(c.recording.size()), 2);
+  for (std::size_t i = 0; i < c.recording.size(); ++i) {
+    rows.push_back(i);
+    const SensorMoments p = c.model.predict_at(std::span<const RecordedSample>(c.recording), i).moments;
+    residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
+  }
+  const std::optional<RingingMode> one = dominant_ringing(c.recording, rows, residual);
+  const std::optional<RingingMode> two = dominant_ringing(c.recording, rows, residual, thread_parallel_for(2));
+  ASSERT_TRUE(one.has_value());
+  ASSERT_TRUE(two.has_value());
+  EXPECT_NEAR(one->natural_frequency_hz, kModeHz, 0.1 * kModeHz);
+  EXPECT_EQ(one->natural_frequency_hz, two->natural_frequency_hz);
+  EXPECT_EQ(one->damping_ratio, two->damping_ratio);
 }
 
 TEST(RigVocabulary, FindsNoRingingInNoiseAlone) {
