@@ -76,31 +76,29 @@ class ModeScore {
   }
 
   /// For each damping of kDampings at f_hz: the score (index 0) and the same score on each
-  /// residual shifted against the load (1..kShifts). The dampings' ringings are made in one pass.
-  /// The scores are exactly operator()'s. The shifted ones are, with `exact_shifts`; without it
-  /// they come from one matrix product of all the columns with all the shifted residuals, several
-  /// times faster, each within shift_tolerance() of its exact value (summed in another order).
+  /// residual shifted against the load (1..kShifts). The scores are exactly operator()'s. The
+  /// shifted ones are, with `exact_shifts`; without it they come from one matrix product of all
+  /// the columns with all the shifted residuals, several times faster, each within
+  /// shift_tolerance() of its exact value (summed in another order).
   std::vector<GridScores> grid_scores(double f_hz, bool exact_shifts) const {
-    std::vector<RingingMode> modes;
-    for (const double zeta : kDampings) modes.push_back({f_hz, zeta});
     std::vector<Eigen::VectorXd> columns;
     std::vector<double> squares;
-    for (const std::vector<double>& r : ringing_sequences(times_, torques_, modes)) {
-      columns.push_back(projected(r));
+    for (const double zeta : kDampings) {
+      columns.push_back(column(f_hz, zeta));
       squares.push_back(columns.back().squaredNorm());
     }
-    std::vector<GridScores> out(modes.size());
-    for (std::size_t m = 0; m < modes.size(); ++m) out[m][0] = explained(columns[m], squares[m], left_);
+    std::vector<GridScores> out(columns.size());
+    for (std::size_t m = 0; m < columns.size(); ++m) out[m][0] = explained(columns[m], squares[m], left_);
     if (exact_shifts) {
       for (int j = 0; j < kShifts; ++j) {
-        for (std::size_t m = 0; m < modes.size(); ++m) out[m][j + 1] = explained(columns[m], squares[m], shifted_[j]);
+        for (std::size_t m = 0; m < columns.size(); ++m) out[m][j + 1] = explained(columns[m], squares[m], shifted_[j]);
       }
       return out;
     }
     Eigen::MatrixXd all(left_.rows(), static_cast<Eigen::Index>(columns.size()));
     for (std::size_t m = 0; m < columns.size(); ++m) all.col(static_cast<Eigen::Index>(m)) = columns[m];
     const Eigen::MatrixXd products = all.transpose() * stacked_;
-    for (std::size_t m = 0; m < modes.size(); ++m) {
+    for (std::size_t m = 0; m < columns.size(); ++m) {
       const auto row = products.row(static_cast<Eigen::Index>(m));
       for (int j = 0; j < kShifts; ++j) {
         out[m][j + 1] = squares[m] > 0.0 ? (row(2 * j) * row(2 * j) + row(2 * j + 1) * row(2 * j + 1)) / squares[m] : 0.0;
@@ -127,10 +125,8 @@ class ModeScore {
 
  private:
   /// The mode's ringing of the torque on the rows, less the nuisance.
-  Eigen::VectorXd column(double f_hz, double zeta) const { return projected(ringing_sequence(times_, torques_, {f_hz, zeta})); }
-
-  /// A ringing of the torque over the recording on the rows, less the nuisance.
-  Eigen::VectorXd projected(const std::vector<double>& r) const {
+  Eigen::VectorXd column(double f_hz, double zeta) const {
+    const std::vector<double> r = ringing_sequence(times_, torques_, {f_hz, zeta});
     Eigen::VectorXd c(static_cast<Eigen::Index>(rows_.size()));
     for (std::size_t k = 0; k < rows_.size(); ++k) c(static_cast<Eigen::Index>(k)) = r[rows_[k]];
     return c - basis_ * (basis_.transpose() * c);

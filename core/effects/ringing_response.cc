@@ -22,19 +22,15 @@ struct Pole {
   }
   /// e^{s dt}, remembered per gap: a clock's gaps take a handful of values a few ulp apart (16 on
   /// a 100 Hz CSV's stamps), which alternate, and an exp per sample was a sixth of a diagnosis.
-  std::complex<double> decay(double dt) { return decay(dt, slot_of(dt)); }
-  /// The same, its slot found already (slot_of): modes run side by side share it.
-  std::complex<double> decay(double dt, std::size_t slot) {
+  std::complex<double> decay(double dt) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &dt, sizeof bits);
+    const std::size_t slot = static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 58);  // of 64
     if (!(gaps_[slot] == dt)) {
       gaps_[slot] = dt;
       decays_[slot] = std::exp(s * dt);
     }
     return decays_[slot];
-  }
-  static std::size_t slot_of(double dt) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &dt, sizeof bits);
-    return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 58);  // of 64
   }
 
  private:
@@ -61,22 +57,6 @@ std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<
   for (std::size_t i = 1; i < inputs.size(); ++i) {
     sum = sum * pole.decay(times_s[i] - times_s[i - 1]) + pole.a * (inputs[i] - inputs[i - 1]);
     r[i] = sum.real();
-  }
-  return r;
-}
-
-std::vector<std::vector<double>> ringing_sequences(std::span<const double> times_s, std::span<const double> inputs,
-                                                   std::span<const RingingMode> modes) {
-  std::vector<Pole> poles(modes.begin(), modes.end());
-  std::vector<std::vector<double>> r(modes.size(), std::vector<double>(inputs.size(), 0.0));
-  std::vector<std::complex<double>> sums(modes.size(), 0.0);
-  for (std::size_t i = 1; i < inputs.size(); ++i) {
-    const double dt = times_s[i] - times_s[i - 1], du = inputs[i] - inputs[i - 1];
-    const std::size_t slot = Pole::slot_of(dt);
-    for (std::size_t m = 0; m < poles.size(); ++m) {
-      sums[m] = sums[m] * poles[m].decay(dt, slot) + poles[m].a * du;
-      r[m][i] = sums[m].real();
-    }
   }
   return r;
 }

@@ -28,12 +28,6 @@ struct RingingMode {
 std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<const double> inputs,
                                      const RingingMode& mode);
 
-/// ringing_sequence for each of `modes`, in one pass over the sequence: the modes' recursions are
-/// independent, so running them side by side keeps the processor busy where one waits on its own
-/// last step (a grid search asks for thousands). Each sequence equals ringing_sequence's to the bit.
-std::vector<std::vector<double>> ringing_sequences(std::span<const double> times_s, std::span<const double> inputs,
-                                                   std::span<const RingingMode> modes);
-
 /// r of the torque at the history's sample alone, summed over the changes before it back to where
 /// e^{-zeta w_n tau} < 1e-6: what a model that holds no state computes for one sample [N·m].
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode);

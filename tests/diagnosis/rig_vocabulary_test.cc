@@ -299,24 +299,6 @@ TEST(RigVocabulary, RingingOfTheModelAgreesWithTheSequenceAndTheOde) {
   EXPECT_NEAR(with.predict(c.recording[503].input).moments.y_nm, c.model.predict(c.recording[503].input).moments.y_nm, 1e-9);
 }
 
-// The ringing estimate's grid makes the ringings of several dampings in one pass: each must be
-// the single sequence's to the bit, or the grid's best and its ties could move.
-TEST(RigVocabulary, RingingSequencesSideBySideAreEachSequenceToTheBit) {
-  const RingingCase c = ringing_case(true);
-  std::vector<double> times, torques;
-  for (const RecordedSample& o : c.recording) { times.push_back(o.input.time_s); torques.push_back(o.input.torque_nm); }
-  const std::vector<RingingMode> modes = {{kModeHz, kModeZeta}, {0.2, 0.01}, {kModeHz, 0.2}, {44.9, 0.07}};
-  const std::vector<std::vector<double>> side_by_side = ringing_sequences(times, torques, modes);
-  ASSERT_EQ(side_by_side.size(), modes.size());
-  for (std::size_t m = 0; m < modes.size(); ++m) {
-    const std::vector<double> alone = ringing_sequence(times, torques, modes[m]);
-    ASSERT_EQ(side_by_side[m].size(), alone.size());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < alone.size(); ++i) differing += side_by_side[m][i] != alone[i];
-    EXPECT_EQ(differing, 0u) << m;
-  }
-}
-
 /// f_n and zeta of the ringing term `name` ("ringing_<f>Hz_zeta<z>_on_y").
 std::pair<double, double> mode_of(const std::string& name) {
   std::smatch m;
