@@ -57,6 +57,9 @@ class CouplingModel {
   ModelPrediction predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const;
   /// The sum of the effects' input timings at this sample.
   InputTiming input_timing(const MeasurementSample& sample) const;
+  /// Whether predict_at(recording, i) reads samples other than i (an effect times the inputs or
+  /// reads their history): a caller that changes a recording's other rows must then keep them.
+  bool reads_other_samples() const { return times_inputs_ || reads_history_; }
 
  private:
   CouplingDefinition base_coupling_;

@@ -26,6 +26,7 @@
 
 #include "diagnosis/candidate_score.h"
 #include "core/recorded_sample.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
@@ -59,9 +60,9 @@ struct FormulaSettings {
 
 /// The time_cycle, step and ringing terms of `residual` on `rows` (in time order): the dominant cycle
 /// (cycle_period.h), change in mean (change_point.h) and mode of the rig (ringing_estimate.h), each
-/// where it stands out of the noise.
+/// where it stands out of the noise. The ringing's grid is shared over `parallel`.
 std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
-                                        const Eigen::MatrixX2d& residual);
+                                        const Eigen::MatrixX2d& residual, const ParallelFor& parallel = serial_for());
 
 /// The terms every listed row can evaluate, as columns: rows k (M_sy') and n + k (M_sz') for
 /// observations[rows[k]], with the model's moments taken as measured minus `residual`. The

@@ -36,12 +36,13 @@ class CentredInputAverage final : public Effect {
 
 bool times_inputs(const CandidateScore& c) { return c.fit && c.fit->effect && c.fit->effect->times_inputs(); }
 
-/// The model's mean square on `search` of the recording with shrunk inputs; infinite when a row
+/// The model's mean square on `search` of the recording with inputs shrunk by `shrinker`; infinite when a row
 /// cannot be predicted.
-double shrunk_mean_square(const CouplingModel& model, std::span<const RecordedSample> observations,
-                          std::span<const std::size_t> rows, std::span<const std::size_t> search,
+double shrunk_mean_square(const CouplingModel& model, InputShrinker& shrinker, std::span<const std::size_t> search,
                           const InputShrinks& shrinks, const ParallelFor& parallel) {
-  const std::vector<RecordedSample> shrunk = with_shrunk_inputs(observations, rows, shrinks);
+  // A model that reads each row alone needs the search rows read back, not the whole recording.
+  const std::span<const RecordedSample> shrunk =
+      model.reads_other_samples() ? shrinker.shrunk(shrinks) : shrinker.shrunk(shrinks, search);
   const ModelResiduals r = model_residuals(model, shrunk, search, parallel);
   return r.failed_rows.empty() ? pooled_mean_square(r.residual) : std::numeric_limits<double>::infinity();
 }
@@ -125,14 +126,15 @@ InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const Recor
   if (rows.size() < 2) return best;
   const double duration = observations[rows.back()].input.time_s - observations[rows.front()].input.time_s;
   const double interval = duration / static_cast<double>(rows.size() - 1);
-  double best_ms = shrunk_mean_square(model, observations, rows, search, best, parallel);
+  InputShrinker shrinker(observations, rows);
+  double best_ms = shrunk_mean_square(model, shrinker, search, best, parallel);
   for (InputShrink InputShrinks::*channel : {&InputShrinks::torque, &InputShrinks::misalignment, &InputShrinks::direction}) {
     for (double window_s : {0.25, 1.0, 4.0, 16.0, 64.0}) {
       if (window_s < 2.0 * interval || window_s > 0.25 * duration) continue;
       for (double keep : {0.0, 0.5}) {
         InputShrinks trial = best;
         trial.*channel = {window_s, keep};
-        const double ms = shrunk_mean_square(model, observations, rows, search, trial, parallel);
+        const double ms = shrunk_mean_square(model, shrinker, search, trial, parallel);
         if (ms < best_ms) {
           best_ms = ms;
           best = trial;

@@ -14,6 +14,8 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -41,5 +43,40 @@ struct InputShrinks {
 /// over half a second. Rows not listed are copied unchanged.
 std::vector<RecordedSample> with_shrunk_inputs(std::span<const RecordedSample> observations,
                                                std::span<const std::size_t> rows, const InputShrinks& shrinks);
+
+/// with_shrunk_inputs for one trial of shrinks after another (a search over windows and keeps):
+/// the recording is copied once, each trial rewrites only the three inputs, and the centred means
+/// of each channel and window are made once. The same values as with_shrunk_inputs, to the bit.
+class InputShrinker {
+ public:
+  /// Both must outlive the shrinker.
+  InputShrinker(std::span<const RecordedSample> observations, std::span<const std::size_t> rows);
+  /// with_shrunk_inputs(observations, rows, shrinks), valid until the next call.
+  std::span<const RecordedSample> shrunk(const InputShrinks& shrinks);
+  /// The same at the listed rows `read` (some of `rows`); the others hold whatever an earlier
+  /// call left. For a caller that reads no other row (a model predicting those rows alone,
+  /// CouplingModel::reads_other_samples): a long recording's 1,500 search rows, not all of it.
+  std::span<const RecordedSample> shrunk(const InputShrinks& shrinks, std::span<const std::size_t> read);
+
+ private:
+  enum Channel { kTorque, kMisalignment, kDirectionCos, kDirectionSin };
+  const std::vector<double>& means(Channel channel, double window_s);
+  /// Each shrunk channel's centred means (null for a channel left as recorded).
+  struct Means {
+    const double* torque = nullptr;
+    const double* misalignment = nullptr;
+    const double* direction_cos = nullptr;
+    const double* direction_sin = nullptr;
+  };
+  Means means_for(const InputShrinks& shrinks);
+  /// Writes the three inputs of observation rows_[k] by `shrinks`.
+  void write(const InputShrinks& shrinks, const Means& m, std::size_t k);
+
+  std::span<const RecordedSample> observations_;
+  std::span<const std::size_t> rows_;
+  std::vector<RecordedSample> buffer_;
+  std::vector<std::size_t> position_;  ///< of each observation in rows_ (rows_.size() for none)
+  std::map<std::pair<Channel, double>, std::vector<double>> means_;
+};
 
 }  // namespace gc

@@ -23,13 +23,16 @@
 
 #include "core/effects/ringing_response.h"
 #include "core/recorded_sample.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
 /// The mode whose torque ringing best explains `residual` (rows k of observations[rows[k]], in time
 /// order; the ringing itself from every observation, in the recording's order); nullopt when the
-/// torque does not change or no mode stands out of the noise.
+/// torque does not change or no mode stands out of the noise. The grid's frequencies are shared
+/// over `parallel`; the result does not depend on how.
 std::optional<RingingMode> dominant_ringing(std::span<const RecordedSample> observations,
-                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual);
+                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                            const ParallelFor& parallel = serial_for());
 
 }  // namespace gc

@@ -167,7 +167,7 @@ void demote_what_noise_explains(
   // The family is every candidate the round tried, not only those that came this far: the
   // claimable ones were picked from them on this same residual.
   const std::size_t family = ranking.size() + (formula ? 1 : 0) + also_tried;
-  const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed, family);
+  const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed, family, parallel);
   for (std::size_t k = 0; k < tested.size(); ++k) {
     tested[k]->surrogate_p = p[k];
     if (p[k] <= settings.level) continue;

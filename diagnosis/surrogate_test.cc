@@ -272,6 +272,8 @@ double student_two_sided_p(double t, int nu) {
 /// by the tail of their distribution instead of thousands more (a strong effect needs no 6,000
 /// surrogates).
 constexpr int kBeforeTail = 199;
+/// Surrogates whose shares are found side by side: at most this less one are drawn past a stop.
+constexpr int kSurrogatesAtOnce = 8;
 
 /// Standard deviations out of the surrogates' shares beyond which their Beta's tail is trusted.
 constexpr double kFarOut = 8.0;
@@ -312,7 +314,8 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
 }
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
-                                       double level, std::uint64_t seed, std::size_t family_size) {
+                                       double level, std::uint64_t seed, std::size_t family_size,
+                                       const ParallelFor& parallel) {
   std::vector<double> adjusted(designs.size(), 1.0);
   if (designs.empty() || !(level > 0.0)) return adjusted;
   const double family = static_cast<double>(std::max(family_size, designs.size()));
@@ -355,16 +358,34 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       int as_well = 0, drawn = 0;
       double sum = 0.0, sum_of_squares = 0.0;
       std::optional<double> beyond_doubt;
-      while (drawn < count) {
-        ++drawn;
-        const double share = largest_share(stacked(surrogates.next()));
-        sum += share;
-        sum_of_squares += share * share;
-        if (share >= observed && ++as_well >= enough) break;
-        if (drawn == kBeforeTail && as_well == 0) {
-          beyond_doubt = tail_bound(observed, sum / drawn, sum_of_squares / drawn - std::pow(sum / drawn, 2));
-          if (*beyond_doubt <= level / (4.0 * family)) break;
-          beyond_doubt.reset();
+      // A few surrogates drawn in order, their shares found side by side, then taken in order as
+      // one at a time would take them: a stop leaves the rest of the batch unused.
+      std::vector<Eigen::VectorXd> batch;
+      std::vector<double> shares;
+      bool stopped = false;
+      while (drawn < count && !stopped) {
+        batch.clear();
+        const int ahead = std::min(kSurrogatesAtOnce, count - drawn);
+        for (int i = 0; i < ahead; ++i) batch.push_back(stacked(surrogates.next()));
+        shares.assign(batch.size(), 0.0);
+        parallel(batch.size(), [&](std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i) shares[i] = largest_share(batch[i]);
+        });
+        for (std::size_t i = 0; i < shares.size() && !stopped; ++i) {
+          ++drawn;
+          const double share = shares[i];
+          sum += share;
+          sum_of_squares += share * share;
+          if (share >= observed && ++as_well >= enough) {
+            stopped = true;
+          } else if (drawn == kBeforeTail && as_well == 0) {
+            beyond_doubt = tail_bound(observed, sum / drawn, sum_of_squares / drawn - std::pow(sum / drawn, 2));
+            if (*beyond_doubt <= level / (4.0 * family)) {
+              stopped = true;
+            } else {
+              beyond_doubt.reset();
+            }
+          }
         }
       }
       p = as_well >= enough ? 1.0 : beyond_doubt.value_or((1.0 + as_well) / (1.0 + static_cast<double>(drawn)));

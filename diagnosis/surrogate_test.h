@@ -33,6 +33,8 @@
 
 #include <Eigen/Dense>
 
+#include "diagnosis/parallel_for.h"
+
 namespace gc {
 
 /// What a surrogate's spectrum is given beside the periodogram of the series it is drawn from.
@@ -119,7 +121,11 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
 /// `family_size`: how many candidates the search tried (at least the designs): the designs tested
 /// are those that passed the claim rule's other tests on the same residual, so the one that fits
 /// noise best among all tried is among them, and the correction must count every one tried.
+///
+/// The surrogates are drawn in order, a few at a time, and their shares found over `parallel`,
+/// then taken in order: the p-values do not depend on the threads.
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
-                                       double level, std::uint64_t seed, std::size_t family_size = 0);
+                                       double level, std::uint64_t seed, std::size_t family_size = 0,
+                                       const ParallelFor& parallel = serial_for());
 
 }  // namespace gc

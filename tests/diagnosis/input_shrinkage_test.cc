@@ -63,5 +63,43 @@ TEST(InputShrinkage, ADirectionIsAveragedAcrossPlusMinusPi) {
               2e-3);
 }
 
+// A search reads one trial after another through one shrinker: each trial's inputs are a fresh
+// with_shrunk_inputs' to the bit, whatever the trial before left, on every row or on those read.
+TEST(InputShrinkage, AShrinkerGivesEachTrialAsAFreshReadBack) {
+  std::vector<RecordedSample> r = ramp(40);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    r[i].input.misalignment_rad = 1e-3 * std::sin(0.3 * static_cast<double>(i));
+    r[i].input.direction_rad = std::numbers::pi - 0.05 * static_cast<double>(i % 5);
+  }
+  const std::vector<std::size_t> rows = {0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 12, 20, 21, 22, 30, 31, 39};
+  const std::vector<std::size_t> read = {2, 3, 4, 21, 39};  // 4 is not listed: as recorded
+  InputShrinks torque, both, direction;
+  torque.torque = {0.25, 0.0};
+  both.torque = {1.0, 0.5};
+  both.misalignment = {0.25, 0.0};
+  direction.direction = {1.0, 0.5};
+  InputShrinker shrinker(r, rows);
+  for (const InputShrinks& trial : {torque, both, direction, InputShrinks{}, both}) {
+    const std::vector<RecordedSample> fresh = with_shrunk_inputs(r, rows, trial);
+    const std::span<const RecordedSample> all = shrinker.shrunk(trial);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      differing += all[i].input.torque_nm != fresh[i].input.torque_nm ||
+                   all[i].input.misalignment_rad != fresh[i].input.misalignment_rad ||
+                   all[i].input.direction_rad != fresh[i].input.direction_rad;
+    }
+    EXPECT_EQ(differing, 0u);
+    shrinker.shrunk(direction, read);  // another trial in between, on the rows read
+    const std::span<const RecordedSample> again = shrinker.shrunk(trial, read);
+    differing = 0;
+    for (const std::size_t i : read) {
+      differing += again[i].input.torque_nm != fresh[i].input.torque_nm ||
+                   again[i].input.misalignment_rad != fresh[i].input.misalignment_rad ||
+                   again[i].input.direction_rad != fresh[i].input.direction_rad;
+    }
+    EXPECT_EQ(differing, 0u);
+  }
+}
+
 }  // namespace
 }  // namespace gc

@@ -21,6 +21,7 @@
 #include "core/effects/expression.h"
 #include "core/effects/expression_terms.h"
 #include "diagnosis/synthesis/synthesize.h"
+#include "parallel/thread_parallel_for.h"
 #include "tests/core/nrel_couplings.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 
@@ -333,6 +334,26 @@ bool offers_ringing(const RingingCase& c) {
     residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
   }
   return dominant_ringing(c.recording, rows, residual).has_value();
+}
+
+// The grid's frequencies are shared over the threads and taken back in the grid's order: the mode
+// found does not depend on the threads.
+TEST(RigVocabulary, RingingEstimateIsTheSameOnOneThreadAndTwo) {
+  const RingingCase c = ringing_case(true);
+  std::vector<std::size_t> rows;
+  Eigen::MatrixX2d residual(static_cast<Eigen::Index>(c.recording.size()), 2);
+  for (std::size_t i = 0; i < c.recording.size(); ++i) {
+    rows.push_back(i);
+    const SensorMoments p = c.model.predict_at(std::span<const RecordedSample>(c.recording), i).moments;
+    residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
+  }
+  const std::optional<RingingMode> one = dominant_ringing(c.recording, rows, residual);
+  const std::optional<RingingMode> two = dominant_ringing(c.recording, rows, residual, thread_parallel_for(2));
+  ASSERT_TRUE(one.has_value());
+  ASSERT_TRUE(two.has_value());
+  EXPECT_NEAR(one->natural_frequency_hz, kModeHz, 0.1 * kModeHz);
+  EXPECT_EQ(one->natural_frequency_hz, two->natural_frequency_hz);
+  EXPECT_EQ(one->damping_ratio, two->damping_ratio);
 }
 
 TEST(RigVocabulary, FindsNoRingingInNoiseAlone) {

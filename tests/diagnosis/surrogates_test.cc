@@ -135,6 +135,32 @@ TEST(Surrogates, AFamilyOfDesignsIsAdjustedForItsSize) {
   EXPECT_NEAR(surrogate_p_values(y, {{weak, 0, false, {}}}, 0.01, 1, 8)[0], std::min(1.0, 8 * alone), 0.2);
 }
 
+// The surrogates' shares are found side by side and taken in order: however the work is shared,
+// each p-value is the same to the bit. Here one surrogate a call, last first; a weak design draws
+// every surrogate, a strong one stops after the first 199 on their tail.
+TEST(Surrogates, PValuesDoNotDependOnHowTheSharesAreShared) {
+  std::mt19937_64 random(11);
+  std::normal_distribution<double> white;
+  Eigen::MatrixX2d y(kRows, 2);
+  for (int i = 0; i < kRows; ++i) y.row(i) << white(random) + 0.5 * std::cos(i / 10.0), white(random);
+  Eigen::MatrixXd strong = Eigen::MatrixXd::Zero(2 * kRows, 1), weak = Eigen::MatrixXd::Zero(2 * kRows, 1);
+  for (int i = 0; i < kRows; ++i) {
+    strong(i, 0) = std::cos(i / 10.0);
+    weak(kRows + i, 0) = std::sin(i / 7.0);
+  }
+  const ParallelFor backwards = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    for (std::size_t i = count; i-- > 0;) body(i, i + 1);
+  };
+  const std::vector<SurrogateDesign> designs = {{strong, 0, false, {}}, {weak, 0, false, {}}};
+  const std::vector<double> serial = surrogate_p_values(y, designs, 0.01, 5);
+  const std::vector<double> shared = surrogate_p_values(y, designs, 0.01, 5, 0, backwards);
+  ASSERT_EQ(serial.size(), 2u);
+  EXPECT_LE(serial[0], 0.01);
+  EXPECT_GT(serial[1], 0.01);
+  EXPECT_EQ(shared[0], serial[0]);
+  EXPECT_EQ(shared[1], serial[1]);
+}
+
 /// A bump on channel y centred at `at` of the rows, 3 % of them wide: a correction that one
 /// parameter places (a reference temperature, a torque, a time), each place nearly apart from the next.
 Eigen::MatrixXd bump(double at) {
