@@ -50,6 +50,7 @@ const char* to_string(DataQualityKind kind) {
     case DataQualityKind::quantisation: return "quantisation";
     case DataQualityKind::irregular_time: return "irregular_time";
     case DataQualityKind::spike: return "spike";
+    case DataQualityKind::model_jump: return "model_jump";
   }
   return "";
 }

@@ -26,9 +26,11 @@ enum class DataQualityKind {
   quantisation,    ///< values on a grid coarse against the channel's noise
   irregular_time,  ///< time stamps duplicated or jittered
   spike,           ///< isolated samples far from their neighbours in the model's residual
+  model_jump,      ///< rows where the model jumps within the input sensors' noise (model_jumps.h)
 };
 
-/// "clipped", "stuck", "dropout", "time_gap", "polarity_flip", "quantisation", "irregular_time", "spike".
+/// "clipped", "stuck", "dropout", "time_gap", "polarity_flip", "quantisation", "irregular_time", "spike",
+/// "model_jump".
 const char* to_string(DataQualityKind kind);
 
 /// A contiguous stretch of rows (indices into the recording, in time order).

@@ -62,6 +62,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
   exclude_moment_flips(out, observations, rows, residual);
   out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
+  exclude_rows_at_model_jumps(out, model, observations, rows, residual, parallel);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {
     throw InvalidInput("recording.rows", static_cast<double>(rows.size()),

@@ -76,7 +76,7 @@ std::string described(const InputShrinks& s) {
   const auto one = [&](const char* name, const InputShrink& x) {
     if (x.none()) return;
     if (out.tellp() > 0) out << ", ";
-    out << name << " over " << x.window_s << " s keeping " << 100.0 * x.keep << " %";
+    out << name << " over " << x.window_s << " s" << (x.median ? " (median)" : "") << " keeping " << 100.0 * x.keep << " %";
   };
   one("torque", s.torque);
   one("misalignment", s.misalignment);
@@ -126,18 +126,25 @@ InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const Recor
   if (rows.size() < 2) return best;
   const double duration = observations[rows.back()].input.time_s - observations[rows.front()].input.time_s;
   const double interval = duration / static_cast<double>(rows.size() - 1);
-  InputShrinker shrinker(observations, rows);
+  // The centres are made at the search rows alone for a model that reads each row alone.
+  const std::span<const std::size_t> at = model.reads_other_samples() ? std::span<const std::size_t>{} : search;
+  InputShrinker shrinker(observations, rows, at);
   double best_ms = shrunk_mean_square(model, shrinker, search, best, parallel);
   for (InputShrink InputShrinks::*channel : {&InputShrinks::torque, &InputShrinks::misalignment, &InputShrinks::direction}) {
     for (double window_s : {0.25, 1.0, 4.0, 16.0, 64.0}) {
       if (window_s < 2.0 * interval || window_s > 0.25 * duration) continue;
-      for (double keep : {0.0, 0.5}) {
-        InputShrinks trial = best;
-        trial.*channel = {window_s, keep};
-        const double ms = shrunk_mean_square(model, shrinker, search, trial, parallel);
-        if (ms < best_ms) {
-          best_ms = ms;
-          best = trial;
+      // Torque and misalignment also by the median, which keeps a programme's steps and ramps; a
+      // direction's turns are averaged as unit vectors (input_shrinkage.h).
+      for (const bool median : {false, true}) {
+        if (median && channel == &InputShrinks::direction) continue;
+        for (double keep : {0.0, 0.5}) {
+          InputShrinks trial = best;
+          trial.*channel = {window_s, keep, median};
+          const double ms = shrunk_mean_square(model, shrinker, search, trial, parallel);
+          if (ms < best_ms) {
+            best_ms = ms;
+            best = trial;
+          }
         }
       }
     }
@@ -151,7 +158,8 @@ std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::
   ReadBackInputs out;
   out.shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
   if (out.shrinks.none()) return std::nullopt;
-  out.recording = with_shrunk_inputs(observations, rows, out.shrinks);
+  out.recording = with_shrunk_inputs(observations, rows, out.shrinks,
+                                     model.reads_other_samples() ? std::span<const std::size_t>{} : search);
   ModelResiduals r = model_residuals(model, out.recording, search, parallel);
   if (!r.failed_rows.empty()) return std::nullopt;
   out.residual = std::move(r.residual);

@@ -11,12 +11,20 @@
 //
 // keep in [0, 1] (0: the local mean alone; 1: the input as recorded). Centred, so it smooths
 // without shifting anything in time; per channel, because each sensor has its own noise.
+//
+// Or the local median in the place of the mean, for torque and misalignment: a programme's steps
+// and ramps pass a centred median unchanged (the median of a monotone stretch is its centre row),
+// where a mean smears a torque staircase over the window. A mean had to stay shorter than the
+// stairs, too short to average a transducer's noise, and the model fed a noisy torque held next to
+// one of its jumps (the integer quarter sums of eqs 13 and 42-43: two more teeth in contact, 2 kN·m
+// more moment, within a kN·m of torque) flipped across it; an effect that took the bias this left
+// was claimed on noise alone.
 #pragma once
 
 #include <cstddef>
 #include <map>
-#include <utility>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "core/recorded_sample.h"
@@ -26,6 +34,7 @@ namespace gc {
 struct InputShrink {
   double window_s = 0.0;  ///< W, the centred window [s]
   double keep = 1.0;      ///< the share of the departure from the window's mean kept, in [0, 1]
+  bool median = false;    ///< the window's median in the place of its mean (torque, misalignment)
   bool none() const { return window_s <= 0.0 || keep >= 1.0; }
 };
 
@@ -41,42 +50,48 @@ struct InputShrinks {
 /// only, so excluded rows neither feed nor receive an average) read back by `shrinks`. Derived
 /// inputs (rates, loading and travel direction) are left as recorded: they are already averaged
 /// over half a second. Rows not listed are copied unchanged.
+/// `at`: the rows (ascending, a subset of `rows`) whose inputs are wanted; the others are copied
+/// unchanged. Empty: all of `rows`.
 std::vector<RecordedSample> with_shrunk_inputs(std::span<const RecordedSample> observations,
-                                               std::span<const std::size_t> rows, const InputShrinks& shrinks);
+                                               std::span<const std::size_t> rows, const InputShrinks& shrinks,
+                                               std::span<const std::size_t> at = {});
 
 /// with_shrunk_inputs for one trial of shrinks after another (a search over windows and keeps):
 /// the recording is copied once, each trial rewrites only the three inputs, and the centred means
-/// of each channel and window are made once. The same values as with_shrunk_inputs, to the bit.
+/// (or medians) of each channel and window are made once. The same values as with_shrunk_inputs,
+/// to the bit.
 class InputShrinker {
  public:
-  /// Both must outlive the shrinker.
-  InputShrinker(std::span<const RecordedSample> observations, std::span<const std::size_t> rows);
-  /// with_shrunk_inputs(observations, rows, shrinks), valid until the next call.
+  /// Both must outlive the shrinker. `at`: as with_shrunk_inputs' (the centres are made there only).
+  InputShrinker(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                std::span<const std::size_t> at = {});
+  /// with_shrunk_inputs(observations, rows, shrinks, at), valid until the next call.
   std::span<const RecordedSample> shrunk(const InputShrinks& shrinks);
-  /// The same at the listed rows `read` (some of `rows`); the others hold whatever an earlier
+  /// The same at the listed rows `read` (some of `at`); the others hold whatever an earlier
   /// call left. For a caller that reads no other row (a model predicting those rows alone,
   /// CouplingModel::reads_other_samples): a long recording's 1,500 search rows, not all of it.
   std::span<const RecordedSample> shrunk(const InputShrinks& shrinks, std::span<const std::size_t> read);
 
  private:
   enum Channel { kTorque, kMisalignment, kDirectionCos, kDirectionSin };
-  const std::vector<double>& means(Channel channel, double window_s);
-  /// Each shrunk channel's centred means (null for a channel left as recorded).
-  struct Means {
+  const std::vector<double>& centres(Channel channel, const InputShrink& shrink);
+  /// Each shrunk channel's centred means or medians (null for a channel left as recorded).
+  struct Centres {
     const double* torque = nullptr;
     const double* misalignment = nullptr;
     const double* direction_cos = nullptr;
     const double* direction_sin = nullptr;
   };
-  Means means_for(const InputShrinks& shrinks);
+  Centres centres_for(const InputShrinks& shrinks);
   /// Writes the three inputs of observation rows_[k] by `shrinks`.
-  void write(const InputShrinks& shrinks, const Means& m, std::size_t k);
+  void write(const InputShrinks& shrinks, const Centres& m, std::size_t k);
 
   std::span<const RecordedSample> observations_;
   std::span<const std::size_t> rows_;
+  std::vector<bool> wanted_;  ///< per position of rows_: one of `at`
   std::vector<RecordedSample> buffer_;
   std::vector<std::size_t> position_;  ///< of each observation in rows_ (rows_.size() for none)
-  std::map<std::pair<Channel, double>, std::vector<double>> means_;
+  std::map<std::tuple<Channel, double, bool>, std::vector<double>> centres_;
 };
 
 }  // namespace gc

@@ -2,22 +2,31 @@
 
 #include <algorithm>
 
+#include "diagnosis/model_jumps.h"
 #include "diagnosis/noise_estimate.h"
 #include "diagnosis/polarity_flip.h"
 #include "diagnosis/row_selection.h"
 
 namespace gc {
+namespace {
+
+/// `rows` and `residual` without `excluded` (ascending).
+void leave_out(const std::vector<std::size_t>& excluded, std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual) {
+  if (excluded.empty()) return;
+  std::vector<std::size_t> kept;
+  for (std::size_t r : rows) if (!std::binary_search(excluded.begin(), excluded.end(), r)) kept.push_back(r);
+  residual = select_rows(residual, rows, kept);
+  rows = std::move(kept);
+}
+
+}  // namespace
 
 std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations) {
   std::vector<std::size_t> outliers;
   for (std::size_t position : outlier_positions(residual, deviations)) outliers.push_back(rows[position]);
-  if (outliers.empty()) return outliers;
   std::vector<std::size_t> sorted = outliers;
   std::sort(sorted.begin(), sorted.end());
-  std::vector<std::size_t> kept;
-  for (std::size_t r : rows) if (!std::binary_search(sorted.begin(), sorted.end(), r)) kept.push_back(r);
-  residual = select_rows(residual, rows, kept);
-  rows = std::move(kept);
+  leave_out(sorted, rows, residual);
   return outliers;
 }
 
@@ -28,12 +37,17 @@ void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observ
     flipped.insert(flipped.end(), f.rows.begin(), f.rows.end());
     out.data_quality.push_back(std::move(f));
   }
-  if (flipped.empty()) return;
   std::sort(flipped.begin(), flipped.end());
-  std::vector<std::size_t> kept;
-  for (std::size_t r : rows) if (!std::binary_search(flipped.begin(), flipped.end(), r)) kept.push_back(r);
-  residual = select_rows(residual, rows, kept);
-  rows = std::move(kept);
+  leave_out(flipped, rows, residual);
+}
+
+void exclude_rows_at_model_jumps(Diagnosis& out, const CouplingModel& model, std::span<const RecordedSample> observations,
+                                 std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, const ParallelFor& parallel) {
+  std::optional<DataQualityFinding> jumps =
+      rows_at_model_jumps(model, observations, rows, estimate_noise(residual).pooled_sigma_nm(), parallel);
+  if (!jumps) return;
+  leave_out(jumps->rows, rows, residual);
+  out.data_quality.push_back(std::move(*jumps));
 }
 
 }  // namespace gc

@@ -8,8 +8,10 @@
 
 #include <Eigen/Dense>
 
+#include "core/coupling_model.h"
 #include "core/recorded_sample.h"
 #include "diagnosis/diagnose.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
@@ -21,5 +23,10 @@ std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen:
 /// its rows leave `rows` and `residual` and join the data-quality findings.
 void exclude_moment_flips(Diagnosis& out, std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
                           Eigen::MatrixX2d& residual);
+
+/// Rows where the model jumps within the input sensors' noise (model_jumps.h): they leave `rows`
+/// and `residual` and join the data-quality findings.
+void exclude_rows_at_model_jumps(Diagnosis& out, const CouplingModel& model, std::span<const RecordedSample> observations,
+                                 std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, const ParallelFor& parallel);
 
 }  // namespace gc

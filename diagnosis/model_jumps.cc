@@ -1,0 +1,123 @@
+#include "diagnosis/model_jumps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "diagnosis/input_shrinkage.h"
+#include "diagnosis/row_selection.h"
+#include "diagnosis/verdict_text.h"
+
+namespace gc {
+namespace {
+
+/// The running median of an input spans 4 s: several correlation times of a transducer's filter.
+constexpr double kMedianWindowS = 4.0;
+constexpr std::size_t kLeastRows = 31;
+constexpr double kNoiseDeviations = 2.0;   ///< how far either side of the logged input is tested
+constexpr double kJumpShareOfNoise = 0.25;  ///< a second difference beyond this share of the moments' noise is a jump
+
+double median_of(std::vector<double>& v) {
+  const auto middle = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), middle, v.end());
+  return *middle;
+}
+
+/// The largest second difference of the two moment channels across +-step about `s`, along the
+/// input `value` points at; 0 where the model refuses a side (beyond the jam angle, a negative
+/// misalignment).
+double second_difference(const CouplingModel& model, const MeasurementSample& s, double MeasurementSample::*input,
+                         double step, const SensorMoments& centre) {
+  MeasurementSample lo = s, hi = s;
+  lo.*input -= step;
+  hi.*input += step;
+  if (lo.*input < 0.0) return 0.0;
+  try {
+    const SensorMoments a = model.predict(lo).moments, b = model.predict(hi).moments;
+    return std::max(std::abs(a.y_nm - 2.0 * centre.y_nm + b.y_nm), std::abs(a.z_nm - 2.0 * centre.z_nm + b.z_nm));
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+/// An input's noise (input_noise_sigma), from its running median at `tested`.
+struct InputNoise {
+  double sigma = 0.0;
+};
+
+InputNoise input_noise(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                       const std::vector<std::size_t>& tested, double (*value)(const MeasurementSample&)) {
+  InputNoise out;
+  if (rows.size() < kLeastRows) return out;
+  // The median is computed on the torque's place in a copy of the recording.
+  std::vector<RecordedSample> channel(observations.begin(), observations.end());
+  for (std::size_t r : rows) channel[r].input.torque_nm = value(observations[r].input);
+  InputShrinks median;
+  median.torque = {kMedianWindowS, 0.0, true};
+  const std::vector<RecordedSample> centred = with_shrunk_inputs(channel, rows, median, tested);
+  std::vector<double> departures;
+  departures.reserve(tested.size());
+  for (std::size_t r : tested) {
+    departures.push_back(std::abs(channel[r].input.torque_nm - centred[r].input.torque_nm));
+  }
+  out.sigma = 1.4826 * median_of(departures);
+  return out;
+}
+
+}  // namespace
+
+double input_noise_sigma(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                         double (*value)(const MeasurementSample&)) {
+  return input_noise(observations, rows, evenly_spaced(rows, kJumpTestedRows), value).sigma;
+}
+
+std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model,
+                                                      std::span<const RecordedSample> observations,
+                                                      const std::vector<std::size_t>& rows, double moment_sigma_nm,
+                                                      const ParallelFor& parallel) {
+  const std::vector<std::size_t> tested = evenly_spaced(rows, kJumpTestedRows);
+  const InputNoise torque = input_noise(observations, rows, tested, [](const MeasurementSample& s) { return s.torque_nm; });
+  const InputNoise zeta =
+      input_noise(observations, rows, tested, [](const MeasurementSample& s) { return s.misalignment_rad; });
+  if (!(moment_sigma_nm > 0.0) || (torque.sigma <= 0.0 && zeta.sigma <= 0.0)) return std::nullopt;
+  std::vector<char> jumps(tested.size(), 0);
+  const double least = kJumpShareOfNoise * moment_sigma_nm;
+  parallel(tested.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const MeasurementSample& s = observations[tested[k]].input;
+      SensorMoments centre;
+      try {
+        centre = model.predict(s).moments;
+      } catch (const std::exception&) {
+        continue;
+      }
+      jumps[k] = (torque.sigma > 0.0 && second_difference(model, s, &MeasurementSample::torque_nm,
+                                                          kNoiseDeviations * torque.sigma, centre) > least) ||
+                 (zeta.sigma > 0.0 && second_difference(model, s, &MeasurementSample::misalignment_rad,
+                                                        kNoiseDeviations * zeta.sigma, centre) > least);
+    }
+  });
+  // Each row follows the tested row of its stretch (evenly_spaced takes position k n / count).
+  std::vector<std::size_t> flagged;
+  for (std::size_t p = 0; p < rows.size(); ++p) {
+    if (jumps[std::min(tested.size() - 1, p * tested.size() / rows.size())]) flagged.push_back(rows[p]);
+  }
+  if (flagged.empty()) return std::nullopt;
+  std::sort(flagged.begin(), flagged.end());
+  // At most half the rows: beyond that the running median's departures are the programme's own
+  // wander (a misalignment in an Ornstein-Uhlenbeck walk read as 0.2 mrad of probe noise put 11,401
+  // of 11,421 rows within reach of a step), not a sensor's noise, and nothing is said.
+  if (2 * flagged.size() > rows.size()) return std::nullopt;
+  DataQualityFinding finding{DataQualityKind::model_jump, "torque, misalignment", flagged, row_spans(flagged, observations),
+                             true, ""};
+  std::ostringstream detail;
+  detail << flagged.size() << " rows of " << rows.size() << " have an input within two deviations of its sensor's noise "
+         << "(torque " << short_number(torque.sigma) << " N·m, misalignment " << short_number(zeta.sigma)
+         << " rad) of a step of the model's moments (a pair of teeth more in contact, eqs 13 and 42-43): logged on "
+         << "either side of the step at random, the model fed them jumps where the coupling does not, and leaves a bias "
+         << "no effect explains; excluded";
+  finding.detail = detail.str();
+  return finding;
+}
+
+}  // namespace gc
