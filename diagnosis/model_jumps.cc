@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "diagnosis/input_shrinkage.h"
@@ -11,8 +12,11 @@
 namespace gc {
 namespace {
 
-/// The running median of an input spans 4 s: several correlation times of a transducer's filter.
-constexpr double kMedianWindowS = 4.0;
+/// The running medians of an input: over 4 s, several correlation times of a transducer's filter;
+/// and shorter, which a programme's turns (a misalignment sweep reversing every few seconds) do not
+/// reach. The smallest estimate is the noise's: a turn inside the window only adds to it.
+constexpr double kMedianWindowsS[] = {0.25, 1.0, 4.0};
+constexpr double kLeastWindowRows = 9.0;
 constexpr std::size_t kLeastRows = 31;
 constexpr double kNoiseDeviations = 2.0;   ///< how far either side of the logged input is tested
 constexpr double kJumpShareOfNoise = 0.25;  ///< a second difference beyond this share of the moments' noise is a jump
@@ -49,18 +53,21 @@ InputNoise input_noise(std::span<const RecordedSample> observations, const std::
                        const std::vector<std::size_t>& tested, double (*value)(const MeasurementSample&)) {
   InputNoise out;
   if (rows.size() < kLeastRows) return out;
+  const double interval = (observations[rows.back()].input.time_s - observations[rows.front()].input.time_s) /
+                          static_cast<double>(rows.size() - 1);
   // The median is computed on the torque's place in a copy of the recording.
   std::vector<RecordedSample> channel(observations.begin(), observations.end());
   for (std::size_t r : rows) channel[r].input.torque_nm = value(observations[r].input);
-  InputShrinks median;
-  median.torque = {kMedianWindowS, 0.0, true};
-  const std::vector<RecordedSample> centred = with_shrunk_inputs(channel, rows, median, tested);
-  std::vector<double> departures;
-  departures.reserve(tested.size());
-  for (std::size_t r : tested) {
-    departures.push_back(std::abs(channel[r].input.torque_nm - centred[r].input.torque_nm));
+  out.sigma = std::numeric_limits<double>::infinity();
+  for (const double window_s : kMedianWindowsS) {
+    InputShrinks median;
+    median.torque = {std::max(window_s, kLeastWindowRows * interval), 0.0, true};
+    const std::vector<RecordedSample> centred = with_shrunk_inputs(channel, rows, median, tested);
+    std::vector<double> departures;
+    departures.reserve(tested.size());
+    for (std::size_t r : tested) departures.push_back(std::abs(channel[r].input.torque_nm - centred[r].input.torque_nm));
+    out.sigma = std::min(out.sigma, 1.4826 * median_of(departures));
   }
-  out.sigma = 1.4826 * median_of(departures);
   return out;
 }
 

@@ -35,12 +35,11 @@ namespace gc {
 inline constexpr std::size_t kJumpTestedRows = 20000;
 
 /// The noise of an input sensor: 1.4826 times the median absolute departure of its readings from
-/// their centred running median over 4 s (input_shrinkage.h: a programme's steps and ramps pass a
-/// running median; the noise does not, nor, over 4 s, does a transducer's filtered noise), at up to
-/// kJumpTestedRows rows. `value` picks the input; rows in time order. Where the programme steps
-/// more often than every few seconds, the median beside each step is a quantile of the noise and
-/// the estimate comes out high (three times on stairs of 0.75 s): more rows are then left out, none
-/// kept that should not be.
+/// their centred running median (input_shrinkage.h: a programme's steps and ramps pass a running
+/// median; the noise does not), at up to kJumpTestedRows rows, the least over windows of 0.25, 1
+/// and 4 s (at least 9 rows): the longest sees a transducer's filtered noise, the shortest is not
+/// reached by a sweep that reverses every few seconds (over 4 s alone, a noise-free sweep of 10 s
+/// read as 2 mrad of probe noise). `value` picks the input; rows in time order.
 double input_noise_sigma(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
                          double (*value)(const MeasurementSample&));
 

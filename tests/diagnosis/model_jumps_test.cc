@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <vector>
@@ -55,9 +56,10 @@ std::vector<RecordedSample> two_holds(const CouplingModel& model, double far, do
   return out;
 }
 
+/// 0, 1, ..., n - 1: every row of a recording.
 std::vector<std::size_t> all_rows(std::size_t n) {
   std::vector<std::size_t> rows(n);
-  for (std::size_t i = 0; i < n; ++i) rows[i] = i;
+  std::iota(rows.begin(), rows.end(), std::size_t{0});
   return rows;
 }
 
@@ -78,7 +80,9 @@ TEST(ModelJumps, FindsTheHoldNextToAStepOfTeethInContactAndNotTheOneFarFromAny) 
   EXPECT_TRUE(f->excluded);
   std::size_t near_hold = 0, far_hold = 0;
   for (std::size_t r : f->rows) (r < 1000 ? far_hold : near_hold) += 1;
-  EXPECT_GE(near_hold, 950u) << "the hold 200 N·m from the step, within the noise";
+  // A row is found when its logged torque lies within two estimated deviations of the step: 94 %
+  // of the hold at 0.2 deviations from it (the estimate a few per cent under the truth).
+  EXPECT_GE(near_hold, 900u) << "the hold 200 N·m from the step, within the noise";
   EXPECT_LE(far_hold, 10u) << "the hold far from any step";
 }
 

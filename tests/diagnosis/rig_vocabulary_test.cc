@@ -324,29 +324,35 @@ TEST(RigVocabulary, FindsTheRigRingingAfterTorqueStepsWithItsFrequencyAndDamping
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
 }
 
+/// The case's residual against its model on all its rows.
+struct CaseResidual {
+  std::vector<std::size_t> rows;
+  Eigen::MatrixX2d residual;
+};
+CaseResidual case_residual(const RingingCase& c) {
+  CaseResidual out{{}, Eigen::MatrixX2d(static_cast<Eigen::Index>(c.recording.size()), 2)};
+  for (std::size_t i = 0; i < c.recording.size(); ++i) {
+    out.rows.push_back(i);
+    const SensorMoments p = c.model.predict_at(std::span<const RecordedSample>(c.recording), i).moments;
+    out.residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm,
+        c.recording[i].measured.z_nm - p.z_nm;
+  }
+  return out;
+}
+
 /// Whether the ringing estimate offers a mode on the case's residual against its model, all rows.
 bool offers_ringing(const RingingCase& c) {
-  std::vector<std::size_t> rows;
-  Eigen::MatrixX2d residual(static_cast<Eigen::Index>(c.recording.size()), 2);
-  for (std::size_t i = 0; i < c.recording.size(); ++i) {
-    rows.push_back(i);
-    const SensorMoments p = c.model.predict_at(std::span<const RecordedSample>(c.recording), i).moments;
-    residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
-  }
-  return dominant_ringing(c.recording, rows, residual).has_value();
+  const CaseResidual r = case_residual(c);
+  return dominant_ringing(c.recording, r.rows, r.residual).has_value();
 }
 
 // The grid's frequencies are shared over the threads and taken back in the grid's order: the mode
 // found does not depend on the threads.
 TEST(RigVocabulary, RingingEstimateIsTheSameOnOneThreadAndTwo) {
   const RingingCase c = ringing_case(true);
-  std::vector<std::size_t> rows;
-  Eigen::MatrixX2d residual(static_cast<Eigen::Index>(c.recording.size()), 2);
-  for (std::size_t i = 0; i < c.recording.size(); ++i) {
-    rows.push_back(i);
-    const SensorMoments p = c.model.predict_at(std::span<const RecordedSample>(c.recording), i).moments;
-    residual.row(static_cast<Eigen::Index>(i)) << c.recording[i].measured.y_nm - p.y_nm, c.recording[i].measured.z_nm - p.z_nm;
-  }
+  const CaseResidual r = case_residual(c);
+  const std::vector<std::size_t>& rows = r.rows;
+  const Eigen::MatrixX2d& residual = r.residual;
   const std::optional<RingingMode> one = dominant_ringing(c.recording, rows, residual);
   const std::optional<RingingMode> two = dominant_ringing(c.recording, rows, residual, thread_parallel_for(2));
   ASSERT_TRUE(one.has_value());
