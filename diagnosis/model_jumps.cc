@@ -44,21 +44,16 @@ double second_difference(const CouplingModel& model, const MeasurementSample& s,
   }
 }
 
-/// An input's noise (input_noise_sigma), from its running median at `tested`.
-struct InputNoise {
-  double sigma = 0.0;
-};
-
-InputNoise input_noise(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
-                       const std::vector<std::size_t>& tested, double (*value)(const MeasurementSample&)) {
-  InputNoise out;
-  if (rows.size() < kLeastRows) return out;
+/// input_noise_sigma from the departures at `tested`.
+double noise_at(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                const std::vector<std::size_t>& tested, double (*value)(const MeasurementSample&)) {
+  if (rows.size() < kLeastRows) return 0.0;
   const double interval = (observations[rows.back()].input.time_s - observations[rows.front()].input.time_s) /
                           static_cast<double>(rows.size() - 1);
   // The median is computed on the torque's place in a copy of the recording.
   std::vector<RecordedSample> channel(observations.begin(), observations.end());
   for (std::size_t r : rows) channel[r].input.torque_nm = value(observations[r].input);
-  out.sigma = std::numeric_limits<double>::infinity();
+  double sigma = std::numeric_limits<double>::infinity();
   for (const double window_s : kMedianWindowsS) {
     InputShrinks median;
     median.torque = {std::max(window_s, kLeastWindowRows * interval), 0.0, true};
@@ -66,16 +61,16 @@ InputNoise input_noise(std::span<const RecordedSample> observations, const std::
     std::vector<double> departures;
     departures.reserve(tested.size());
     for (std::size_t r : tested) departures.push_back(std::abs(channel[r].input.torque_nm - centred[r].input.torque_nm));
-    out.sigma = std::min(out.sigma, 1.4826 * median_of(departures));
+    sigma = std::min(sigma, 1.4826 * median_of(departures));
   }
-  return out;
+  return sigma;
 }
 
 }  // namespace
 
 double input_noise_sigma(std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
                          double (*value)(const MeasurementSample&)) {
-  return input_noise(observations, rows, evenly_spaced(rows, kJumpTestedRows), value).sigma;
+  return noise_at(observations, rows, evenly_spaced(rows, kJumpTestedRows), value);
 }
 
 std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model,
@@ -83,10 +78,10 @@ std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model
                                                       const std::vector<std::size_t>& rows, double moment_sigma_nm,
                                                       const ParallelFor& parallel) {
   const std::vector<std::size_t> tested = evenly_spaced(rows, kJumpTestedRows);
-  const InputNoise torque = input_noise(observations, rows, tested, [](const MeasurementSample& s) { return s.torque_nm; });
-  const InputNoise zeta =
-      input_noise(observations, rows, tested, [](const MeasurementSample& s) { return s.misalignment_rad; });
-  if (!(moment_sigma_nm > 0.0) || (torque.sigma <= 0.0 && zeta.sigma <= 0.0)) return std::nullopt;
+  const double torque_sigma = noise_at(observations, rows, tested, [](const MeasurementSample& s) { return s.torque_nm; });
+  const double zeta_sigma =
+      noise_at(observations, rows, tested, [](const MeasurementSample& s) { return s.misalignment_rad; });
+  if (!(moment_sigma_nm > 0.0) || (torque_sigma <= 0.0 && zeta_sigma <= 0.0)) return std::nullopt;
   std::vector<char> jumps(tested.size(), 0);
   const double least = kJumpShareOfNoise * moment_sigma_nm;
   parallel(tested.size(), [&](std::size_t begin, std::size_t end) {
@@ -98,10 +93,10 @@ std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model
       } catch (const std::exception&) {
         continue;
       }
-      jumps[k] = (torque.sigma > 0.0 && second_difference(model, s, &MeasurementSample::torque_nm,
-                                                          kNoiseDeviations * torque.sigma, centre) > least) ||
-                 (zeta.sigma > 0.0 && second_difference(model, s, &MeasurementSample::misalignment_rad,
-                                                        kNoiseDeviations * zeta.sigma, centre) > least);
+      jumps[k] = (torque_sigma > 0.0 && second_difference(model, s, &MeasurementSample::torque_nm,
+                                                          kNoiseDeviations * torque_sigma, centre) > least) ||
+                 (zeta_sigma > 0.0 && second_difference(model, s, &MeasurementSample::misalignment_rad,
+                                                        kNoiseDeviations * zeta_sigma, centre) > least);
     }
   });
   // Each row follows the tested row of its stretch (evenly_spaced takes position k n / count).
@@ -119,7 +114,7 @@ std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model
                              true, ""};
   std::ostringstream detail;
   detail << flagged.size() << " rows of " << rows.size() << " have an input within two deviations of its sensor's noise "
-         << "(torque " << short_number(torque.sigma) << " N·m, misalignment " << short_number(zeta.sigma)
+         << "(torque " << short_number(torque_sigma) << " N·m, misalignment " << short_number(zeta_sigma)
          << " rad) of a step of the model's moments (a pair of teeth more in contact, eqs 13 and 42-43): logged on "
          << "either side of the step at random, the model fed them jumps where the coupling does not, and leaves a bias "
          << "no effect explains; excluded";
