@@ -104,6 +104,19 @@ std::vector<bool> wanted_positions(std::span<const std::size_t> rows, std::span<
 
 }  // namespace
 
+std::vector<double> centred_medians(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                    double window_s, std::span<const std::size_t> at,
+                                    double (*value)(const MeasurementSample&)) {
+  const std::vector<bool> wanted = wanted_positions(rows, at);
+  const std::vector<double> centres = centred_level(observations, rows, InputShrink{window_s, 0.0, true}, wanted, value);
+  std::vector<double> out;
+  out.reserve(at.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (wanted[k]) out.push_back(centres[k]);
+  }
+  return out;
+}
+
 std::vector<RecordedSample> with_shrunk_inputs(std::span<const RecordedSample> observations,
                                                std::span<const std::size_t> rows, const InputShrinks& shrinks,
                                                std::span<const std::size_t> at) {

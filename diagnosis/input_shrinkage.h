@@ -56,6 +56,12 @@ std::vector<RecordedSample> with_shrunk_inputs(std::span<const RecordedSample> o
                                                std::span<const std::size_t> rows, const InputShrinks& shrinks,
                                                std::span<const std::size_t> at = {});
 
+/// The median of `value` over the centred window of `window_s` (as a median read-back's) about each
+/// of `at` (ascending, a subset of `rows`), in the order of `at`: no copy of the recording.
+std::vector<double> centred_medians(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
+                                    double window_s, std::span<const std::size_t> at,
+                                    double (*value)(const MeasurementSample&));
+
 /// with_shrunk_inputs for one trial of shrinks after another (a search over windows and keeps):
 /// the recording is copied once, each trial rewrites only the three inputs, and the centred means
 /// (or medians) of each channel and window are made once. The same values as with_shrunk_inputs,

@@ -50,17 +50,12 @@ double noise_at(std::span<const RecordedSample> observations, const std::vector<
   if (rows.size() < kLeastRows) return 0.0;
   const double interval = (observations[rows.back()].input.time_s - observations[rows.front()].input.time_s) /
                           static_cast<double>(rows.size() - 1);
-  // The median is computed on the torque's place in a copy of the recording.
-  std::vector<RecordedSample> channel(observations.begin(), observations.end());
-  for (std::size_t r : rows) channel[r].input.torque_nm = value(observations[r].input);
   double sigma = std::numeric_limits<double>::infinity();
   for (const double window_s : kMedianWindowsS) {
-    InputShrinks median;
-    median.torque = {std::max(window_s, kLeastWindowRows * interval), 0.0, true};
-    const std::vector<RecordedSample> centred = with_shrunk_inputs(channel, rows, median, tested);
-    std::vector<double> departures;
-    departures.reserve(tested.size());
-    for (std::size_t r : tested) departures.push_back(std::abs(channel[r].input.torque_nm - centred[r].input.torque_nm));
+    const std::vector<double> centre =
+        centred_medians(observations, rows, std::max(window_s, kLeastWindowRows * interval), tested, value);
+    std::vector<double> departures(tested.size());
+    for (std::size_t j = 0; j < tested.size(); ++j) departures[j] = std::abs(value(observations[tested[j]].input) - centre[j]);
     sigma = std::min(sigma, 1.4826 * median_of(departures));
   }
   return sigma;

@@ -135,6 +135,20 @@ TEST(InputShrinkage, AMedianKeepsAStaircaseAndARampWhereAMeanSmearsThem) {
   EXPECT_GT(worst_mean, 4e4) << "a mean over a step is off by a good share of the step";
 }
 
+TEST(InputShrinkage, CentredMediansAreTheMedianReadBacksCentres) {
+  std::vector<RecordedSample> r = ramp(40);
+  for (std::size_t i = 0; i < r.size(); ++i) r[i].input.torque_nm += (i % 3 == 0 ? 4e5 : -2e5);
+  const std::vector<std::size_t> rows = {0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 12, 20, 21, 22, 30, 31, 39};
+  const std::vector<std::size_t> at = {2, 7, 21, 31};
+  InputShrinks median;
+  median.torque = {0.5, 0.0, true};
+  const std::vector<RecordedSample> read_back = with_shrunk_inputs(r, rows, median, at);
+  const std::vector<double> centres =
+      centred_medians(r, rows, 0.5, at, [](const MeasurementSample& s) { return s.torque_nm; });
+  ASSERT_EQ(centres.size(), at.size());
+  for (std::size_t j = 0; j < at.size(); ++j) EXPECT_EQ(centres[j], read_back[at[j]].input.torque_nm) << at[j];
+}
+
 TEST(InputShrinkage, OnlyTheRowsAskedForAreReadBack) {
   const std::vector<RecordedSample> r = ramp(10);
   const std::vector<std::size_t> rows = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
