@@ -73,7 +73,22 @@ Eigen::MatrixXd full_jacobian(const EffectProblem& problem, const Eigen::MatrixX
   return j;
 }
 
-/// Starts: defaults, neutral values, Halton points; the `count` with the lowest cost.
+/// `x` a tenth of the way from the neutral values, its directions kept. A weak effect lies near
+/// its neutral values (an assembly misalignment of a hundredth of the jam angle), where every
+/// point spread over the box costs more than the neutral start; and from the neutral start the fit
+/// cannot turn: with no amplitude a direction moves nothing (its Jacobian column is zero), so the
+/// amplitude, pushed to its bound along the default direction, stays at zero. Probes near
+/// neutral, in every direction the Halton points take, find the valley.
+Eigen::VectorXd near_neutral(const EffectInfo& info, const Eigen::VectorXd& x, const Eigen::VectorXd& neutral) {
+  Eigen::VectorXd out = x;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (info.parameters[static_cast<std::size_t>(i)].period <= 0.0) out(i) = neutral(i) + 0.1 * (x(i) - neutral(i));
+  }
+  return out;
+}
+
+/// Starts: defaults, neutral values and Halton points over the box, and the same points near
+/// neutral; `settings.starts` of them, by cost.
 std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
                                          const Effect* current, int& evaluations) {
   std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};
@@ -107,20 +122,34 @@ std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const Fit
     }
     candidates.push_back(problem.box.to_unit(values));
   }
-  for (const Eigen::VectorXd& x : halton_points(problem.box.size(), settings.probe_points)) candidates.push_back(x);
-  for (Eigen::VectorXd& x : candidates) {  // a held parameter starts, and stays, at its default
-    for (int i = 0; i < problem.box.size(); ++i) if (!problem.free[static_cast<std::size_t>(i)]) x(i) = problem.full(i);
-  }
-  std::vector<std::pair<double, Eigen::VectorXd>> scored;
-  for (const Eigen::VectorXd& x : candidates) {
-    ++evaluations;
-    if (const auto r = problem.residual(x)) scored.emplace_back(r->squaredNorm(), x);
-  }
-  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const std::vector<Eigen::VectorXd> spread = halton_points(problem.box.size(), settings.probe_points);
+  for (const Eigen::VectorXd& x : spread) candidates.push_back(x);
+  std::vector<Eigen::VectorXd> near;
+  for (const Eigen::VectorXd& x : spread) near.push_back(near_neutral(problem.box.info(), x, problem.box.to_unit(neutral)));
+  const auto by_cost = [&](std::vector<Eigen::VectorXd> xs) {
+    std::vector<std::pair<double, Eigen::VectorXd>> scored;
+    for (Eigen::VectorXd& x : xs) {
+      // A held parameter starts, and stays, at its default.
+      for (int i = 0; i < problem.box.size(); ++i) if (!problem.free[static_cast<std::size_t>(i)]) x(i) = problem.full(i);
+      ++evaluations;
+      if (const auto r = problem.residual(x)) scored.emplace_back(r->squaredNorm(), x);
+    }
+    std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    return scored;
+  };
+  const auto everywhere = by_cost(candidates), near_neutral_only = by_cost(near);
+  // The box's best starts, and the best near neutral beside them: a strong effect's valley is
+  // found from the box, a weak one's from near neutral, and the probes' costs cannot say which the
+  // recording holds (a spacing error found from the box's second start was lost when probes near
+  // neutral, cheaper, took the starts).
   std::vector<Eigen::VectorXd> starts;
-  for (const auto& [cost, x] : scored) {
-    if (static_cast<int>(starts.size()) < settings.starts) starts.push_back(x);
+  const auto take = [&](const Eigen::VectorXd& x) {  // distinct: the defaults are often the neutral values
+    if (std::none_of(starts.begin(), starts.end(), [&](const Eigen::VectorXd& s) { return s == x; })) starts.push_back(x);
+  };
+  for (const auto& scored : everywhere) {
+    if (static_cast<int>(starts.size()) < settings.starts) take(scored.second);
   }
+  if (!near_neutral_only.empty()) take(near_neutral_only.front().second);
   return starts;
 }
 

@@ -61,7 +61,7 @@ struct FitSettings {
   /// delay_estimate.h), each for the effect whose parameters it names; the others at their defaults.
   std::vector<ParameterValues> hints;
   int probe_points = 8;  ///< Halton points whose cost picks the starts
-  int starts = 2;        ///< Levenberg-Marquardt runs from the best probes
+  int starts = 2;        ///< Levenberg-Marquardt runs from the best probes, and the best near neutral
 };
 
 /// The base model with `registration`'s effect at `values`.
