@@ -256,9 +256,17 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
     const ParameterValues values = problem.box.to_values(problem.full);
     std::vector<double> ordered;
     for (const ParameterSpec& spec : box.info().parameters) ordered.push_back(values.at(spec.name));
+    const ParameterBox narrower = problem.box;
+    const Eigen::VectorXd there = problem.full;
     problem.box = box;
     problem.full = box.to_unit(ordered);
-    best = problem.solve_and_polish(problem.full, options);
+    try {
+      best = problem.solve_and_polish(problem.full, options);
+    } catch (const std::invalid_argument&) {  // the point cannot be evaluated in the wider box
+      problem.box = narrower;
+      problem.full = there;
+      return;
+    }
     evaluations += best->evaluations;
     problem.full = problem.expand(best->x);
   }
@@ -321,11 +329,23 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
   for (int round = 0; round < problem.box.size(); ++round) {
     const auto u = find_unidentifiable(full_jacobian(problem, best->jacobian), problem.free);
     if (!u) break;
+    const Eigen::VectorXd before = problem.full;
     problem.free[static_cast<std::size_t>(u->parameter)] = false;
-    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u, current != nullptr);
     problem.full(u->parameter) = held_unit_value(problem, *u, current);
-    if (std::count(problem.free.begin(), problem.free.end(), true) == 0) break;
-    best = problem.solve_and_polish(problem.full, settings.least_squares);
+    if (std::count(problem.free.begin(), problem.free.end(), true) == 0) {
+      notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u, current != nullptr);
+      break;
+    }
+    try {
+      best = problem.solve_and_polish(problem.full, settings.least_squares);
+    } catch (const std::invalid_argument&) {
+      // Held where the model cannot predict a row (its default jams one): it keeps the value the
+      // fit found, with the uncertainty the correlation gives it.
+      problem.free[static_cast<std::size_t>(u->parameter)] = true;
+      problem.full = before;
+      break;
+    }
+    notes[static_cast<std::size_t>(u->parameter)] = hold_note(problem, *u, current != nullptr);
     evaluations += best->evaluations;
     problem.full = problem.expand(best->x);
   }
