@@ -166,9 +166,15 @@ std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::
   return out;
 }
 
+const std::optional<ReadBackInputs>& ReadBackOnce::get() {
+  if (!made_) read_back_ = read_back_inputs(model_, observations_, rows_, search_, parallel_);
+  made_ = true;
+  return read_back_;
+}
+
 std::optional<InputShrinks> demote_what_noisy_inputs_explain(
-    std::vector<CandidateScore>& ranking, const CouplingModel& model, std::span<const RecordedSample> observations,
-    std::span<const std::size_t> rows, std::span<const std::size_t> search, const Folds& folds,
+    std::vector<CandidateScore>& ranking, const CouplingModel& model, ReadBackOnce& read_back_once,
+    std::span<const std::size_t> search, const Folds& folds,
     const ParallelFor& parallel, const CrossValidationSettings& settings, double least_t,
     const std::function<bool(const CandidateScore&)>& claimable,
     const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for) {
@@ -178,7 +184,7 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
   // demodulator's trailing revolution).
   const auto tested = [&](const CandidateScore& c) { return c.fit && c.fit->effect && claimable(c); };
   if (std::none_of(ranking.begin(), ranking.end(), tested)) return std::nullopt;
-  const std::optional<ReadBackInputs> read_back = read_back_inputs(model, observations, rows, search, parallel);
+  const std::optional<ReadBackInputs>& read_back = read_back_once.get();
   if (!read_back) return std::nullopt;
   const InputShrinks& shrinks = read_back->shrinks;
   const std::vector<RecordedSample>& shrunk = read_back->recording;
@@ -207,6 +213,29 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
   }
   std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
   return shrinks;
+}
+
+void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, ReadBackOnce& read_back,
+                                              std::span<const RecordedSample> observations,
+                                              std::span<const std::size_t> search, const Folds& folds,
+                                              const FormulaSettings& settings, double least_t,
+                                              const std::function<bool(const CandidateScore&)>& claimable) {
+  if (!formula.failure.empty() || !claimable(formula) || !read_back.get()) return;
+  const Eigen::MatrixX2d& cleaner = read_back.get()->residual;
+  double t = paired_block_test(cleaner, formula.held_out_residual, folds.block_of, folds.blocks).t;
+  if (t < least_t) {
+    // Physics on clean inputs is still there once the model's inputs are read back, and a formula
+    // searched on what that model leaves finds it again.
+    if (const std::optional<CandidateScore> again = formula_candidate(observations, search, cleaner, folds, settings)) {
+      t = std::max(t, paired_block_test(cleaner, again->held_out_residual, folds.block_of, folds.blocks).t);
+    }
+  }
+  if (t >= least_t) return;
+  std::ostringstream why;
+  why << "it does not beat the model fed its inputs read back toward their centred means (" << described(read_back.get()->shrinks)
+      << "), as fitted or searched again on what that model leaves (paired t " << std::setprecision(2) << t << ", under "
+      << least_t << "): the input sensors' noise, which the model carries into its prediction, not physics";
+  formula.failure = why.str();
 }
 
 }  // namespace gc

@@ -132,11 +132,18 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   demote_what_input_noise_explains(
       round.ranking, model, observations, search, base, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
-  // Every effect must add to the model fed its inputs read back from their sensors' noise.
+  // Every effect and the formula must add to the model fed its inputs read back from their
+  // sensors' noise.
+  ReadBackOnce read_back(model, observations, rows, search, parallel);
   demote_what_noisy_inputs_explain(
-      round.ranking, model, observations, rows, search, folds, parallel, settings.cross_validation, settings.claim_t,
+      round.ranking, model, read_back, search, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
       [&](const Effect& e) { return registration_for(e, settings); });
+  if (round.formula) {
+    demote_formula_that_noisy_inputs_explain(*round.formula, read_back, observations, search, folds,
+                                             formula_settings(round, settings), settings.claim_t,
+                                             [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+  }
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
@@ -240,11 +247,11 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     if (!round.unstructured_excess) {
       // Noisy input sensors put structure in the inputs too (errors in the variables): it must pay
       // beside the model fed its inputs read back from their noise, as an effect must.
-      if (const std::optional<ReadBackInputs> read_back = read_back_inputs(model, observations, rows, search, parallel)) {
+      if (const std::optional<ReadBackInputs>& cleaner = read_back.get()) {
         const std::optional<CandidateScore> beside =
-            signature_held_out(observations, search, read_back->residual, folds, round.signature);
+            signature_held_out(observations, search, cleaner->residual, folds, round.signature);
         round.unstructured_excess =
-            !beside || !claimable(*beside, pooled_mean_square(read_back->residual), noise_ms, settings);
+            !beside || !claimable(*beside, pooled_mean_square(cleaner->residual), noise_ms, settings);
       }
     }
     if (round.unstructured_excess) {
