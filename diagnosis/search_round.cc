@@ -132,18 +132,14 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   demote_what_input_noise_explains(
       round.ranking, model, observations, search, base, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
-  // Every effect and the formula must add to the model fed its inputs read back from their
+  // Every effect, and the formula below, must add to the model fed its inputs read back from their
   // sensors' noise.
   ReadBackOnce read_back(model, observations, rows, search, parallel);
   demote_what_noisy_inputs_explain(
       round.ranking, model, read_back, search, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
       [&](const Effect& e) { return registration_for(e, settings); });
-  if (round.formula) {
-    demote_formula_that_noisy_inputs_explain(*round.formula, read_back, observations, search, folds,
-                                             formula_settings(round, settings), settings.claim_t,
-                                             [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
-  }
+
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,
@@ -164,21 +160,31 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
                              std::pow(round.ranking.front().held_out_rmse_nm, 2) < base_ms;
   const bool effect_ok =
       !round.ranking.empty() && (refits_partly || claimable(round.ranking.front(), base_ms, noise_ms, settings));
-  const bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
   if (round.formula && !round.ranking.empty() && round.ranking.front().failure.empty()) {
     round.formula_against_effect = paired_block_test(round.ranking.front().held_out_residual,
                                                      round.formula->held_out_residual, folds.block_of, folds.blocks);
   }
-  if (formula_ok && effect_ok) {
+  // Plausibility is advice, never a veto: an effect outside its plausible range (a rig aligned
+  // worse than usual) keeps the claim unless the formula is significantly better. Only an effect
+  // held on a physical bound, which cannot say how far beyond it the truth lies, yields to it.
+  const auto formula_over_effect = [&] {
     const CandidateScore& effect = round.ranking.front();
-    const PairedBlockTest t = round.formula_against_effect;
     const double effect_gain = base_ms - std::pow(effect.held_out_rmse_nm, 2);
     const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
-    // Plausibility is advice, never a veto: an effect outside its plausible range (a rig aligned
-    // worse than usual) keeps the claim unless the formula is significantly better. Only an effect
-    // held on a physical bound, which cannot say how far beyond it the truth lies, yields to it.
-    round.formula_chosen = at_bound(effect) || (t.t >= settings.formula_over_effect_t &&
-                                                formula_gain >= settings.formula_over_effect_gain * effect_gain);
+    return at_bound(effect) || (round.formula_against_effect.t >= settings.formula_over_effect_t &&
+                                formula_gain >= settings.formula_over_effect_gain * effect_gain);
+  };
+  bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
+  if (formula_ok && (!effect_ok || formula_over_effect())) {
+    // Only where the formula could be the claim: the check may search the formula again.
+    demote_formula_that_noisy_inputs_explain(*round.formula, read_back, observations, search, folds,
+                                             formula_settings(round, settings), settings.claim_t,
+                                             [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+    formula_ok = claimable(*round.formula, base_ms, noise_ms, settings);
+  }
+  if (formula_ok && effect_ok) {
+    const CandidateScore& effect = round.ranking.front();
+    round.formula_chosen = formula_over_effect();
     if (round.formula_chosen && !at_bound(effect) && effect_explains_part(effect, *round.formula, base, observations, search,
                                                                             folds, formula_settings(round, settings))) {
       round.formula_chosen = false;
