@@ -87,8 +87,8 @@ Eigen::VectorXd near_neutral(const EffectInfo& info, const Eigen::VectorXd& x, c
   return out;
 }
 
-/// Starts: defaults, neutral values and Halton points over the box, and the same points near
-/// neutral; `settings.starts` of them, by cost.
+/// Starts: defaults, neutral values and Halton points over the box, `settings.starts` of them by
+/// cost, and the best of the same Halton points near neutral.
 std::vector<Eigen::VectorXd> best_starts(const EffectProblem& problem, const FitSettings& settings,
                                          const Effect* current, int& evaluations) {
   std::vector<Eigen::VectorXd> candidates{problem.box.defaults()};

@@ -139,7 +139,6 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
       round.ranking, model, read_back, search, folds, parallel, settings.cross_validation, settings.claim_t,
       [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); },
       [&](const Effect& e) { return registration_for(e, settings); });
-
   // The third: noise with the residual's own spectrum explains it as well (surrogate_claims.h).
   demote_what_noise_explains(
       round.ranking, round.formula, round.time_terms, model, observations, search, base, parallel,

@@ -59,7 +59,8 @@ struct ContrastVariances {
   /// The contrast of the mean of `length` rows from `to` less the mean of `length` rows from `from`,
   /// on `channel` (from + length <= to).
   Eigen::Vector2d operator()(int channel, Eigen::Index from, Eigen::Index to, Eigen::Index length) const {
-    const double l = static_cast<double>(length), o = static_cast<double>(channel * n);
+    const double l = static_cast<double>(length);
+    const Eigen::Index o = channel * n;  // the channel's first row in the stacked span
     // The contrast's own tail sums: 0 before `from`, climbing to 1 across the first block, 1 between,
     // falling to 0 across the second.
     const auto tail = [&](Eigen::Index i) {
@@ -71,11 +72,11 @@ struct ContrastVariances {
     double white = 2.0 / l, walk = 0.0;
     for (Eigen::Index i = from; i < to + length; ++i) walk += tail(i) * tail(i);
     if (span.cols() == 0) return {white, walk};
-    const Eigen::VectorXd v = (span.middleRows(static_cast<Eigen::Index>(o) + to, length).colwise().sum() -
-                               span.middleRows(static_cast<Eigen::Index>(o) + from, length).colwise().sum()).transpose() / l;
+    const Eigen::VectorXd v =
+        (span.middleRows(o + to, length).colwise().sum() - span.middleRows(o + from, length).colwise().sum()).transpose() / l;
     Eigen::VectorXd cross = Eigen::VectorXd::Zero(span.cols());
     for (Eigen::Index i = from; i < to + length; ++i) {
-      if (const double t = tail(i); t != 0.0) cross += t * tails.row(static_cast<Eigen::Index>(o) + i).transpose();
+      if (const double t = tail(i); t != 0.0) cross += t * tails.row(o + i).transpose();
     }
     return {white - v.squaredNorm(), walk - 2.0 * v.dot(cross) + v.dot(tails_gram * v)};
   }
