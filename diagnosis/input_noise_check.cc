@@ -84,6 +84,15 @@ std::string described(const InputShrinks& s) {
   return out.str();
 }
 
+/// Why a candidate that did not beat the read-back model is failed: `how` it was judged.
+std::string read_back_failure(const InputShrinks& shrinks, const char* how, double t, double least_t) {
+  std::ostringstream why;
+  why << "it does not beat the model fed its inputs read back toward their centred means (" << described(shrinks)
+      << "), " << how << " (paired t " << std::setprecision(2) << t << ", under " << least_t
+      << "): the input sensors' noise, which the model carries into its prediction, not physics";
+  return why.str();
+}
+
 }  // namespace
 
 const EffectRegistration& centred_input_average() {
@@ -205,11 +214,7 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
       if (refitted.t > t.t) t = refitted;
     }
     if (t.t >= least_t) continue;
-    std::ostringstream why;
-    why << "it does not beat the model fed its inputs read back toward their centred means (" << described(shrinks)
-        << "), on the inputs as recorded or refitted on those (paired t " << std::setprecision(2) << t.t << ", under " << least_t
-        << "): the input sensors' noise, which the model carries into its prediction, not physics";
-    c.failure = why.str();
+    c.failure = read_back_failure(shrinks, "on the inputs as recorded or refitted on those", t.t, least_t);
   }
   std::stable_partition(ranking.begin(), ranking.end(), [](const CandidateScore& c) { return c.failure.empty(); });
   return shrinks;
@@ -231,11 +236,8 @@ void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, ReadBackO
     }
   }
   if (t >= least_t) return;
-  std::ostringstream why;
-  why << "it does not beat the model fed its inputs read back toward their centred means (" << described(read_back.get()->shrinks)
-      << "), as fitted or searched again on what that model leaves (paired t " << std::setprecision(2) << t << ", under "
-      << least_t << "): the input sensors' noise, which the model carries into its prediction, not physics";
-  formula.failure = why.str();
+  formula.failure =
+      read_back_failure(read_back.get()->shrinks, "as fitted or searched again on what that model leaves", t, least_t);
 }
 
 }  // namespace gc
