@@ -23,6 +23,7 @@
 #include <Eigen/Dense>
 
 #include "core/recorded_sample.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
@@ -30,8 +31,10 @@ namespace gc {
 inline constexpr double kCyclesInSpanLeast = 1.5;
 
 /// The period [s] that best explains `residual` (rows k of observations[rows[k]], in time order);
-/// nullopt when the span holds no such period.
+/// nullopt when the span holds no such period. The periodogram's peaks are refined side by side
+/// with `parallel`; the answer does not depend on it.
 std::optional<double> dominant_cycle_period(std::span<const RecordedSample> observations,
-                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual);
+                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                            const ParallelFor& parallel = serial_for());
 
 }  // namespace gc

@@ -35,7 +35,8 @@ double shifted_squares(const Eigen::VectorXd& t, const Eigen::MatrixX2d& measure
 }  // namespace
 
 std::optional<double> moment_delay_estimate(std::span<const RecordedSample> observations,
-                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual) {
+                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                            const ParallelFor& parallel) {
   const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
   if (n < 8) return std::nullopt;
   Eigen::VectorXd t(n);
@@ -49,9 +50,16 @@ std::optional<double> moment_delay_estimate(std::span<const RecordedSample> obse
   const double step = 0.5 * typical_time_step(t);
   if (!(step > 0.0)) return std::nullopt;
   const double none = shifted_squares(t, measured, model, 0.0);
+  std::vector<double> taus;
+  for (double tau = kEarliestS; tau <= kLatestS + 1e-9; tau += step) taus.push_back(tau);
+  // Every delay is a pass over the dense rows: a few hundred passes, on the diagnosis's path.
+  std::vector<double> squares(taus.size());
+  parallel(taus.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) squares[k] = shifted_squares(t, measured, model, taus[k]);
+  });
   double best = none, best_tau = 0.0;
-  for (double tau = kEarliestS; tau <= kLatestS + 1e-9; tau += step) {
-    if (const double s = shifted_squares(t, measured, model, tau); s < best) { best = s; best_tau = tau; }
+  for (std::size_t k = 0; k < taus.size(); ++k) {
+    if (squares[k] < best) { best = squares[k]; best_tau = taus[k]; }
   }
   if (best_tau == 0.0 || best > (1.0 - kLeastGain) * none) return std::nullopt;
   return best_tau;

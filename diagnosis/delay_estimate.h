@@ -13,13 +13,15 @@
 #include <Eigen/Dense>
 
 #include "core/recorded_sample.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
 /// The delay [s] within [-1 s, 2 s] (steps of half the rows' typical spacing) that lowers the summed
 /// squares of `residual` (rows k of observations[rows[k]], in time order) the most; nullopt when no
-/// delay lowers them by 1 % or more.
+/// delay lowers them by 1 % or more. The delays are tried side by side with `parallel`.
 std::optional<double> moment_delay_estimate(std::span<const RecordedSample> observations,
-                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual);
+                                            std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                            const ParallelFor& parallel);
 
 }  // namespace gc

@@ -451,7 +451,7 @@ TermDesign term_design(std::span<const RecordedSample> observations, std::span<c
 std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                         const Eigen::MatrixX2d& residual, const ParallelFor& parallel) {
   std::vector<std::string> terms;
-  if (const std::optional<double> period = dominant_cycle_period(observations, rows, residual)) terms = cycle_term_names(*period);
+  if (const std::optional<double> period = dominant_cycle_period(observations, rows, residual, parallel)) terms = cycle_term_names(*period);
   if (const std::optional<double> step = dominant_step_time(observations, rows, residual)) {
     for (std::string& name : step_term_names(*step)) terms.push_back(std::move(name));
   }

@@ -16,6 +16,7 @@
 #include <Eigen/Dense>
 
 #include "core/recorded_sample.h"
+#include "diagnosis/parallel_for.h"
 
 namespace gc {
 
@@ -59,9 +60,10 @@ struct ResidualSignature {
 /// (direction and rotation phase), one per loading direction. `variance_inflation`: the noise's
 /// (NoiseEstimate::variance_inflation): the samples of a bin are mostly neighbours in time, so a
 /// correlated noise scatters the bin means that much more than a white one, and F is judged against it.
+/// The inputs' leave-one-out fits run side by side with `parallel`.
 ResidualSignature residual_signature(std::span<const RecordedSample> observations,
-                                     std::span<const std::size_t> rows,
-                                     const Eigen::MatrixX2d& residual, double variance_inflation = 1.0);
+                                     std::span<const std::size_t> rows, const Eigen::MatrixX2d& residual,
+                                     const ParallelFor& parallel, double variance_inflation = 1.0);
 
 /// The bin of every row of `rows` for `input` (an InputSignature::input name), cut as the signature
 /// cuts it; empty when the input is unknown or a row lacks it.

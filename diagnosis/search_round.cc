@@ -83,7 +83,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   round.rmse_nm = std::sqrt(all_ms);
   // On the refit rows (at most 20,000, evenly spaced): the partial-dependence backfits are per input.
   round.signature = residual_signature(observations, signature_rows, select_rows(residual, rows, signature_rows),
-                                       round.noise.variance_inflation());
+                                       parallel, round.noise.variance_inflation());
   // The level test is against the variogram's noise, which a cycle or a step in time does not
   // inflate: with it, a residual that no input explains is still searched for a time pattern.
   // Cycles and steps on the dense rows (on the search rows of a long recording a cycle of a few
@@ -112,7 +112,7 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   }
   // A skew of the moment channels, by cross-correlation on the dense rows: a start for moment_delay.
   std::vector<ParameterValues> hints;
-  if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows))) {
+  if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows), parallel)) {
     hints.push_back({{"delay_s", *delay}});
   }
   round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, rivals, settings, hints);
@@ -285,8 +285,8 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
       // structure behind, and is then only "partly".
       const CandidateScore& best = round.ranking.front();
       const double inflation = round.noise.variance_inflation();
-      const ResidualSignature correction = residual_signature(observations, search, base - best.held_out_residual, inflation);
-      const ResidualSignature after = residual_signature(observations, search, best.held_out_residual, inflation);
+      const ResidualSignature correction = residual_signature(observations, search, base - best.held_out_residual, parallel, inflation);
+      const ResidualSignature after = residual_signature(observations, search, best.held_out_residual, parallel, inflation);
       for (const InputSignature& s : correction.inputs) {
         if (s.input == "time" || s.explained_share < kExplainedInputShare) continue;
         const InputSignature* left = after.find(s.input);
