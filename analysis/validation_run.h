@@ -2,7 +2,10 @@
 // in chunks (rows parsed on several threads), predicts each chunk on several threads
 // (CouplingModel is reentrant; small pieces handed out as threads come free), and feeds the errors to
 // one ValidationAccumulator and PointSampler per model, in file order, so the result does not
-// depend on the thread count. Memory is bounded by the chunk size, whatever the recording's length.
+// depend on the thread count. A model whose effects read other samples than the one predicted
+// (CouplingModel::input_reach) sees, at a chunk's edges, the rows of the chunks beside it, so the
+// result does not depend on where the chunks fall either. Memory is bounded by the chunk size and
+// that reach, whatever the recording's length.
 #pragma once
 
 #include <filesystem>

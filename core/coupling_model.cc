@@ -49,6 +49,20 @@ InputTiming CouplingModel::input_timing(const MeasurementSample& sample) const {
   return sum;
 }
 
+InputReach CouplingModel::input_reach(const MeasurementSample& sample) const {
+  InputReach reach;
+  if (times_inputs_) {
+    // timed_input reads from t - delay_s - average_s to t - delay_s.
+    const InputTiming timing = input_timing(sample);
+    reach.before_s = std::max(0.0, timing.delay_s + timing.average_s);
+    reach.after_s = std::max(0.0, -timing.delay_s);
+  }
+  if (reads_history_) {
+    for (const auto& effect : effects_) reach.before_s = std::max(reach.before_s, effect->history_s());
+  }
+  return reach;
+}
+
 ModelPrediction CouplingModel::with_history(ModelPrediction prediction, const InputHistory& history) const {
   if (!reads_history_) return prediction;
   for (const auto& effect : effects_) effect->adjust_outputs_in_history(history, prediction.moments);

@@ -22,6 +22,13 @@ struct ModelPrediction {
   ModelState state;        ///< T, zeta, beta, mu, options after the effects
 };
 
+/// The stretch of a recording around a sample's time t that predict_at reads: every sample in
+/// [t - before_s, t + after_s], and beyond each end the nearest one.
+struct InputReach {
+  double before_s = 0.0;
+  double after_s = 0.0;
+};
+
 class CouplingModel {
  public:
   /// Applies the effects' coupling adjustments and builds the geometry (throws InvalidInput).
@@ -60,6 +67,10 @@ class CouplingModel {
   /// Whether predict_at(recording, i) reads samples other than i (an effect times the inputs or
   /// reads their history): a caller that changes a recording's other rows must then keep them.
   bool reads_other_samples() const { return times_inputs_ || reads_history_; }
+  /// What predict_at reads of a recording around this sample: the input timing's delay and
+  /// average (a negative delay reads ahead) and the effects' history_s. A caller holding a
+  /// recording in pieces (validate's chunks) keeps that much of the pieces beside it.
+  InputReach input_reach(const MeasurementSample& sample) const;
 
  private:
   CouplingDefinition base_coupling_;

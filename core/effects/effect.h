@@ -129,6 +129,9 @@ class Effect {
   virtual void adjust_outputs_in_history(const InputHistory& /*history*/, SensorMoments& /*moments*/) const {}
   /// True when adjust_outputs_in_history can change the moments.
   virtual bool reads_history() const { return false; }
+  /// How far before a sample's time adjust_outputs_in_history reads the inputs [s] (and the one
+  /// sample before that stretch); 0 when it reads none (CouplingModel::input_reach).
+  virtual double history_s() const { return 0.0; }
   /// When the moment channels see the inputs of this sample (core/input_timing.h): a model
   /// predicting a recording takes the inputs from the recording at that time.
   virtual InputTiming input_timing(const MeasurementSample& /*sample*/) const { return {}; }

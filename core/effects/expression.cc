@@ -104,6 +104,12 @@ class Expression final : private OwnedTerms, public Effect {
     return std::any_of(terms_.begin(), terms_.end(), [](const ExpressionTerm* t) { return t->reads_history(); });
   }
 
+  double history_s() const override {
+    double longest = 0.0;
+    for (const ExpressionTerm* term : terms_) longest = std::max(longest, term->history_s());
+    return longest;
+  }
+
  private:
   std::vector<const ExpressionTerm*> terms_;
 };

@@ -61,11 +61,16 @@ std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<
   return r;
 }
 
+double ringing_memory_s(const RingingMode& mode) {
+  // -Re s of Pole, written out: a Pole fills its 64-gap cache.
+  return -std::log(kForgotten) / (mode.damping_ratio * (2.0 * std::numbers::pi * mode.natural_frequency_hz));
+}
+
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode) {
   Pole pole(mode);
   const std::size_t i = history.index();
   const double t = history.at(i).time_s;
-  const double memory_s = -std::log(kForgotten) / (-pole.s.real());
+  const double memory_s = ringing_memory_s(mode);
   std::complex<double> factor = 1.0, sum = 0.0;  // factor = e^{s (t_i - t_k)}
   for (std::size_t k = i; k >= 1; --k) {
     const MeasurementSample& now = history.at(k);

@@ -28,8 +28,12 @@ struct RingingMode {
 std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<const double> inputs,
                                      const RingingMode& mode);
 
-/// r of the torque at the history's sample alone, summed over the changes before it back to where
-/// e^{-zeta w_n tau} < 1e-6: what a model that holds no state computes for one sample [N·m].
+/// How long a change of the input rings: e^{-zeta w_n tau} < 1e-6 after it [s].
+double ringing_memory_s(const RingingMode& mode);
+
+/// r of the torque at the history's sample alone, summed over the changes before it back to
+/// ringing_memory_s (and the one change into that stretch): what a model that holds no state
+/// computes for one sample [N·m].
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode);
 
 }  // namespace gc
