@@ -59,6 +59,24 @@ std::string sweep_recording(double jam_angle_rad) {
   return text;
 }
 
+// The plain loop: the whole recording in memory, each sample predicted from all of it; `points`,
+// when given, sampled as validate samples them.
+ValidationAccumulator whole_recording_validation(const CouplingModel& model, const std::vector<RecordedSample>& samples,
+                                                 const BinningOptions& binning, PointSampler* points = nullptr) {
+  ValidationAccumulator expected(binning);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    try {
+      const SensorMoments predicted = model.predict_at(std::span<const RecordedSample>(samples), i).moments;
+      expected.add(samples[i], predicted);
+      if (points) points->add(samples[i], predicted);
+    } catch (const InvalidInput& error) {
+      expected.reject(samples[i], error.field(), error.what());
+      if (points) points->add(samples[i], std::nullopt);
+    }
+  }
+  return expected;
+}
+
 TEST(ValidationRun, StreamedOnThreadsGivesTheNumbersOfThePlainLoop) {
   const codec::ModelFile model = gc::testing::bundled_model("paper");
   BinningOptions binning;
@@ -66,22 +84,10 @@ TEST(ValidationRun, StreamedOnThreadsGivesTheNumbersOfThePlainLoop) {
   const std::string path = cli::testing::temp_path("validation_run") + ".csv";
   cli::testing::write_file(path, sweep_recording(binning.jam_angle_rad));
 
-  // The plain loop.
   const Recording recording = read_recording(path);
-  ValidationAccumulator expected(binning);
   PointSampler expected_points(500);
-  for (std::size_t i = 0; i < recording.samples.size(); ++i) {
-    const RecordedSample& sample = recording.samples[i];
-    try {
-      const SensorMoments predicted =
-          model.model.predict_at(std::span<const RecordedSample>(recording.samples), i).moments;
-      expected.add(sample, predicted);
-      expected_points.add(sample, predicted);
-    } catch (const InvalidInput& error) {
-      expected.reject(sample, error.field(), error.what());
-      expected_points.add(sample, std::nullopt);
-    }
-  }
+  const ValidationAccumulator expected =
+      whole_recording_validation(model.model, recording.samples, binning, &expected_points);
 
   for (const int threads : {1, 3}) {
     std::vector<ModelRun> runs;
@@ -117,21 +123,6 @@ TEST(ValidationRun, StreamedOnThreadsGivesTheNumbersOfThePlainLoop) {
                 expected_points.points()[p].recorded.input.time_s) << on;
     }
   }
-}
-
-
-// The plain loop of the test above: the whole recording in memory, each sample predicted from it.
-ValidationAccumulator whole_recording_validation(const CouplingModel& model, const std::vector<RecordedSample>& samples,
-                                                 const BinningOptions& binning) {
-  ValidationAccumulator expected(binning);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    try {
-      expected.add(samples[i], model.predict_at(std::span<const RecordedSample>(samples), i).moments);
-    } catch (const InvalidInput& error) {
-      expected.reject(samples[i], error.field(), error.what());
-    }
-  }
-  return expected;
 }
 
 // 100 Hz at 15 rpm (a revolution in 400 rows): a torque that swings, with a step every 7 s (a rig
