@@ -22,6 +22,9 @@ constexpr std::size_t kFrequenciesAtOnce = 6;  ///< 54 columns: 8.6 MB on 20,000
 /// A grid point's score on the residual, then on each of it shifted against the load.
 using GridScores = std::array<double, kShifts + 1>;
 
+/// Whether, and how, grid scores are found on the shifted residuals too.
+enum class Shifts { none, fast, exact };
+
 /// What a mode's columns explain of the residual beside the nuisance, for every (f_n, zeta) asked.
 class ModeScore {
  public:
@@ -77,12 +80,12 @@ class ModeScore {
   }
 
   /// For each frequency, for each damping of kDampings: the score (index 0) and the same score on
-  /// each residual shifted against the load (1..kShifts). The scores are exactly operator()'s.
-  /// The shifted ones are, with `exact_shifts`; without it they come from one matrix product of
-  /// all the columns with all the shifted residuals, several times faster (a few frequencies at a
-  /// time share the packing of the shifted residuals), each within shift_tolerance() of its exact
-  /// value (summed in another order).
-  std::vector<std::vector<GridScores>> grid_scores(std::span<const double> frequencies, bool exact_shifts) const {
+  /// each residual shifted against the load (1..kShifts; zero with Shifts::none). The scores are
+  /// exactly operator()'s. The shifted ones are, with Shifts::exact; with Shifts::fast they come
+  /// from one matrix product of all the columns with all the shifted residuals, several times
+  /// faster (a few frequencies at a time share the packing of the shifted residuals), each within
+  /// shift_tolerance() of its exact value (summed in another order).
+  std::vector<std::vector<GridScores>> grid_scores(std::span<const double> frequencies, Shifts shifts) const {
     std::vector<Eigen::VectorXd> columns;
     std::vector<double> squares;
     for (const double f_hz : frequencies) {
@@ -91,13 +94,13 @@ class ModeScore {
         squares.push_back(columns.back().squaredNorm());
       }
     }
-    std::vector<GridScores> out(columns.size());
+    std::vector<GridScores> out(columns.size(), GridScores{});
     for (std::size_t m = 0; m < columns.size(); ++m) out[m][0] = explained(columns[m], squares[m], left_);
-    if (exact_shifts) {
+    if (shifts == Shifts::exact) {
       for (int j = 0; j < kShifts; ++j) {
         for (std::size_t m = 0; m < columns.size(); ++m) out[m][j + 1] = explained(columns[m], squares[m], shifted_[j]);
       }
-    } else {
+    } else if (shifts == Shifts::fast) {
       Eigen::MatrixXd all(left_.rows(), static_cast<Eigen::Index>(columns.size()));
       for (std::size_t m = 0; m < columns.size(); ++m) all.col(static_cast<Eigen::Index>(m)) = columns[m];
       const Eigen::MatrixXd products = all.transpose() * stacked_;
@@ -190,53 +193,32 @@ std::optional<RingingMode> dominant_ringing(std::span<const RecordedSample> obse
   const double highest = kHighestShareOfNyquist * 0.5 / dt;
   const ModeScore score(observations, rows, residual);
   double best = 0.0, best_f = 0.0, best_zeta = 0.0;
-  std::vector<double> best_shifted(kShifts, 0.0);  // the grid's best on each shifted residual
-  int grid = 0;
+  std::size_t grid = 0;
   std::vector<double> frequencies;
   for (double f = kLowestHz; f <= highest; f *= kFrequencyStep) frequencies.push_back(f);
   // Each frequency's scores on its own, over the threads; then taken in the grid's order, so that
   // the best and its ties do not depend on how the work was shared.
-  const auto grid_scores = [&](bool exact_shifts) {
+  const auto grid_scores = [&](Shifts shifts) {
     std::vector<std::vector<GridScores>> scores(frequencies.size());
     parallel(frequencies.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; i += kFrequenciesAtOnce) {
         const std::size_t count = std::min(kFrequenciesAtOnce, end - i);
         std::vector<std::vector<GridScores>> some =
-            score.grid_scores(std::span<const double>(frequencies).subspan(i, count), exact_shifts);
+            score.grid_scores(std::span<const double>(frequencies).subspan(i, count), shifts);
         std::move(some.begin(), some.end(), scores.begin() + static_cast<std::ptrdiff_t>(i));
       }
     });
     return scores;
   };
-  const auto take = [&](const std::vector<std::vector<GridScores>>& scores) {
-    best = 0.0;
-    std::fill(best_shifted.begin(), best_shifted.end(), 0.0);
-    grid = 0;
-    for (std::size_t i = 0; i < frequencies.size(); ++i) {
-      for (std::size_t z = 0; z < std::size(kDampings); ++z) {
-        ++grid;
-        const GridScores& s = scores[i][z];
-        if (s[0] > best) { best = s[0]; best_f = frequencies[i]; best_zeta = kDampings[z]; }
-        for (int j = 0; j < kShifts; ++j) best_shifted[j] = std::max(best_shifted[j], s[j + 1]);
-      }
+  // The residual's own scores first: most recordings have no mode out of the noise, and the
+  // shifted residuals (two thirds of the grid's work) are asked only of one that stands out.
+  for (const std::vector<GridScores>& at : grid_scores(Shifts::none)) {
+    for (std::size_t z = 0; z < std::size(kDampings); ++z, ++grid) {
+      if (at[z][0] > best) { best = at[z][0]; best_f = frequencies[grid / std::size(kDampings)]; best_zeta = kDampings[z]; }
     }
-  };
-  take(grid_scores(false));
-  // The shifted scores decide only whether one of their grid's bests reaches the residual's best.
-  // Where one is within its tolerance of it, the fast products cannot say: they are made again
-  // exactly, as one (f_n, zeta) at a time would make them, so the answer is the same.
-  bool surely_reached = false, surely_not = true;
-  for (int j = 0; j < kShifts; ++j) {
-    surely_reached = surely_reached || best_shifted[j] - score.shift_tolerance(j) >= best;
-    surely_not = surely_not && best_shifted[j] + score.shift_tolerance(j) < best;
   }
-  if (best > 0.0 && !surely_reached && !surely_not) take(grid_scores(true));
   if (!(best > 0.0)) return std::nullopt;  // the torque does not change
-  // A ringing is set off by the load's changes: the grid must find more in the residual as it lies
-  // than in any of it turned round in time against the load. Narrowband noise (a band-pass at 3.6
-  // Hz, a resonance beside mains pickup) has its peak at every lag, and its spectrum hides from the
-  // lag-1 inflation below.
-  if (std::any_of(best_shifted.begin(), best_shifted.end(), [&](double s) { return s >= best; })) return std::nullopt;
+  const double grid_best = best;
   // Refined in f_n (log) and zeta between their grid neighbours, twice round.
   const double lowest_zeta = kDampings[0], highest_zeta = kDampings[std::size(kDampings) - 1];
   for (int round = 0; round < 2; ++round) {
@@ -251,7 +233,30 @@ std::optional<RingingMode> dominant_ringing(std::span<const RecordedSample> obse
   const double variance = rest.squaredNorm() / static_cast<double>(2 * n - 10);
   const double phi = lag_one_correlation(rest);
   const double x = best / (variance * (1.0 + phi) / (1.0 - phi));
-  if (grid * std::exp(-0.5 * x) >= kFalseModeChance) return std::nullopt;
+  if (static_cast<double>(grid) * std::exp(-0.5 * x) >= kFalseModeChance) return std::nullopt;
+  // A ringing is set off by the load's changes: the grid must find more in the residual as it lies
+  // than in any of it turned round in time against the load. Narrowband noise (a band-pass at 3.6
+  // Hz, a resonance beside mains pickup) has its peak at every lag, and its spectrum hides from the
+  // lag-1 inflation above. The shifted scores decide only whether one of their grid's bests
+  // reaches the residual's grid best. Where one is within its tolerance of it, the fast products
+  // cannot say: they are made again exactly, as one (f_n, zeta) at a time would make them.
+  std::vector<double> best_shifted(kShifts, 0.0);  // the grid's best on each shifted residual
+  const auto take_shifted = [&](const std::vector<std::vector<GridScores>>& scores) {
+    std::fill(best_shifted.begin(), best_shifted.end(), 0.0);
+    for (const std::vector<GridScores>& at : scores) {
+      for (const GridScores& s : at) {
+        for (int j = 0; j < kShifts; ++j) best_shifted[j] = std::max(best_shifted[j], s[j + 1]);
+      }
+    }
+  };
+  take_shifted(grid_scores(Shifts::fast));
+  bool surely_reached = false, surely_not = true;
+  for (int j = 0; j < kShifts; ++j) {
+    surely_reached = surely_reached || best_shifted[j] - score.shift_tolerance(j) >= grid_best;
+    surely_not = surely_not && best_shifted[j] + score.shift_tolerance(j) < grid_best;
+  }
+  if (!surely_reached && !surely_not) take_shifted(grid_scores(Shifts::exact));
+  if (std::any_of(best_shifted.begin(), best_shifted.end(), [&](double s) { return s >= grid_best; })) return std::nullopt;
   return RingingMode{best_f, best_zeta};
 }
 

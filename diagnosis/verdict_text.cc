@@ -44,14 +44,25 @@ std::string formula_text(const EffectFit& fit) {
 
 /// When the discrepancy stage's formula does as well as the claimed effect on held-out data (but
 /// not so much better that it is claimed instead), it is shown: another reading of the same residual.
+/// When it does significantly better, but the effect takes most of what it finds (physics first:
+/// DiagnosisSettings::formula_over_effect_gain, effect_explains_part), it is shown as what the next
+/// round looks for, never as a reading this data cannot tell from the effect.
 std::string rival_formula_text(const DiagnosisRound& round) {
   if (!round.formula || round.formula_chosen || round.ranking.empty() || !round.formula->fit) return "";
+  const double t = round.formula_against_effect.t;
   // Within the uncertainty of each other (the effect not better by a block-paired t of 2): say so,
   // as for two library effects.
-  if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm && round.formula_against_effect.t < -2.0) return "";
-  return " A formula of physical terms does as well on held-out data (RMSE " + engineering_text(round.formula->held_out_rmse_nm, "N·m") +
-         ", t = " + short_number(round.formula_against_effect.t) + " against the effect), another reading of the same "
-         "residual that this data cannot tell from it: " + formula_text(*round.formula->fit) + ".";
+  if (round.formula->held_out_rmse_nm > round.ranking.front().held_out_rmse_nm && t < -2.0) return "";
+  const std::string held_out = "(RMSE " + engineering_text(round.formula->held_out_rmse_nm, "N·m") + ", t = " +
+                               short_number(t) + " against the effect)";
+  if (t >= 2.0) {
+    return " A formula of physical terms does better on held-out data " + held_out +
+           "; the effect is claimed first, since it takes most of what the formula finds (physics first), and the "
+           "next round looks for the rest: " + formula_text(*round.formula->fit) + ".";
+  }
+  return " A formula of physical terms does as well on held-out data " + held_out +
+         ", another reading of the same residual that this data cannot tell from it: " +
+         formula_text(*round.formula->fit) + ".";
 }
 
 std::string dropped_text(const DiagnosisRound& round) {
