@@ -101,10 +101,11 @@ ToothLoadPattern tooth_load_pattern(const ToothContact& contact);
 void require_load_carried(const ToothLoadPattern& pattern, double sum_of_loads_n, const OperatingPoint& point,
                           double minimum);
 
-/// True when eq 9's loads clearly carry at least `minimum` of P_t: summed in any order (vector
-/// lanes, several times faster than tooth order's chain of additions), which moves the sum by a
-/// few ulp per tooth, far less than the margin kept. False near `minimum` (and for a NaN): then
-/// the caller sums in tooth order (tooth_load_totals) for require_load_carried's bits.
+/// True when eq 9's loads clearly carry at least `minimum` of P_t: their sum in closed form (the
+/// carrying teeth are arcs of even steps, whose shares sum as a geometric series: no pass over the
+/// teeth), within a few ulp per tooth of the sum in tooth order, far less than the margin kept.
+/// False near `minimum` (and for a NaN): then the caller sums in tooth order (tooth_load_totals)
+/// for require_load_carried's bits.
 bool loads_clearly_carried(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double minimum);
 
 }  // namespace gc
