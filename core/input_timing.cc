@@ -84,9 +84,11 @@ MeasurementSample timed(const Sequence& s, std::size_t i, const InputTiming& tim
   if (timing.average_s > 0.0) {
     InputMean mean;
     mean.add(out);
-    // The samples inside (end - average_s, end), walking back from the time found.
+    // The samples inside (end - average_s, end], walking back from the last at or before `end`:
+    // found from i in either direction, since a negative delay puts `end` after t_i.
     std::size_t k = i;
     while (k > 0 && input_of(s, k).time_s > end) --k;
+    while (k + 1 < s.size() && input_of(s, k + 1).time_s <= end) ++k;
     for (; input_of(s, k).time_s > end - timing.average_s; --k) {
       if (input_of(s, k).time_s <= end) mean.add(input_of(s, k));
       if (k == 0) break;

@@ -1,5 +1,7 @@
 #include "core/effects/joint_effect.h"
 
+#include <algorithm>
+
 #include <map>
 #include <mutex>
 #include <set>
@@ -64,6 +66,34 @@ void JointEffect::adjust_inputs(const MeasurementSample& sample, const ModelCont
 void JointEffect::adjust_outputs(const MeasurementSample& sample, const ModelContext& context, const ModelState& state,
                                  SensorMoments& moments) const {
   for (const auto& m : members_) m->adjust_outputs(sample, context, state, moments);
+}
+
+void JointEffect::adjust_outputs_in_history(const InputHistory& history, SensorMoments& moments) const {
+  for (const auto& m : members_) m->adjust_outputs_in_history(history, moments);
+}
+
+bool JointEffect::reads_history() const {
+  return std::any_of(members_.begin(), members_.end(), [](const auto& m) { return m->reads_history(); });
+}
+
+double JointEffect::history_s() const {
+  double longest = 0.0;
+  for (const auto& m : members_) longest = std::max(longest, m->history_s());
+  return longest;
+}
+
+InputTiming JointEffect::input_timing(const MeasurementSample& sample) const {
+  InputTiming sum;
+  for (const auto& m : members_) {
+    const InputTiming t = m->input_timing(sample);
+    sum.delay_s += t.delay_s;
+    sum.average_s += t.average_s;
+  }
+  return sum;
+}
+
+bool JointEffect::times_inputs() const {
+  return std::any_of(members_.begin(), members_.end(), [](const auto& m) { return m->times_inputs(); });
 }
 
 EffectRegistration joint_registration(const std::vector<EffectRegistration>& members) {

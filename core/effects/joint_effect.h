@@ -30,6 +30,12 @@ class JointEffect final : public Effect {
   void adjust_inputs(const MeasurementSample& sample, const ModelContext& context, ModelState& state) const override;
   void adjust_outputs(const MeasurementSample& sample, const ModelContext& context, const ModelState& state,
                       SensorMoments& moments) const override;
+  void adjust_outputs_in_history(const InputHistory& history, SensorMoments& moments) const override;
+  bool reads_history() const override;
+  double history_s() const override;
+  /// The members' timings summed, as CouplingModel::input_timing sums its effects'.
+  InputTiming input_timing(const MeasurementSample& sample) const override;
+  bool times_inputs() const override;
 
  private:
   std::vector<std::shared_ptr<const Effect>> members_;

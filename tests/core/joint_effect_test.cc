@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "core/coupling_model.h"
 #include "core/effects/effect_registry.h"
@@ -89,6 +91,35 @@ TEST(JointEffect, RefusesOneEffectTwiceOrAloneAndAValueOutOfBoundsByName) {
     EXPECT_EQ(e.field(), "effects.friction+channel_gain_offset.friction.mu0");
   }
   EXPECT_THROW(joint.make({{"mu0", 0.1}}), InvalidInput);  // not prefixed: no such parameter
+}
+
+// Put in a model directly (as its comment allows), a joint effect times the inputs and reads their
+// history as its members do: a moment_delay inside it delays and averages the inputs in predict_at.
+TEST(JointEffect, TimesTheInputsAsItsMembersDoWhenHeldDirectly) {
+  const EffectRegistration joint = joint_registration({registration("moment_delay"), registration("channel_gain_offset")});
+  const auto effect = joint.make({{"moment_delay.delay_s", -0.4},
+                                  {"moment_delay.averaging_revolutions", 0.5},
+                                  {"channel_gain_offset.offset_y_nm", 2000.0}});
+  EXPECT_TRUE(effect->times_inputs());
+  const CouplingModel direct(testing::nrel_upwind(), {make_effect("friction", {{"mu0", 0.1}}), effect});
+  const CouplingModel expanded =
+      CouplingModel(testing::nrel_upwind(), {make_effect("friction", {{"mu0", 0.1}})}).with_effect(effect);
+  ASSERT_EQ(expanded.effects().size(), 3u);
+  std::vector<MeasurementSample> ramp(40, sample());
+  for (std::size_t k = 0; k < ramp.size(); ++k) {
+    ramp[k].time_s = 0.1 * static_cast<double>(k);
+    ramp[k].torque_nm = 1.0e6 + 2.0e4 * static_cast<double>(k);
+    ramp[k].speed_rpm = 30.0;  // 0.5 revolutions: a 1 s average
+  }
+  const InputTiming timing = direct.input_timing(ramp[20]);
+  EXPECT_DOUBLE_EQ(timing.delay_s, -0.4);
+  EXPECT_DOUBLE_EQ(timing.average_s, 1.0);
+  const SensorMoments a = direct.predict_at(ramp, 20).moments, b = expanded.predict_at(ramp, 20).moments;
+  EXPECT_DOUBLE_EQ(a.y_nm, b.y_nm);
+  EXPECT_DOUBLE_EQ(a.z_nm, b.z_nm);
+  // The inputs were read from the window (2.4 - 1, 2.4] s, not at t = 2 s.
+  const SensorMoments undelayed = expanded.without_effect("moment_delay").predict_at(ramp, 20).moments;
+  EXPECT_GT(std::abs(a.y_nm - undelayed.y_nm) + std::abs(a.z_nm - undelayed.z_nm), 1.0);
 }
 
 }  // namespace
