@@ -125,19 +125,33 @@ std::vector<bool> first_terms(const std::vector<Eigen::Index>& order, std::size_
 
 int count(const std::vector<bool>& keep) { return static_cast<int>(std::count(keep.begin(), keep.end(), true)); }
 
+/// Each fold's training and held-out rows of a stacked design and its response, cut once for a
+/// search that scores many formulas on the same folds.
+struct FoldRows {
+  Eigen::MatrixXd training_x, held_out_x;
+  Eigen::VectorXd training_y;
+};
+
+std::vector<FoldRows> fold_rows(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const Folds& folds, Eigen::Index n) {
+  std::vector<FoldRows> out(folds.training.size());
+  for (std::size_t f = 0; f < folds.training.size(); ++f) {
+    out[f].training_x = stacked_rows(x, folds.training[f], n);
+    out[f].training_y = stacked_rows(y, folds.training[f], n).col(0);
+    out[f].held_out_x = stacked_rows(x, folds.held_out[f], n);
+  }
+  return out;
+}
+
 /// Per search row, the held-out residual of the formula `choose(f, x, y)` picks for fold f from its
-/// training rows.
+/// training rows (`rows`: fold_rows of the design and the stacked residual).
 template <typename Choose>
-Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& residual, const Folds& folds, Choose choose) {
-  const Eigen::Index n = residual.rows();
-  const Eigen::VectorXd y = stacked(residual);
+Eigen::MatrixX2d held_out(const std::vector<FoldRows>& rows, const Eigen::MatrixX2d& residual, const Folds& folds,
+                          Choose choose) {
   Eigen::MatrixX2d out = residual;
   for (std::size_t f = 0; f < folds.training.size(); ++f) {
-    const Eigen::MatrixXd xt = stacked_rows(x, folds.training[f], n);
-    const Eigen::MatrixXd yt = stacked_rows(y, folds.training[f], n);
-    const Eigen::VectorXd c = solve_on(xt, yt.col(0), choose(f, xt, yt.col(0)));
-    const Eigen::MatrixXd xh = stacked_rows(x, folds.held_out[f], n);
-    const Eigen::VectorXd prediction = xh * c;
+    const FoldRows& fold = rows[f];
+    const Eigen::VectorXd c = solve_on(fold.training_x, fold.training_y, choose(f, fold.training_x, fold.training_y));
+    const Eigen::VectorXd prediction = fold.held_out_x * c;
     const std::size_t m = folds.held_out[f].size();
     for (std::size_t k = 0; k < m; ++k) {
       const Eigen::Index row = static_cast<Eigen::Index>(folds.held_out[f][k]);
@@ -146,6 +160,11 @@ Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& resi
     }
   }
   return out;
+}
+
+template <typename Choose>
+Eigen::MatrixX2d held_out(const Eigen::MatrixXd& x, const Eigen::MatrixX2d& residual, const Folds& folds, Choose choose) {
+  return held_out(fold_rows(x, stacked(residual), folds, residual.rows()), residual, folds, choose);
 }
 
 /// Mean and standard error of the held-out mean square over the blocks.
@@ -576,8 +595,9 @@ std::optional<CandidateScore> search(std::span<const RecordedSample> observation
   // fold's order is found once, on the first pass, and cut for every m.
   std::vector<std::vector<Eigen::Index>> order(folds.training.size());
   std::vector<std::pair<double, double>> scores;
+  const std::vector<FoldRows> cut = fold_rows(z, y, folds, residual.rows());
   for (std::size_t m = 0; m <= static_cast<std::size_t>(settings.max_terms) + first; ++m) {
-    const Eigen::MatrixX2d r = held_out(z, residual, folds, [&](std::size_t f, const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
+    const Eigen::MatrixX2d r = held_out(cut, residual, folds, [&](std::size_t f, const Eigen::MatrixXd& xt, const Eigen::VectorXd& yt) {
       if (m == 0) order[f] = forward_order(xt, yt, settings.max_terms, design.weights, within_channels);
       return terms_at(order[f], m);
     });
