@@ -61,7 +61,7 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   // Each round's residual on the usable rows: the first from this pass, later ones from the refit.
   Eigen::MatrixX2d residual = first.failed_rows.empty() ? first.residual : select_rows(first.residual, ordered, rows);
   exclude_moment_flips(out, observations, rows, residual);
-  out.outlier_rows = exclude_outliers(rows, residual, settings.outlier_deviations);
+  out.outlier_rows = exclude_outliers(observations, rows, residual, settings.outlier_deviations);
   exclude_rows_at_model_jumps(out, model, observations, rows, residual, parallel);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   if (rows.size() < static_cast<std::size_t>(minimum)) {

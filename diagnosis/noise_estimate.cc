@@ -142,7 +142,7 @@ NoiseEstimate estimate_noise(const Eigen::MatrixX2d& residual, bool as_noise) {
   return out;
 }
 
-std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, double k) {
+std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, double k, const Eigen::Array2d& least_scale) {
   const Eigen::Index n = residual.rows();
   if (n < 2 * kMedianHalf + 1) return {};
   std::vector<std::size_t> out;
@@ -157,7 +157,7 @@ std::vector<std::size_t> outlier_positions(const Eigen::MatrixX2d& residual, dou
     }
     std::vector<double> magnitudes(deviation.data(), deviation.data() + n);
     for (double& m : magnitudes) m = std::abs(m);
-    const double scale = 1.4826 * median(magnitudes);
+    const double scale = std::max(1.4826 * median(magnitudes), least_scale(c));
     if (scale <= 0.0) continue;
     for (Eigen::Index i = 0; i < n; ++i) {
       flagged[static_cast<std::size_t>(i)] = std::abs(deviation(i)) > k * scale;

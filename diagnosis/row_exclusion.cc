@@ -1,10 +1,13 @@
 #include "diagnosis/row_exclusion.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "diagnosis/model_jumps.h"
 #include "diagnosis/noise_estimate.h"
 #include "diagnosis/polarity_flip.h"
+#include "diagnosis/quantisation.h"
 #include "diagnosis/row_selection.h"
 
 namespace gc {
@@ -21,9 +24,18 @@ void leave_out(const std::vector<std::size_t>& excluded, std::vector<std::size_t
 
 }  // namespace
 
-std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations) {
+std::vector<std::size_t> exclude_outliers(std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                                          Eigen::MatrixX2d& residual, double deviations) {
+  // Rounding to a step q adds q / sqrt(12) of white noise (quantisation.h).
+  Eigen::Array2d rounding = Eigen::Array2d::Zero();
+  for (int c = 0; c < 2; ++c) {
+    std::vector<double> values;
+    values.reserve(rows.size());
+    for (std::size_t r : rows) values.push_back(c == 0 ? observations[r].measured.y_nm : observations[r].measured.z_nm);
+    if (const std::optional<double> step = quantisation_step(values)) rounding(c) = *step / std::sqrt(12.0);
+  }
   std::vector<std::size_t> outliers;
-  for (std::size_t position : outlier_positions(residual, deviations)) outliers.push_back(rows[position]);
+  for (std::size_t position : outlier_positions(residual, deviations, rounding)) outliers.push_back(rows[position]);
   std::vector<std::size_t> sorted = outliers;
   std::sort(sorted.begin(), sorted.end());
   leave_out(sorted, rows, residual);

@@ -16,8 +16,10 @@
 namespace gc {
 
 /// Spikes are measurement faults, not physics: removed from `rows` (in time order) and `residual`
-/// once, from the base model's residual. Returns them (indices into the recording).
-std::vector<std::size_t> exclude_outliers(std::vector<std::size_t>& rows, Eigen::MatrixX2d& residual, double deviations);
+/// once, from the base model's residual. Returns them (indices into the recording). A moment
+/// channel rounded to an ADC step (quantisation.h) is judged against its rounding noise at least.
+std::vector<std::size_t> exclude_outliers(std::span<const RecordedSample> observations, std::vector<std::size_t>& rows,
+                                          Eigen::MatrixX2d& residual, double deviations);
 
 /// A moment channel whose sign turned (polarity_flip.h) measured the coupling with the wrong sign:
 /// its rows leave `rows` and `residual` and join the data-quality findings.
