@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/coupling_frame.h"
+#include "core/effects/summed_input_timing.h"
 #include "core/induced_moments.h"
 #include "core/model_error.h"
 #include "core/restoring_torque.h"
@@ -40,13 +41,7 @@ CouplingModel::CouplingModel(const CouplingDefinition& coupling,
 }
 
 InputTiming CouplingModel::input_timing(const MeasurementSample& sample) const {
-  InputTiming sum;
-  for (const auto& effect : effects_) {
-    const InputTiming t = effect->input_timing(sample);
-    sum.delay_s += t.delay_s;
-    sum.average_s += t.average_s;
-  }
-  return sum;
+  return summed_input_timing(effects_, sample);
 }
 
 InputReach CouplingModel::input_reach(const MeasurementSample& sample) const {

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <set>
 
+#include "core/effects/summed_input_timing.h"
 #include "core/model_error.h"
 
 namespace gc {
@@ -83,13 +84,7 @@ double JointEffect::history_s() const {
 }
 
 InputTiming JointEffect::input_timing(const MeasurementSample& sample) const {
-  InputTiming sum;
-  for (const auto& m : members_) {
-    const InputTiming t = m->input_timing(sample);
-    sum.delay_s += t.delay_s;
-    sum.average_s += t.average_s;
-  }
-  return sum;
+  return summed_input_timing(members_, sample);
 }
 
 bool JointEffect::times_inputs() const {

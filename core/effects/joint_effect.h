@@ -33,7 +33,7 @@ class JointEffect final : public Effect {
   void adjust_outputs_in_history(const InputHistory& history, SensorMoments& moments) const override;
   bool reads_history() const override;
   double history_s() const override;
-  /// The members' timings summed, as CouplingModel::input_timing sums its effects'.
+  /// The members' timings summed (summed_input_timing.h).
   InputTiming input_timing(const MeasurementSample& sample) const override;
   bool times_inputs() const override;
 

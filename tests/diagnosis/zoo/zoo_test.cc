@@ -149,6 +149,31 @@ TEST(NoiseZoo, DrawsThatFreshMeasurementsClaimedOrFailedOnAreNoise) {
   EXPECT_EQ(errors, 0u) << report;
 }
 
+/// A power table's draw (`seed`, draw `k`, `effect` hidden at SNR 1.5, 1,000-20,000 rows: the
+/// generator's own, written without reading the diagnosis), diagnosed by the CLI as a user runs it.
+struct PowerDraw {
+  ZooDraw draw;
+  DiagnoseOutcome out;
+  std::string json;  ///< diagnose --json as printed
+};
+
+PowerDraw diagnosed_power_draw(std::uint64_t seed, std::size_t k, const std::string& effect) {
+  DrawLimits lim;
+  lim.min_rows = 1000;
+  lim.max_rows = 20000;
+  lim.effect_truth = effect;
+  lim.effect_snr = 1.5;
+  PowerDraw p{draw(draw_seed(seed, k), lim), {}, {}};
+  const auto dir = std::filesystem::temp_directory_path() / ("gc_zoo_power_" + effect + "_" + std::to_string(::getpid()));
+  const auto model = write_choice(p.draw.model, dir);
+  std::ofstream(dir / "recording.csv", std::ios::binary) << p.draw.csv;
+  p.out = run_diagnose(GC_GEARCOUPLING_PATH, dir / "recording.csv", model, 1);
+  std::ifstream json_file(dir / "diagnose.json", std::ios::binary);
+  p.json.assign(std::istreambuf_iterator<char>(json_file), std::istreambuf_iterator<char>());
+  std::filesystem::remove_all(dir);
+  return p;
+}
+
 // Power: a misalignment scale of -0.24 (the hidden effect written from the physics in
 // hidden_effects.cc) under slow heteroscedastic noise at SNR 1.5, on a torque staircase of 3,252
 // rows (power table seed 20261214, draw 1). The cost in the scale is a staircase with a narrow
@@ -156,20 +181,11 @@ TEST(NoiseZoo, DrawsThatFreshMeasurementsClaimedOrFailedOnAreNoise) {
 // (four parameters, 4.07 kN·m held out against the truth's 3.80) was named first, until a lone
 // parameter is also scanned over its box (effect_fit.cc, scanned_start).
 TEST(NoiseZooPower, AMisalignmentScaleInItsNarrowValleyIsNamedFirst) {
-  DrawLimits lim;
-  lim.min_rows = 1000;
-  lim.max_rows = 20000;
-  lim.effect_truth = "misalignment_scale";
-  lim.effect_snr = 1.5;
-  const ZooDraw d = draw(draw_seed(20261214, 1), lim);
-  const auto dir = std::filesystem::temp_directory_path() / ("gc_zoo_power_" + std::to_string(::getpid()));
-  const auto model = write_choice(d.model, dir);
-  std::ofstream(dir / "recording.csv", std::ios::binary) << d.csv;
-  const DiagnoseOutcome out = run_diagnose(GC_GEARCOUPLING_PATH, dir / "recording.csv", model, 1);
-  std::filesystem::remove_all(dir);
-  ASSERT_FALSE(out.error) << out.stderr_tail;
-  ASSERT_FALSE(out.first_claim.empty()) << out.outcomes << "\n" << d.description;
-  EXPECT_EQ(out.first_claim.front(), "misalignment_scale") << out.outcomes << ": " << out.numbers << "\n" << d.description;
+  const PowerDraw p = diagnosed_power_draw(20261214, 1, "misalignment_scale");
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
+  EXPECT_EQ(p.out.first_claim.front(), "misalignment_scale")
+      << p.out.outcomes << ": " << p.out.numbers << "\n" << p.draw.description;
 }
 
 // A speed drag of 1.7 kN·m/rpm under the zoo's heteroscedastic, demodulated and slowly modulated
@@ -179,26 +195,14 @@ TEST(NoiseZooPower, AMisalignmentScaleInItsNarrowValleyIsNamedFirst) {
 // better by a block-paired t of 9.7, as "another reading of the same residual that this data
 // cannot tell from it": it must say they do better.
 TEST(NoiseZooPower, AFormulaBetterThanTheClaimedEffectIsNotCalledItsEqual) {
-  DrawLimits lim;
-  lim.min_rows = 1000;
-  lim.max_rows = 20000;
-  lim.effect_truth = "speed_drag";
-  lim.effect_snr = 1.5;
-  const ZooDraw d = draw(draw_seed(20261216, 0), lim);
-  const auto dir = std::filesystem::temp_directory_path() / ("gc_zoo_drag_" + std::to_string(::getpid()));
-  const auto model = write_choice(d.model, dir);
-  std::ofstream(dir / "recording.csv", std::ios::binary) << d.csv;
-  const DiagnoseOutcome out = run_diagnose(GC_GEARCOUPLING_PATH, dir / "recording.csv", model, 1);
-  std::ifstream json_file(dir / "diagnose.json", std::ios::binary);
-  const std::string json((std::istreambuf_iterator<char>(json_file)), std::istreambuf_iterator<char>());
-  std::filesystem::remove_all(dir);
-  ASSERT_FALSE(out.error) << out.stderr_tail;
-  ASSERT_FALSE(out.first_claim.empty()) << out.outcomes << "\n" << d.description;
-  EXPECT_EQ(out.first_claim.front(), "friction") << out.outcomes << ": " << out.numbers;
-  EXPECT_NE(json.find("A formula of physical terms does better on held-out data"), std::string::npos)
-      << json.substr(0, 4000);
-  EXPECT_NE(json.find("speed_on_z"), std::string::npos) << json.substr(0, 4000);
-  EXPECT_EQ(json.find("cannot tell from it"), std::string::npos) << json.substr(0, 4000);
+  const PowerDraw p = diagnosed_power_draw(20261216, 0, "speed_drag");
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
+  EXPECT_EQ(p.out.first_claim.front(), "friction") << p.out.outcomes << ": " << p.out.numbers;
+  EXPECT_NE(p.json.find("A formula of physical terms does better on held-out data"), std::string::npos)
+      << p.json.substr(0, 4000);
+  EXPECT_NE(p.json.find("speed_on_z"), std::string::npos) << p.json.substr(0, 4000);
+  EXPECT_EQ(p.json.find("cannot tell from it"), std::string::npos) << p.json.substr(0, 4000);
 }
 
 // An ADC step of 5.2 kN·m on M_sy' (1.74 times the noise; another hand's adc_step family) under
@@ -207,26 +211,14 @@ TEST(NoiseZooPower, AFormulaBetterThanTheClaimedEffectIsNotCalledItsEqual) {
 // step of one ADC count stood 7 robust deviations out: 652 rows were excluded as isolated spikes.
 // Judged against the rounding noise (q / sqrt(12)) at least, a step is no spike.
 TEST(NoiseZooPower, AnAdcStepIsNotTakenForSpikes) {
-  DrawLimits lim;
-  lim.min_rows = 1000;
-  lim.max_rows = 20000;
-  lim.effect_truth = "weight";
-  lim.effect_snr = 1.5;
-  const ZooDraw d = draw(draw_seed(20261219, 1), lim);
-  ASSERT_NE(d.description.find("ADC step"), std::string::npos) << d.description;
-  const auto dir = std::filesystem::temp_directory_path() / ("gc_zoo_adc_" + std::to_string(::getpid()));
-  const auto model = write_choice(d.model, dir);
-  std::ofstream(dir / "recording.csv", std::ios::binary) << d.csv;
-  const DiagnoseOutcome out = run_diagnose(GC_GEARCOUPLING_PATH, dir / "recording.csv", model, 1);
-  std::ifstream json_file(dir / "diagnose.json", std::ios::binary);
-  const std::string json((std::istreambuf_iterator<char>(json_file)), std::istreambuf_iterator<char>());
-  std::filesystem::remove_all(dir);
-  ASSERT_FALSE(out.error) << out.stderr_tail;
-  const std::size_t at = json.find("\"outlier_rows\":");
-  ASSERT_NE(at, std::string::npos) << json.substr(0, 2000);
-  const long outliers = std::strtol(json.c_str() + at + 15, nullptr, 10);
-  EXPECT_LE(outliers, 10) << d.description;  // of 3,265 rows
-  EXPECT_NE(json.find("quantisation"), std::string::npos);
+  const PowerDraw p = diagnosed_power_draw(20261219, 1, "weight");
+  ASSERT_NE(p.draw.description.find("ADC step"), std::string::npos) << p.draw.description;
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  const std::size_t at = p.json.find("\"outlier_rows\":");
+  ASSERT_NE(at, std::string::npos) << p.json.substr(0, 2000);
+  const long outliers = std::strtol(p.json.c_str() + at + 15, nullptr, 10);
+  EXPECT_LE(outliers, 10) << p.draw.description;  // of 3,265 rows
+  EXPECT_NE(p.json.find("quantisation"), std::string::npos);
 }
 
 }  // namespace
