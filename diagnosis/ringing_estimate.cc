@@ -211,7 +211,8 @@ std::optional<RingingMode> dominant_ringing(std::span<const RecordedSample> obse
     return scores;
   };
   // The residual's own scores first: most recordings have no mode out of the noise, and the
-  // shifted residuals (two thirds of the grid's work) are asked only of one that stands out.
+  // shifted residuals (38 products of each column, beside its 2 with the residual) are asked only
+  // of one that stands out.
   for (const std::vector<GridScores>& at : grid_scores(Shifts::none)) {
     for (std::size_t z = 0; z < std::size(kDampings); ++z, ++grid) {
       if (at[z][0] > best) { best = at[z][0]; best_f = frequencies[grid / std::size(kDampings)]; best_zeta = kDampings[z]; }
