@@ -46,8 +46,24 @@ void MeasurementPublisher::flush() {
   batch.samples._buffer = queued_.data();
   batch.samples._length = batch.samples._maximum = static_cast<std::uint32_t>(queued_.size());
   batch.samples._release = false;
+  // A busy reader (a monitor starved of CPU for a second) is not a lost one: wait for it, as
+  // KEEP_ALL promises, but not forever. A dead reader is unmatched by liveliness, so a write
+  // that still times out after `patience_` has a reader alive and stuck.
+  const auto start = std::chrono::steady_clock::now();
+  dds_return_t rc = dds_write(writer_.get(), &batch);
+  while (rc == DDS_RETCODE_TIMEOUT && std::chrono::steady_clock::now() - start < patience_) {
+    ++retried_writes_;
+    rc = dds_write(writer_.get(), &batch);
+  }
+  if (rc == DDS_RETCODE_TIMEOUT) {
+    const double waited_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    throw protocol::DdsError("dds_write(measurement) of " + std::to_string(queued_.size()) +
+                                 " samples of test cell " + test_cell_ + ", still blocked by a "
+                                 "reader after " + std::to_string(waited_s) + " s (kept queued),",
+                             rc);
+  }
+  check_dds(rc, "dds_write(measurement)");
   queued_.clear();
-  check_dds(dds_write(writer_.get(), &batch), "dds_write(measurement)");
 }
 
 bool MeasurementPublisher::wait_for_readers(std::uint32_t readers,

@@ -25,8 +25,15 @@ class MeasurementPublisher {
 
   /// Queues `sample` for the next batch (flushes first when the batch is full).
   void add(const RecordedSample& sample);
-  /// Writes the queued samples as one MeasurementBatch (nothing when none is queued).
+  /// Writes the queued samples as one MeasurementBatch (nothing when none is queued). A reader
+  /// that must lose nothing and falls behind makes each dds_write wait up to 1 s (live_qos.h);
+  /// the write is tried again until `patience` has passed, then a protocol error says how long
+  /// the batch waited and the samples stay queued for the next flush.
   void flush();
+  /// How long flush() waits in all for a reader that has fallen behind (30 s unless set).
+  void set_patience(std::chrono::milliseconds patience) { patience_ = patience; }
+  /// How many dds_write calls timed out and were tried again.
+  std::uint64_t retried_writes() const { return retried_writes_; }
   /// Waits until at least `readers` readers are matched (a sample written before is lost to
   /// them). Returns whether they were.
   bool wait_for_readers(std::uint32_t readers, std::chrono::milliseconds timeout) const;
@@ -38,6 +45,8 @@ class MeasurementPublisher {
   std::string test_cell_;
   std::uint64_t run_id_;
   std::uint64_t next_sequence_ = 1;
+  std::chrono::milliseconds patience_{30000};
+  std::uint64_t retried_writes_ = 0;
   protocol::Entity publisher_, topic_, writer_;
   std::vector<gearcoupling_Measurement> queued_;
   std::vector<MeasurementOptionals> optionals_;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <thread>
 
 #include "gearcoupling.h"
 #include "live/live_qos.h"
@@ -141,16 +142,17 @@ TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
   live::ModelSwapPublisher swaps(participant_.get(), {"swaps"});
   ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
   ASSERT_TRUE(swaps.wait_for_readers(1, 10s));
-  std::atomic<bool> streaming{true};
-  std::thread swapper([&] {
-    for (int i = 0; streaming && i < 200; ++i) {
-      swaps.publish("swaps", i % 2 == 0 ? variant_text("mu012", 0.12) : kPaperText);
-      std::this_thread::sleep_for(100ms);
-    }
-  });
-  const std::uint64_t published = publish_stream(publisher, paper_samples(), 20000, 2000.0);
-  streaming = false;
-  swapper.join();
+  std::uint64_t published = 0;
+  {
+    // A jthread: a failed write below is reported as the test's failure, not an abort.
+    std::jthread swapper([&](std::stop_token stop) {
+      for (int i = 0; !stop.stop_requested() && i < 200; ++i) {
+        swaps.publish("swaps", i % 2 == 0 ? variant_text("mu012", 0.12) : kPaperText);
+        std::this_thread::sleep_for(100ms);
+      }
+    });
+    published = publish_stream(publisher, paper_samples(), 20000, 2000.0);
+  }
   const auto health = health_.wait_for(
       "swaps", [&](const HealthView& h) { return h.taken >= published; }, 20s);
   ASSERT_TRUE(health.has_value());
@@ -161,6 +163,60 @@ TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
   ASSERT_TRUE(health->previous_model_name.has_value());
   EXPECT_NE(*health->previous_model_name, health->model_name);
   EXPECT_EQ(health->last_model_refusal, "");
+  EXPECT_TRUE(monitor->running());
+}
+
+// A monitor that stops acknowledging (here SIGSTOP, in a test cell a host busy for seconds)
+// makes each dds_write wait its 1 s and time out. The DAQ's publisher waits on, up to its
+// patience: the stream is delayed, not lost, and nothing is evaluated twice. Beyond its patience
+// flush() throws, names the wait and keeps the batch for the next flush.
+TEST_F(LiveTest, AMonitorThatStopsAcknowledgingDelaysTheStreamAndLosesNothing) {
+  auto monitor = start_monitor({"--health-period-s", "0.1"});
+  live::MeasurementPublisher publisher(participant_.get(), "stalled");
+  ASSERT_TRUE(publisher.wait_for_readers(1, 10s));
+  publish_stream(publisher, paper_samples(), 100, 5000.0);
+  ASSERT_TRUE(health_.wait_for("stalled", [](const HealthView& h) { return h.taken == 100; }, 10s));
+
+  // Full batches until the writer's unacknowledged window (WhcHigh, 500 kB) is full: then a
+  // write blocks. 2.5 s of silence is longer than one dds_write waits.
+  const auto samples = paper_samples();
+  monitor->signal(SIGSTOP);
+  std::jthread resume([&] {
+    std::this_thread::sleep_for(2500ms);
+    monitor->signal(SIGCONT);
+  });
+  const std::uint64_t streamed = 100 + publish_stream(publisher, samples, 40000, 1e9, 100);
+  resume.join();
+  EXPECT_GT(publisher.retried_writes(), 0u) << "the monitor's silence never blocked a write";
+
+  // Now with 1.2 s of patience (two writes of 1 s) against 2.5 s of silence: an error, the
+  // batch kept. Silence longer than the participants' lease (3 s, cyclonedds-loopback.xml)
+  // would unmatch the monitor instead, as any dead reader.
+  publisher.set_patience(1200ms);
+  monitor->signal(SIGSTOP);
+  std::jthread resume_later([&] {
+    std::this_thread::sleep_for(2500ms);
+    monitor->signal(SIGCONT);
+  });
+  std::string error;
+  try {
+    publish_stream(publisher, samples, 40000, 1e9, streamed);
+  } catch (const protocol::DdsError& e) {
+    error = e.what();
+  }
+  ASSERT_NE(error.find("kept queued"), std::string::npos) << "no error, or not this one: " << error;
+  EXPECT_NE(error.find("stalled"), std::string::npos) << error;
+  publisher.set_patience(30s);
+  publisher.flush();   // waits for the monitor to go on
+  resume_later.join();
+  const std::uint64_t written = publisher.samples_written();
+
+  const auto health = health_.wait_for(
+      "stalled", [&](const HealthView& h) { return h.taken >= written; }, 30s);
+  ASSERT_TRUE(health.has_value());
+  EXPECT_EQ(health->taken, written);
+  EXPECT_EQ(health->evaluated, written);
+  EXPECT_EQ(health->lost, 0u);
   EXPECT_TRUE(monitor->running());
 }
 
