@@ -1,6 +1,7 @@
 #include "parallel/thread_parallel_for.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -8,6 +9,10 @@
 namespace gc {
 
 namespace {
+
+/// Chunks per thread of a range: enough to even out uneven chunks, few enough that a chunk's own
+/// setup (a model's copy with its history) stays small beside its rows.
+constexpr std::size_t kChunksPerThread = 8;
 
 // Runs run(0) .. run(workers - 1), run(0) on the caller; rethrows the first exception.
 void on_threads(std::size_t workers, const std::function<void(std::size_t)>& run) {
@@ -41,12 +46,19 @@ unsigned resolved_threads(unsigned threads) {
 ParallelFor thread_parallel_for(unsigned threads) {
   threads = resolved_threads(threads);
   return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-    const std::size_t chunks = std::min<std::size_t>(threads, count);
-    if (chunks <= 1) {
+    const std::size_t workers = std::min<std::size_t>(threads, count);
+    if (workers <= 1) {
       if (count > 0) body(0, count);
       return;
     }
-    on_threads(chunks, [&](std::size_t c) { body(c * count / chunks, (c + 1) * count / chunks); });
+    // More chunks than threads, each taken by whichever thread is free: the halves of a range
+    // rarely cost the same (the candidates' fits, a few rows' refusals), and on a host whose
+    // cores are busy with others, one thread runs slower than the other.
+    const std::size_t chunks = std::min<std::size_t>(count, kChunksPerThread * workers);
+    std::atomic<std::size_t> next{0};
+    on_threads(workers, [&](std::size_t) {
+      for (std::size_t c = next++; c < chunks; c = next++) body(c * count / chunks, (c + 1) * count / chunks);
+    });
   };
 }
 

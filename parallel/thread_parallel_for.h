@@ -6,8 +6,9 @@
 
 namespace gc {
 
-/// Splits each call's range into `threads` contiguous chunks, runs them on threads - 1 new
-/// threads and the caller, and returns when all are done; exceptions from a chunk are rethrown.
+/// Splits each call's range into up to 8 contiguous chunks per thread, which `threads` - 1 new
+/// threads and the caller take as each comes free, and returns when all are done; exceptions from
+/// a chunk are rethrown.
 /// threads = 0 means std::thread::hardware_concurrency().
 ParallelFor thread_parallel_for(unsigned threads = 0);
 
