@@ -181,6 +181,20 @@ double long_run_inflation(const Eigen::VectorXd& x) {
   return std::max(1.0, static_cast<double>(length) * means / static_cast<double>(kBlocks) / variance);
 }
 
+double level_standard_errors(const Eigen::MatrixX2d& residual) {
+  const Eigen::Index n = residual.rows();
+  if (n < 100) return 0.0;
+  double most = 0.0;
+  for (int c = 0; c < 2; ++c) {
+    const double mean = residual.col(c).mean();
+    const Eigen::VectorXd about = residual.col(c).array() - mean;
+    const double variance = about.squaredNorm() / static_cast<double>(n);
+    const double error = std::sqrt(variance * long_run_inflation(about) / static_cast<double>(n));
+    if (error > 0.0) most = std::max(most, std::abs(mean) / error);
+  }
+  return most;
+}
+
 double pooled_mean_square(const Eigen::MatrixX2d& residual) {
   return residual.rows() == 0 ? 0.0 : residual.squaredNorm() / (2.0 * static_cast<double>(residual.rows()));
 }

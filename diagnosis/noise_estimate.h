@@ -74,4 +74,11 @@ double pooled_mean_square(const Eigen::MatrixX2d& residual);
 /// correlation of any length shorter than a block). At least 1; 1 for fewer than 100 rows.
 double long_run_inflation(const Eigen::VectorXd& x);
 
+/// How far a channel's level stands from zero: |mean| over its long-run standard error (the
+/// variance about the mean, times long_run_inflation, over the rows), the larger of the two
+/// channels; 0 for fewer than 100 rows. A mean square sees an offset only beside the noise's whole
+/// variance, heavy tails and all: an offset of 1.5 times a resonant, heavy-tailed noise stood
+/// within the mean square's band, and 14 long-run errors from zero.
+double level_standard_errors(const Eigen::MatrixX2d& residual);
+
 }  // namespace gc

@@ -59,6 +59,25 @@ TEST(NoiseEstimate, IsNotInflatedBySlowStructure) {
   EXPECT_NEAR(n.sigma_nm(1), 2000.0, 150.0);
 }
 
+// A channel's level against its long-run standard error (level_standard_errors): correlated noise
+// about zero stays within 4.5 errors at the rate a calibrated test allows, over 200 fresh draws of
+// white and AR(1) noise at phi 0.9 and 0.98 (a naive error, sqrt(variance / n), is ten times too
+// small at 0.98 and puts most of its levels past 4.5); an offset of a fifth of a white noise's sigma
+// over 4,000 rows stands far out.
+TEST(NoiseEstimate, TellsALevelFromCorrelatedNoiseAboutZero) {
+  int beyond = 0, draws = 0;
+  for (const double phi : {0.0, 0.9, 0.98}) {
+    for (std::uint64_t seed = 1; seed <= 200; ++seed, ++draws) {
+      beyond += level_standard_errors(ar1(1000.0, phi, 9000 + seed)) > 4.5;
+    }
+  }
+  EXPECT_LE(beyond, 2) << "of " << draws;
+  Eigen::MatrixX2d offset = ar1(1000.0, 0.0, 77);
+  offset.col(0).array() += 200.0;
+  EXPECT_GT(level_standard_errors(offset), 8.0);
+  EXPECT_EQ(level_standard_errors(ar1(1000.0, 0.0, 78).topRows(99)), 0.0);  // too few rows to say
+}
+
 TEST(NoiseEstimate, FlagsSpikesButNotStepsOrColouredNoise) {
   Eigen::MatrixX2d r = ar1(2000.0, 0.8, 11);
   // A step of 16 kN·m every 200 rows (an effect that flips with the direction of travel).
