@@ -166,7 +166,7 @@ TEST_F(LiveTest, AModelSwapEvery100MsLosesNoSampleAndEvaluatesNoneTwice) {
   EXPECT_TRUE(monitor->running());
 }
 
-// A monitor that stops acknowledging (here SIGSTOP, in a test cell a host busy for seconds)
+// A monitor that stops acknowledging (here SIGSTOP, in a test cell a host busy for a second or two)
 // makes each dds_write wait its 1 s and time out. The DAQ's publisher waits on, up to its
 // patience: the stream is delayed, not lost, and nothing is evaluated twice. Beyond its patience
 // flush() throws, names the wait and keeps the batch for the next flush.
@@ -178,24 +178,25 @@ TEST_F(LiveTest, AMonitorThatStopsAcknowledgingDelaysTheStreamAndLosesNothing) {
   ASSERT_TRUE(health_.wait_for("stalled", [](const HealthView& h) { return h.taken == 100; }, 10s));
 
   // Full batches until the writer's unacknowledged window (WhcHigh, 500 kB) is full: then a
-  // write blocks. 2.5 s of silence is longer than one dds_write waits.
+  // write blocks. 2 s of silence is longer than one dds_write waits, and 1 s inside the
+  // participants' lease (3 s, cyclonedds-loopback.xml), beyond which the monitor would be
+  // unmatched as any dead reader.
   const auto samples = paper_samples();
   monitor->signal(SIGSTOP);
   std::jthread resume([&] {
-    std::this_thread::sleep_for(2500ms);
+    std::this_thread::sleep_for(2000ms);
     monitor->signal(SIGCONT);
   });
   const std::uint64_t streamed = 100 + publish_stream(publisher, samples, 40000, 1e9, 100);
   resume.join();
   EXPECT_GT(publisher.retried_writes(), 0u) << "the monitor's silence never blocked a write";
 
-  // Now with 1.2 s of patience (two writes of 1 s) against 2.5 s of silence: an error, the
-  // batch kept. Silence longer than the participants' lease (3 s, cyclonedds-loopback.xml)
-  // would unmatch the monitor instead, as any dead reader.
-  publisher.set_patience(1200ms);
+  // Now with 0.3 s of patience (one write of 1 s) against 2 s of silence: an error, the batch
+  // kept, and a second of margin for the window to fill on a busy host.
+  publisher.set_patience(300ms);
   monitor->signal(SIGSTOP);
   std::jthread resume_later([&] {
-    std::this_thread::sleep_for(2500ms);
+    std::this_thread::sleep_for(2000ms);
     monitor->signal(SIGCONT);
   });
   std::string error;
