@@ -216,8 +216,8 @@ TEST(NoiseZooPower, AFormulaBetterThanTheClaimedEffectIsNotCalledItsEqual) {
 // Judged against the rounding noise (q / sqrt(12)) at least, a step is no spike.
 //
 // The same draw's hidden weight, an offset of 4.5 kN·m on M_sy' (1.5 times the noise), was then
-// "noise": the residual's mean square stood within 4.5 errors of the noise's, heavy tails and the
-// lag-1 inflation of 56 included. Its level stands 14 long-run errors from zero
+// "noise": the residual's mean square was 0.87 times the noise's estimate, heavy tails included,
+// where 2.24 times was needed. Its level stands 90 long-run errors from zero
 // (level_standard_errors): the round searches, and a weight is named first.
 TEST(NoiseZooPower, AnAdcStepIsNotTakenForSpikesAndTheOffsetBesideItIsFound) {
   const PowerDraw p = diagnosed_power_draw(20261219, 1, "weight");
