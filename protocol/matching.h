@@ -18,6 +18,10 @@ std::uint32_t matched_reader_count(dds_entity_t writer);
 /// True when `reader` is matched with at least one writer whose USER_DATA equals `tag`.
 bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag);
 
+/// True when `writer` is matched with a reader of participant `participant` (a GUID's
+/// participant key): what Cyclone knows now, before the built-in topics report that reader.
+bool matched_with_reader_of(dds_entity_t writer, const dds_guid_t& participant);
+
 /// The participant of `publication`, a writer matched with `reader` (a sample's
 /// dds_sample_info_t::publication_handle); nullopt when it is no longer matched.
 std::optional<dds_guid_t> participant_of_publication(dds_entity_t reader,

@@ -182,6 +182,16 @@ bool ReplyWriters::matched_locked(const Key& key) {
   return entry.matched;
 }
 
+bool ReplyWriters::reads_own_replies_locked(const Key& key, const ParticipantKey& requester) {
+  const auto found = writers_.find(key);
+  if (found == writers_.end() || !found->second.endpoint.writer) return false;
+  dds_guid_t participant{};
+  std::memcpy(participant.v, requester.data(), requester.size());
+  // Cyclone has matched the requester's own reply reader, but the dispatch loop has not yet taken
+  // its report from the built-in topic: the requester is an owner the loop does not know yet.
+  return protocol::matched_with_reader_of(found->second.endpoint.writer.get(), participant);
+}
+
 ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation calculation,
                                             std::uint64_t sequence_number,
                                             const std::optional<ParticipantKey>& requester,
@@ -190,10 +200,12 @@ ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation
   const ParticipantKey from = requester.value_or(ParticipantKey{});
   {
     std::lock_guard lock(mutex_);
+    const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
     // Someone else's id: the client's readers are known and none is the requester's. Checked
     // before any hold, so a forger is neither parked nor able to spend the client's holds.
     if (const auto owners = owners_.find(client_id);
-        owners != owners_.end() && (!requester || owners->second.count(*requester) == 0)) {
+        owners != owners_.end() && (!requester || owners->second.count(*requester) == 0) &&
+        !(requester && reads_own_replies_locked(key, *requester))) {
       return Admission::kForged;
     }
     const Clock::time_point now = Clock::now();
@@ -201,7 +213,6 @@ ReplyWriters::Admission ReplyWriters::admit(std::uint64_t client_id, Calculation
       drops_.departed += 1;
       return Admission::kDropped;
     }
-    const Key key{client_id, static_cast<int>(protocol::index_of(calculation))};
     if (matched_locked(key)) return Admission::kRun;
     if (parked_count_ >= max_parked_) {
       drops_.parked_full += 1;

@@ -23,7 +23,9 @@
 // A client_id is not a capability (issue 23): what a request can do to a client (park, put it on
 // hold) is bound to the participant that wrote the request. A client's reply readers name their
 // participants (discovery); a request from another participant for a client that has readers is
-// refused at once as forged, and the hold after an unmatched request expires covers only
+// refused at once as forged. Another participant is one with no reader among the client's reply
+// readers: neither reported by the built-in topics nor, before its report, matched with the
+// client's writer (an eavesdropper's reader reported first made the client itself a forger). The hold after an unmatched request expires covers only
 // (client_id, the requesting participant). So a request carrying someone else's id costs that
 // client nothing. Under DDS Security the participant is authenticated (docs/security.md).
 #pragma once
@@ -116,7 +118,8 @@ class ReplyWriters {
 
   /// Without blocking, for a request of `client_id` written by participant `requester` (nullopt
   /// when its writer is no longer known): kForged when `client_id` has reply readers and none is
-  /// `requester`'s (the request names someone else's id; nothing is kept); kRun when (client,
+  /// `requester`'s, by discovery's reports or the writer's matches (the request names someone
+  /// else's id; nothing is kept); kRun when (client,
   /// calculation)'s writer is matched (the caller runs `job`); kParked when it is not (yet):
   /// `job` is kept until `park_until`; kDropped when the client has departed, `requester` is
   /// held for this id, or the parked requests are at their limit (`job` is left as it was).
@@ -194,6 +197,10 @@ class ReplyWriters {
   std::shared_ptr<Generation> generation_for_new_writer();
   Endpoint make_endpoint(std::shared_ptr<Generation> generation, const Key& key) const;
   bool matched_locked(const Key& key);
+  /// True when (client, calculation)'s writer is matched with a reader of `requester`: the
+  /// client's own reader, which Cyclone matched before the dispatch loop took its discovery report
+  /// (then an eavesdropper's reader, reported first, made the client look like a forger).
+  bool reads_own_replies_locked(const Key& key, const ParticipantKey& requester);
   bool departed_locked(std::uint64_t client_id, Clock::time_point now);
   bool held_locked(std::uint64_t client_id, const ParticipantKey& requester, Clock::time_point now);
   void mark_departed_locked(std::uint64_t client_id, Clock::time_point until);

@@ -143,5 +143,38 @@ TEST_F(ReplyWritersTest, AMoveWhoseSuccessorNeverMatchesIsGivenUpAndTheClientSti
   EXPECT_EQ(writers.domains(), 2u);   // the old domain stays while the client is in it
 }
 
+// The discovery race behind a flaky Service.RepliesOnlyToTheRequestingClient: a participant that
+// reads a client's partition (an eavesdropper) is reported by the built-in topics before the
+// client's own reply reader. The client, which waited for the writer to match it as the protocol
+// asks, had its first request refused as forged and waited out its call. Cyclone's writer already
+// matched the client's reader: that makes the client an owner. A participant with no reader there
+// is still refused.
+TEST_F(ReplyWritersTest, AClientWhoseReaderIsMatchedButNotYetReportedIsNotTakenForAForger) {
+  ReplyWriters writers(make_domain_, "0123456789abcdef", 16, [] {});
+  constexpr std::uint64_t kClient = 0x5749;
+  const ClientReader reader = jam_angle_reader(kClient);  // the client's own, on participant_
+  dds_guid_t guid{};
+  ASSERT_EQ(dds_get_guid(participant_.get(), &guid), DDS_RETCODE_OK);
+  const ParticipantKey client = participant_key_of(guid);
+  const ParticipantKey eavesdropper{7}, forger{9};
+  writers.reader_appeared(kClient, Calculation::kJamAngle, eavesdropper);  // reported first
+  const dds_entity_t writer = writers.writer(kClient, Calculation::kJamAngle);
+  ASSERT_NE(writer, 0);
+  ASSERT_TRUE(protocol::wait_until([&] { return protocol::matched_reader_count(writer) >= 1; },
+                                   std::chrono::steady_clock::now() + std::chrono::seconds(10)));
+  int ran = 0;
+  const auto admit = [&](const ParticipantKey& from) {
+    ReplyWriters::Job job = [&ran] { ran += 1; };
+    return writers.admit(kClient, Calculation::kJamAngle, 1, from, job,
+                         ReplyWriters::Clock::now() + std::chrono::seconds(1));
+  };
+  EXPECT_EQ(admit(forger), ReplyWriters::Admission::kForged);
+  EXPECT_EQ(admit(client), ReplyWriters::Admission::kRun) << "the client's own reader is matched: no forger";
+  // Once its report comes, it is an owner as before.
+  writers.reader_appeared(kClient, Calculation::kJamAngle, client);
+  EXPECT_EQ(admit(client), ReplyWriters::Admission::kRun);
+  EXPECT_EQ(admit(forger), ReplyWriters::Admission::kForged);
+}
+
 }  // namespace
 }  // namespace gc::service
