@@ -91,6 +91,11 @@ void print_diagnosis_summary(const v1::DiagnosisResult& result, std::FILE* out) 
   if (result.refused_rows() > 0) fmt::print(out, "  first refusal: {}\n", result.exclusion_reason());
   if (result.outlier_rows() > 0) fmt::print(out, "  {} rows excluded as outliers (spikes)\n", result.outlier_rows());
   print_data_quality(result, out);
+  if (result.rounds_size() == 0) {
+    // Too few rows left after the exclusions: the summary's last line says so and why.
+    const std::size_t last = result.summary().rfind('\n');
+    fmt::print(out, "\n{}\n", last == std::string::npos ? result.summary() : result.summary().substr(last + 1));
+  }
   for (int i = 0; i < result.rounds_size(); ++i) {
     const v1::RoundRecord& round = result.rounds(i);
     fmt::print(out, "\nRound {}: RMSE {:.2f} kN·m, noise {:.2f} kN·m (M_sy' {:.2f}, M_sz' {:.2f}; lag-1 autocorrelation {:.2f}, {:.2f})\n",

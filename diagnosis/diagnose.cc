@@ -64,9 +64,20 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   out.outlier_rows = exclude_outliers(observations, rows, residual, settings.outlier_deviations);
   exclude_rows_at_model_jumps(out, model, observations, rows, residual, parallel);
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
-  if (rows.size() < static_cast<std::size_t>(minimum)) {
-    throw InvalidInput("recording.rows", static_cast<double>(rows.size()),
+  const std::size_t predictable = observations.size() - first.failed_rows.size();
+  if (predictable < static_cast<std::size_t>(minimum)) {
+    throw InvalidInput("recording.rows", static_cast<double>(predictable),
                        "at least " + std::to_string(minimum) + " rows the model can predict");
+  }
+  if (rows.size() < static_cast<std::size_t>(minimum)) {
+    // The recording was long enough; what the data-quality stage took out of it leaves too little
+    // for held-out tests. Its findings are the answer, not an error that hides them.
+    out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
+    out.summary = data_quality_text(out.data_quality);
+    out.summary += (out.summary.empty() ? "" : "\n") + std::string("No physics diagnosed: ") +
+                   std::to_string(rows.size()) + " of " + std::to_string(out.rows) +
+                   " rows are left after the exclusions, and held-out tests need at least " + std::to_string(minimum) + ".";
+    return out;
   }
   const std::vector<std::size_t> search = evenly_spaced(rows, settings.search_rows);
   out.search_rows = search.size();

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/coupling_geometry.h"
+#include "core/model_error.h"
 #include "diagnosis/claim_review.h"
 #include "diagnosis/cycle_period.h"
 #include "diagnosis/formula_search.h"
@@ -53,6 +54,31 @@ TEST(DiagnosisRules, RefinesAnEffectTheModelHasWithWrongParameters) {
   EXPECT_EQ(d.summary.rfind("Round 1 (model: friction, pressure_angle_rotation, self_weight): refine friction", 0), 0u);
   ASSERT_EQ(d.added.size(), 1u);
   EXPECT_EQ(d.rounds.back().outcome, RoundOutcome::noise);
+}
+
+// A recording long enough to diagnose, of which the data-quality stage takes out all but a few
+// hundred rows (here a frozen M_sz' bridge; in the noise zoo, seed 20261225 draw 425, a torque
+// held by the programme and rows at the model's steps): the findings are the answer, with the count
+// left, not an error that hides them. A recording too short to begin with is still refused.
+TEST(DiagnosisRules, ARecordingThatTheExclusionsLeaveTooShortGetsItsDataQualityAndNoPhysics) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::vector<RecordedSample> r = record(model, sweeps(testing::nrel_upwind()), 53);
+  ASSERT_GT(r.size(), 700u);
+  r.resize(700);
+  for (std::size_t i = 0; i < r.size(); ++i) r[i].input.time_s = 0.1 * static_cast<double>(i);  // one sweep's clock
+  const std::size_t kept = 380;  // M_sz' holds its reading from row kept - 1 on (under half: not a set point)
+  for (std::size_t i = kept; i < r.size(); ++i) r[i].measured.z_nm = r[kept - 1].measured.z_nm;
+  const Diagnosis d = testing::diagnose_on_threads(model, r);
+  EXPECT_TRUE(d.rounds.empty()) << d.summary;
+  ASSERT_FALSE(d.data_quality.empty());
+  EXPECT_EQ(d.data_quality[0].kind, DataQualityKind::stuck) << d.summary;
+  EXPECT_FALSE(d.excluded_ranges.empty());
+  EXPECT_NE(d.summary.find("No physics diagnosed: " + std::to_string(kept - 1) + " of " + std::to_string(r.size()) +
+                           " rows are left after the exclusions, and held-out tests need at least 400."),
+            std::string::npos)
+      << d.summary;
+  r.resize(kept);
+  EXPECT_THROW(testing::diagnose_on_threads(model, r), InvalidInput);
 }
 
 // A formula in the user's model file is an effect like any other: with a wrong coefficient, it is
