@@ -241,6 +241,31 @@ TEST(Effects, ContinuousQuarterSumsIsTheContactOptionAsAModelPart) {
   EXPECT_NE(predict(with_effect, sample(0.56e6, 0.3)).y_nm, predict(paper_model(), sample(0.56e6, 0.3)).y_nm);
 }
 
+// Its one parameter scales the change from the paper's form to the continuous one: 0 is the
+// paper's sawtooth, 1 the continuous form, between a sawtooth partly smoothed, beyond 1 a
+// recording whose steps at the quarter-sum crossings are turned over.
+TEST(Effects, ContinuousQuarterSumsScalesTheSawtoothsChange) {
+  ContactOptions continuous;
+  continuous.continuous_quarter_sums = true;
+  const CouplingModel smooth(nrel_upwind(), paper_model().effects(), continuous);
+  EXPECT_TRUE(make_effect("continuous_quarter_sums", {{"smoothed_share", 0.0}})->neutral());
+  for (double share : {0.0, 0.5, 2.5, -1.0}) {
+    const CouplingModel with = paper_model().with_effect(make_effect("continuous_quarter_sums", {{"smoothed_share", share}}));
+    for (double torque : {0.3e6, 0.56e6, 1.2e6}) {
+      const MeasurementSample s = sample(torque, 0.3);
+      const SensorMoments paper = predict(paper_model(), s), even = predict(smooth, s), got = predict(with, s);
+      const double tolerance = 1e-9 * std::hypot(paper.y_nm, paper.z_nm);
+      EXPECT_NEAR(got.y_nm, paper.y_nm + share * (even.y_nm - paper.y_nm), tolerance) << share << " " << torque;
+      EXPECT_NEAR(got.z_nm, paper.z_nm + share * (even.z_nm - paper.z_nm), tolerance) << share << " " << torque;
+    }
+  }
+  // A model on the continuous form counts as share 1: the effect at 0 puts the paper's saw back.
+  const CouplingModel back = smooth.with_effect(make_effect("continuous_quarter_sums", {{"smoothed_share", 0.0}}));
+  const MeasurementSample s = sample(0.56e6, 0.3);
+  EXPECT_NEAR(predict(back, s).y_nm, predict(paper_model(), s).y_nm, 1e-9 * std::abs(predict(paper_model(), s).y_nm));
+  EXPECT_THROW(make_effect("continuous_quarter_sums", {{"smoothed_share", 25.0}}), InvalidInput);
+}
+
 TEST(Effects, BadConfigurationsNameTheField) {
   const auto field = [](auto call) {
     try { call(); } catch (const InvalidInput& e) { return e.field(); }
