@@ -47,6 +47,44 @@ bool near_an_order(double frequency_hz, const std::vector<double>& speeds_rpm, i
   return false;
 }
 
+/// Whether a line at `frequency_hz` stands out of `residual` (one row per `rows`) on the rows whose
+/// speed puts no shaft or mesh order near it (near_an_order at that row's speed), or that have no
+/// speed: an order's frequency follows the shaft, so a line of fixed frequency at speeds where no
+/// order can be there is the mains'. Least squares of each channel on a level and the cycle's
+/// cosine and sine; F of the cycle's two terms over 20 (a white-noise p of 1e-8: a strict test,
+/// for the line's frequency already is the mains'). Fewer than 100 such rows say nothing.
+bool line_away_from_the_orders(double frequency_hz, const Eigen::MatrixX2d& residual,
+                               std::span<const RecordedSample> observations, const std::vector<std::size_t>& rows,
+                               int teeth, double sample_rate_hz, double tolerance_hz) {
+  std::vector<Eigen::Index> far;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const std::optional<double>& speed = observations[rows[k]].input.speed_rpm;
+    if (!speed || !near_an_order(frequency_hz, {std::round(10.0 * std::abs(*speed)) / 10.0}, teeth, sample_rate_hz,
+                                 tolerance_hz)) {
+      far.push_back(static_cast<Eigen::Index>(k));
+    }
+  }
+  constexpr std::size_t kFewestRows = 100;
+  constexpr double kLeastF = 20.0;
+  if (far.size() < kFewestRows || residual.rows() != static_cast<Eigen::Index>(rows.size())) return false;
+  const Eigen::Index n = static_cast<Eigen::Index>(far.size());
+  Eigen::MatrixXd design(n, 3);
+  Eigen::MatrixX2d y(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double phase = 2.0 * M_PI * frequency_hz * observations[rows[static_cast<std::size_t>(far[i])]].input.time_s;
+    design.row(i) << 1.0, std::cos(phase), std::sin(phase);
+    y.row(i) = residual.row(far[i]);
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  for (int c = 0; c < 2; ++c) {
+    const Eigen::VectorXd fitted = design * qr.solve(y.col(c));
+    const double rss_level = (y.col(c).array() - y.col(c).mean()).square().sum();
+    const double rss_cycle = (y.col(c) - fitted).squaredNorm();
+    if (rss_cycle > 0.0 && (rss_level - rss_cycle) / 2.0 / (rss_cycle / static_cast<double>(n - 3)) > kLeastF) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::optional<double> mains_frequency(double frequency_hz, double sample_rate_hz, double resolution_hz) {
@@ -71,7 +109,7 @@ std::string mains_pickup_text(double cycle_hz, double mains_hz) {
 }
 
 std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
-                                  const std::vector<std::size_t>& rows, int teeth) {
+                                  const std::vector<std::size_t>& rows, const Eigen::MatrixX2d& residual, int teeth) {
   if (rows.size() < 2) return "";
   Eigen::VectorXd t(static_cast<Eigen::Index>(rows.size()));
   for (std::size_t k = 0; k < rows.size(); ++k) t(static_cast<Eigen::Index>(k)) = observations[rows[k]].input.time_s;
@@ -89,8 +127,13 @@ std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::spa
     // left to the physics: 60 Hz at 50 Hz sampling lands at 10 Hz, where a 56-tooth mesh at 10.7 rpm
     // also is, on a staircase of 10-14 rpm. Elsewhere it is mains: 50 Hz sampled at 11 Hz was
     // claimed as a cycle of 5.02 Hz in a zoo draw. A wide speed sweep puts an order near most
-    // frequencies, and the line stays with the physics, as before.
-    if (mains && *mains >= 0.5 / step && near_an_order(f, speeds_rpm, teeth, 1.0 / step, 1.0 / duration + 0.005 * f)) {
+    // frequencies at some speed; the line stays with the physics unless it is also there at the
+    // speeds where no order is near (60 Hz sampled at 38 Hz, a line at 16.0 Hz on every row of a
+    // shaft wandering 6.7-14.2 rpm, where a 100-tooth mesh passes 16 Hz on 15 % of the rows, was
+    // claimed as a time cycle: zoo seed 20261225 draw 362).
+    const double tolerance = 1.0 / duration + 0.005 * f;
+    if (mains && *mains >= 0.5 / step && near_an_order(f, speeds_rpm, teeth, 1.0 / step, tolerance) &&
+        !line_away_from_the_orders(f, residual, observations, rows, teeth, 1.0 / step, tolerance)) {
       return false;
     }
     if (mains && text.empty()) text = mains_pickup_text(f, *mains);

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "core/recorded_sample.h"
 
 namespace gc {
@@ -25,9 +27,10 @@ std::string mains_pickup_text(double cycle_hz, double mains_hz);
 
 /// Removes from `time_terms` a cycle at the mains frequency (mains_frequency), direct or aliased by
 /// the rows' sample rate, and returns what the verdict says of it ("" when none). An aliased one is
-/// kept where a shaft or tooth-mesh order of a coupling of `teeth` (0: unknown) at any speed the
-/// rows recorded lies as near: the data cannot tell the two apart there.
+/// kept where a shaft or tooth-mesh order of a coupling of `teeth` (0: unknown) at a speed the
+/// rows recorded lies as near, unless `residual` (one row per `rows`) shows the line as well on
+/// the rows at speeds where no order is near: only there can the data tell the two apart.
 std::string take_out_mains_cycles(std::vector<std::string>& time_terms, std::span<const RecordedSample> observations,
-                                  const std::vector<std::size_t>& rows, int teeth);
+                                  const std::vector<std::size_t>& rows, const Eigen::MatrixX2d& residual, int teeth);
 
 }  // namespace gc

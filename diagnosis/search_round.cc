@@ -98,8 +98,10 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   // noise by its own test (cycle_period.h, change_point.h), and is something to explain: an
   // interference that no input shows hides from the signature, and from a variogram, which takes
   // a cycle of a few samples for correlated noise.
-  round.time_terms = time_terms_for(observations, signature_rows, select_rows(residual, rows, signature_rows), parallel);
-  round.mains_pickup = take_out_mains_cycles(round.time_terms, observations, signature_rows, settings.formula_settings.teeth);
+  const Eigen::MatrixX2d on_signature_rows = select_rows(residual, rows, signature_rows);
+  round.time_terms = time_terms_for(observations, signature_rows, on_signature_rows, parallel);
+  round.mains_pickup =
+      take_out_mains_cycles(round.time_terms, observations, signature_rows, on_signature_rows, settings.formula_settings.teeth);
   round.systematic = is_systematic(residual, round.noise.mean_square(), round.noise, round.signature, settings.claim_least_fall) ||
                      !round.time_terms.empty();
   // Where no input shows structure, the residual's own scale, correlation and tails are the noise's
