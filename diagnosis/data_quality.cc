@@ -73,14 +73,22 @@ DataQuality check_data_quality(std::span<const RecordedSample> observations, con
   for (DataQualityFinding& finding : out.findings) {
     finding.spans = row_spans(finding.rows, observations);
     if (!finding.spans.empty()) finding.detail += ": " + spans_text(finding.spans);
+  }
+  out.excluded_rows = excluded_rows_of(out.findings);
+  return out;
+}
+
+std::vector<std::size_t> excluded_rows_of(const std::vector<DataQualityFinding>& findings) {
+  std::vector<std::size_t> rows;
+  for (const DataQualityFinding& finding : findings) {
     // The model refuses a negative torque itself: those rows are counted as refused.
     if (finding.excluded && finding.kind != DataQualityKind::polarity_flip) {
-      out.excluded_rows.insert(out.excluded_rows.end(), finding.rows.begin(), finding.rows.end());
+      rows.insert(rows.end(), finding.rows.begin(), finding.rows.end());
     }
   }
-  std::sort(out.excluded_rows.begin(), out.excluded_rows.end());
-  out.excluded_rows.erase(std::unique(out.excluded_rows.begin(), out.excluded_rows.end()), out.excluded_rows.end());
-  return out;
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return rows;
 }
 
 std::optional<DataQualityFinding> spike_finding(std::vector<std::size_t> rows, std::span<const RecordedSample> observations,

@@ -84,6 +84,10 @@ struct DataQuality {
 /// The artefacts of `observations` (any order; rows are indices into it).
 DataQuality check_data_quality(std::span<const RecordedSample> observations, const DataQualitySettings& settings = {});
 
+/// The rows `findings` exclude, ascending, without repeats (a negative torque's are the model's
+/// refusals, counted as refused).
+std::vector<std::size_t> excluded_rows_of(const std::vector<DataQualityFinding>& findings);
+
 /// The spikes the model's residual shows (outlier_positions, `rows` into the recording), as a
 /// finding: isolated samples far from their neighbours, a DAQ's spikes; nullopt for none.
 std::optional<DataQualityFinding> spike_finding(std::vector<std::size_t> rows, std::span<const RecordedSample> observations,

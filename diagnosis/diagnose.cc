@@ -11,6 +11,7 @@
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/noise_estimate.h"
 #include "diagnosis/partly_claims.h"
+#include "diagnosis/programme_holds.h"
 #include "diagnosis/row_exclusion.h"
 #include "diagnosis/row_selection.h"
 #include "diagnosis/search_round.h"
@@ -47,9 +48,14 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
     require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
   }
-  const DataQuality quality = check_data_quality(observations, settings.data_quality);
-  out.data_quality = quality.findings;
+  DataQuality quality = check_data_quality(observations, settings.data_quality);
   std::vector<std::size_t> ordered = time_ordered(observations);
+  if (std::any_of(quality.findings.begin(), quality.findings.end(),
+                  [](const DataQualityFinding& f) { return f.kind == DataQualityKind::stuck; })) {
+    // A held input is the programme's when the model predicts the moments there as well as elsewhere.
+    release_programme_holds(quality, observations, ordered, model_residuals(model, observations, ordered, parallel));
+  }
+  out.data_quality = quality.findings;
   std::erase_if(ordered, [&](std::size_t r) {
     return std::binary_search(quality.excluded_rows.begin(), quality.excluded_rows.end(), r);
   });

@@ -25,7 +25,8 @@ std::optional<double> mains_frequency(double frequency_hz, double sample_rate_hz
 /// "a cycle at 50.0 Hz (mains pickup ...)" for the verdict.
 std::string mains_pickup_text(double cycle_hz, double mains_hz);
 
-/// Removes from `time_terms` a cycle at the mains frequency (mains_frequency), direct or aliased by
+/// Removes from `time_terms` a cycle at the mains frequency (mains_frequency), or a ringing mode
+/// damped under 0.05 whose natural frequency is there (a narrow line as well), direct or aliased by
 /// the rows' sample rate, and returns what the verdict says of it ("" when none). An aliased one is
 /// kept where a shaft or tooth-mesh order of a coupling of `teeth` (0: unknown) at a speed the
 /// rows recorded lies as near, unless `residual` (one row per `rows`) shows the line as well on

@@ -5,7 +5,9 @@
 
 #include <cstdlib>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "core/coupling_geometry.h"
 #include "core/model_error.h"
@@ -79,6 +81,48 @@ TEST(DiagnosisRules, ARecordingThatTheExclusionsLeaveTooShortGetsItsDataQualityA
       << d.summary;
   r.resize(kept);
   EXPECT_THROW(testing::diagnose_on_threads(model, r), InvalidInput);
+}
+
+// An input that holds exactly while the programme moves it roughly elsewhere is either frozen or
+// the programme's hold; the moments tell which. A torque that wanders (noise-free, as a set point
+// recorded) and holds for 300 rows: the model, fed the held value, predicts the moments there as
+// well as elsewhere, and the rows stay in the physics (cut out, they left gaps that a slow noise
+// wandered across: zoo seed 20261225 draws 108, 425, 467). The same torque frozen while the
+// coupling's torque walked on: the moments move where the input does not, and it is stuck.
+TEST(DiagnosisRules, AHeldInputIsTheProgrammesWhereTheModelPredictsTheMomentsThereAndFrozenWhereNot) {
+  const CouplingModel model(testing::nrel_upwind(), testing::paper_effects());
+  std::mt19937_64 random(61);
+  std::normal_distribution<double> normal;
+  std::vector<MeasurementSample> walked(900), held;
+  double torque = 1.0e6;
+  for (std::size_t i = 0; i < walked.size(); ++i) {
+    torque = std::clamp(torque + 1.5e4 * normal(random), 4e5, 1.6e6);
+    walked[i].time_s = 0.1 * static_cast<double>(i);
+    walked[i].torque_nm = torque;
+    walked[i].misalignment_rad = 0.004 + 0.001 * std::sin(0.01 * static_cast<double>(i));
+    walked[i].direction_rad = 0.3;
+  }
+  held = walked;
+  for (std::size_t i = 300; i < 600; ++i) held[i].torque_nm = held[299].torque_nm;
+  const auto stuck_torque = [](const Diagnosis& d) -> const DataQualityFinding* {
+    for (const DataQualityFinding& f : d.data_quality) {
+      if (f.kind == DataQualityKind::stuck && f.channel == "torque") return &f;
+    }
+    return nullptr;
+  };
+  // The programme held the torque: the coupling saw the held value.
+  const Diagnosis programme = testing::diagnose_on_threads(model, record(model, held, 62));
+  EXPECT_EQ(stuck_torque(programme), nullptr) << programme.summary;
+  // The sensor froze: the coupling saw the walk, the recording the held value.
+  std::vector<RecordedSample> frozen = record(model, walked, 62);
+  for (std::size_t i = 300; i < 600; ++i) frozen[i].input.torque_nm = held[i].torque_nm;
+  const Diagnosis sensor = testing::diagnose_on_threads(model, frozen);
+  const DataQualityFinding* f = stuck_torque(sensor);
+  ASSERT_NE(f, nullptr) << sensor.summary;
+  EXPECT_TRUE(f->excluded);
+  ASSERT_FALSE(f->rows.empty());
+  EXPECT_EQ(f->rows.front(), 299u);
+  EXPECT_EQ(f->rows.back(), 599u);
 }
 
 // A formula in the user's model file is an effect like any other: with a wrong coefficient, it is
