@@ -31,7 +31,8 @@ std::vector<std::size_t> rows_in_time_order(std::span<const RecordedSample> obse
 /// The channel changes from sample to sample as a noisy signal does: fewer than half of its
 /// neighbours are identical. Where the inputs hold still (the same torque, misalignment and
 /// direction on both rows, at least 20 such pairs), only those pairs count: a channel that stays
-/// put while nothing drives it is noise-free, and its repeats are the physics'. An input must also
+/// put while nothing drives it is noise-free, and its repeats are the physics'. Elsewhere a moment
+/// channel's ties are counted without its longest run, the one a frozen bridge makes. An input must also
 /// move roughly where it moves (its second differences at least a twentieth of its first): a smooth ramp
 /// between holds is a programme, not a sensor's noise.
 bool changes_every_sample(const RecordedChannel& channel, std::span<const RecordedSample> observations);

@@ -149,6 +149,19 @@ TEST(DataQuality, AFrozenChannelIsStuckButAShortTieIsNot) {
   EXPECT_EQ(q.findings.size(), 1u) << kinds(q);
 }
 
+// A bridge that freezes for the last 60 % of a recording while the inputs move: its longest run is
+// the artefact, not the channel's nature (counted with it, the ties made it look like a channel that
+// repeats by design, and the diagnosis called 34 kN·m of misfit noise).
+TEST(DataQuality, AChannelFrozenForMostOfTheRecordingIsStuck) {
+  std::vector<RecordedSample> r = recording(Noise::gaussian, 13);
+  for (std::size_t i = 400; i < r.size(); ++i) r[i].measured.z_nm = r[399].measured.z_nm;
+  const DataQuality q = check_data_quality(r);
+  const DataQualityFinding* f = find(q, DataQualityKind::stuck, "msz");
+  ASSERT_NE(f, nullptr) << kinds(q);
+  EXPECT_EQ(f->rows, range(399, 999));
+  EXPECT_TRUE(f->excluded);
+}
+
 TEST(DataQuality, ZerosWhereTheLevelIsFarFromZeroAreDropouts) {
   std::vector<RecordedSample> r = recording(Noise::gaussian, 4);
   for (std::size_t i = 500; i <= 502; ++i) r[i].measured.y_nm = 0.0;
