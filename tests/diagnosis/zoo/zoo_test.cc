@@ -138,12 +138,17 @@ TEST(NoiseZoo, NoisyInputSensorsAloneAreNoLagAndNoPhysics) {
 // brown and mains noise, where a fit re-solved from a point the model cannot predict failed the
 // diagnosis (effect_fit.h); seed 20261220 draw 143, brown noise on a torque staircase, where a gain
 // and offset of both channels took 26 % of the held-out error at t = 6.9 through interleaved folds
-// and did not carry to whole fifths (claim_carries.h). The rate is docs/benchmarks.md's; these
-// keep the mechanisms fixed.
+// and did not carry to whole fifths (claim_carries.h); seed 20261225 draw 108, a wandering zero
+// across the gap that a misalignment held by the programme left when it was cut out as stuck
+// (programme_holds.h); draw 425, a torque held the same way, which left 334 of 1,222 rows and an
+// error; draw 362, 60 Hz aliased to 16 Hz by a 38 Hz DAQ beside a mesh order at some of the shaft's
+// speeds (mains_pickup.h); seed 20261227 draw 71, 50 Hz pickup taken for the rig ringing at 50.7 Hz.
+// The rate is docs/benchmarks.md's; these keep the mechanisms fixed.
 TEST(NoiseZoo, DrawsThatFreshMeasurementsClaimedOrFailedOnAreNoise) {
   std::size_t claims = 0, errors = 0;
   std::string report;
-  for (const auto& [master, k] : {std::pair<std::uint64_t, std::size_t>{20261211, 74}, {20261211, 161}, {20261220, 143}}) {
+  for (const auto& [master, k] : {std::pair<std::uint64_t, std::size_t>{20261211, 74}, {20261211, 161}, {20261220, 143},
+                                  {20261225, 108}, {20261225, 425}, {20261225, 362}, {20261227, 71}}) {
     const ZooRun run = run_zoo(master, 1, DrawLimits{}, k);
     claims += run.claims;
     errors += run.errors;
