@@ -12,40 +12,48 @@ std::uint32_t matched_reader_count(dds_entity_t writer) {
   return status.current_count;
 }
 
-bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag) {
+namespace {
+
+/// True when `test` holds for one of the endpoints matched with `entity`: `handles_of` lists them
+/// (dds_get_matched_publications or _subscriptions), `data_of` reads one (freed here).
+template <typename Handles, typename Data, typename Test>
+bool any_matched(dds_entity_t entity, Handles handles_of, Data data_of, Test test) {
   std::vector<dds_instance_handle_t> handles(64);
-  const dds_return_t n = dds_get_matched_publications(reader, handles.data(), handles.size());
+  const dds_return_t n = handles_of(entity, handles.data(), handles.size());
   if (n <= 0) return false;
   handles.resize(std::min<std::size_t>(static_cast<std::size_t>(n), handles.size()));
   for (dds_instance_handle_t handle : handles) {
-    dds_builtintopic_endpoint_t* endpoint = dds_get_matched_publication_data(reader, handle);
+    dds_builtintopic_endpoint_t* endpoint = data_of(entity, handle);
     if (endpoint == nullptr) continue;
-    void* value = nullptr;
-    size_t size = 0;
-    bool same = false;
-    if (endpoint->qos != nullptr && dds_qget_userdata(endpoint->qos, &value, &size)) {
-      same = size == tag.size() && value != nullptr && tag.compare(0, size, static_cast<const char*>(value), size) == 0;
-      dds_free(value);
-    }
+    const bool found = test(*endpoint);
     dds_builtintopic_free_endpoint(endpoint);
-    if (same) return true;
+    if (found) return true;
   }
   return false;
 }
 
+}  // namespace
+
+bool matched_with_tagged_writer(dds_entity_t reader, const std::string& tag) {
+  return any_matched(reader, dds_get_matched_publications, dds_get_matched_publication_data,
+                     [&tag](const dds_builtintopic_endpoint_t& endpoint) {
+                       void* value = nullptr;
+                       size_t size = 0;
+                       bool same = false;
+                       if (endpoint.qos != nullptr && dds_qget_userdata(endpoint.qos, &value, &size)) {
+                         same = size == tag.size() && value != nullptr &&
+                                tag.compare(0, size, static_cast<const char*>(value), size) == 0;
+                         dds_free(value);
+                       }
+                       return same;
+                     });
+}
+
 bool matched_with_reader_of(dds_entity_t writer, const dds_guid_t& participant) {
-  std::vector<dds_instance_handle_t> handles(64);
-  const dds_return_t n = dds_get_matched_subscriptions(writer, handles.data(), handles.size());
-  if (n <= 0) return false;
-  handles.resize(std::min<std::size_t>(static_cast<std::size_t>(n), handles.size()));
-  for (dds_instance_handle_t handle : handles) {
-    dds_builtintopic_endpoint_t* endpoint = dds_get_matched_subscription_data(writer, handle);
-    if (endpoint == nullptr) continue;
-    const bool same = std::memcmp(endpoint->participant_key.v, participant.v, sizeof(participant.v)) == 0;
-    dds_builtintopic_free_endpoint(endpoint);
-    if (same) return true;
-  }
-  return false;
+  return any_matched(writer, dds_get_matched_subscriptions, dds_get_matched_subscription_data,
+                     [&participant](const dds_builtintopic_endpoint_t& endpoint) {
+                       return std::memcmp(endpoint.participant_key.v, participant.v, sizeof(participant.v)) == 0;
+                     });
 }
 
 std::optional<dds_guid_t> participant_of_publication(dds_entity_t reader,
