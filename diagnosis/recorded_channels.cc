@@ -111,7 +111,7 @@ bool changes_every_sample(const RecordedChannel& channel, std::span<const Record
   }
   // An input that holds for half the recording and ramps smoothly the rest is a noise-free set
   // point, however many samples it changes on (a misalignment held while the direction turns).
-  return 2 * ties < pairs && (channel.measured || moves_roughly(channel.values));
+  return 2 * ties < pairs && moves_roughly(channel.values);
 }
 
 double difference_sigma(const std::vector<double>& values) {
