@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/model_error.h"
@@ -49,17 +50,23 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
     require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
   }
   DataQuality quality = check_data_quality(observations, settings.data_quality);
-  std::vector<std::size_t> ordered = time_ordered(observations);
-  if (std::any_of(quality.findings.begin(), quality.findings.end(),
-                  [](const DataQualityFinding& f) { return f.kind == DataQualityKind::stuck; })) {
+  const std::vector<std::size_t> every = time_ordered(observations);
+  std::optional<ModelResiduals> on_every;
+  if (has_held_inputs(quality)) {
     // A held input is the programme's when the model predicts the moments there as well as elsewhere.
-    release_programme_holds(quality, observations, ordered, model_residuals(model, observations, ordered, parallel));
+    on_every = model_residuals(model, observations, every, parallel);
+    release_programme_holds(quality, observations, every, *on_every);
   }
   out.data_quality = quality.findings;
+  std::vector<std::size_t> ordered = every;
   std::erase_if(ordered, [&](std::size_t r) {
     return std::binary_search(quality.excluded_rows.begin(), quality.excluded_rows.end(), r);
   });
-  const ModelResiduals first = model_residuals(model, observations, ordered, parallel);
+  // Every row predicted once: the pass over all rows serves when it refused none (its first
+  // refusal's message would otherwise be a row's that may now be excluded).
+  const ModelResiduals first = on_every && on_every->failed_rows.empty()
+                                   ? ModelResiduals{select_rows(on_every->residual, every, ordered), {}, {}}
+                                   : model_residuals(model, observations, ordered, parallel);
   out.excluded_rows = first.failed_rows;
   out.exclusion_reason = first.first_failure;
   std::vector<std::size_t> rows = ordered;
@@ -69,6 +76,16 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   exclude_moment_flips(out, observations, rows, residual);
   out.outlier_rows = exclude_outliers(observations, rows, residual, settings.outlier_deviations);
   exclude_rows_at_model_jumps(out, model, observations, rows, residual, parallel);
+  if (auto spikes = spike_finding(out.outlier_rows, observations, settings.outlier_deviations)) {
+    out.data_quality.push_back(std::move(*spikes));
+  }
+  out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
+  out.summary = data_quality_text(out.data_quality);
+  if (!out.outlier_rows.empty()) {
+    out.summary += (out.summary.empty() ? "" : "\n") + std::to_string(out.outlier_rows.size()) + " of " +
+                   std::to_string(out.rows) + " samples excluded as outliers (more than " +
+                   short_number(settings.outlier_deviations) + " robust deviations from the running median of their neighbours).";
+  }
   const int minimum = 4 * settings.cross_validation.folds * settings.cross_validation.blocks_per_fold;
   const std::size_t predictable = observations.size() - first.failed_rows.size();
   if (predictable < static_cast<std::size_t>(minimum)) {
@@ -78,8 +95,6 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   if (rows.size() < static_cast<std::size_t>(minimum)) {
     // The recording was long enough; what the data-quality stage took out of it leaves too little
     // for held-out tests. Its findings are the answer, not an error that hides them.
-    out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
-    out.summary = data_quality_text(out.data_quality);
     out.summary += (out.summary.empty() ? "" : "\n") + std::string("No physics diagnosed: ") +
                    std::to_string(rows.size()) + " of " + std::to_string(out.rows) +
                    " rows are left after the exclusions, and held-out tests need at least " + std::to_string(minimum) + ".";
@@ -93,16 +108,6 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
       blocked_folds(search.size(), settings.cross_validation.folds, settings.cross_validation.blocks_per_fold,
                     settings.cross_validation.fold_seed),
       test_block_rows(estimate_noise(residual), rows.size(), search.size(), settings));
-  if (auto spikes = spike_finding(out.outlier_rows, observations, settings.outlier_deviations)) {
-    out.data_quality.push_back(std::move(*spikes));
-  }
-  out.excluded_ranges = excluded_ranges(out.data_quality, out.excluded_rows, out.exclusion_reason, observations);
-  out.summary = data_quality_text(out.data_quality);
-  if (!out.outlier_rows.empty()) {
-    out.summary += (out.summary.empty() ? "" : "\n") + std::to_string(out.outlier_rows.size()) + " of " +
-                   std::to_string(out.rows) + " samples excluded as outliers (more than " +
-                   short_number(settings.outlier_deviations) + " robust deviations from the running median of their neighbours).";
-  }
   CouplingModel current = model;
   std::set<std::string> partly;  // effects added by a round that said they explain only partly
   std::map<std::string, std::string> rivals;  // a partly claim's rival (rival_of_claim)

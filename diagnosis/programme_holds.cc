@@ -28,12 +28,15 @@ double mean_square(const std::vector<std::size_t>& data_rows, const std::unorder
 
 }  // namespace
 
-void release_programme_holds(DataQuality& quality, std::span<const RecordedSample> observations,
-                             std::span<const std::size_t> rows, const ModelResiduals& residuals, double most_ratio) {
-  const bool any = std::any_of(quality.findings.begin(), quality.findings.end(), [](const DataQualityFinding& f) {
+bool has_held_inputs(const DataQuality& quality) {
+  return std::any_of(quality.findings.begin(), quality.findings.end(), [](const DataQualityFinding& f) {
     return f.kind == DataQualityKind::stuck && f.excluded && is_input(f.channel);
   });
-  if (!any || residuals.residual.rows() != static_cast<Eigen::Index>(rows.size())) return;
+}
+
+void release_programme_holds(DataQuality& quality, std::span<const RecordedSample> observations,
+                             std::span<const std::size_t> rows, const ModelResiduals& residuals, double most_ratio) {
+  if (!has_held_inputs(quality) || residuals.residual.rows() != static_cast<Eigen::Index>(rows.size())) return;
   std::unordered_map<std::size_t, Eigen::Index> at;  // data row -> residual row, predicted rows only
   for (std::size_t k = 0; k < rows.size(); ++k) at.emplace(rows[k], static_cast<Eigen::Index>(k));
   for (const std::size_t r : residuals.failed_rows) at.erase(r);

@@ -20,6 +20,9 @@
 
 namespace gc {
 
+/// True when `quality` has an excluded `stuck` finding on an input: what release_programme_holds judges.
+bool has_held_inputs(const DataQuality& quality);
+
 /// Gives back to the physics each run of an input's `stuck` finding in `quality` whose residual
 /// mean square (both channels, rows the model predicts) is at most `most_ratio` times that of the
 /// rows no finding excludes; `residuals` holds one row per `rows` (any order). A finding left with
