@@ -78,8 +78,9 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="${CONTROL_LOOP_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
-domain=$((1 + $$ % 200))
-sdomain=$(( (domain + 100) % 200 + 1 ))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
+claim_domain sdomain 8 100
 ticks=${CONTROL_LOOP_TICKS:-9000}
 rounds_at() {  # RATE: CONTROL_LOOP_ROUNDS, or as many rounds as keep a run within 10 s, at least 3
   if [ -n "${CONTROL_LOOP_ROUNDS:-}" ]; then

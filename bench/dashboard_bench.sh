@@ -16,7 +16,8 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 seconds=${DASHBOARD_BENCH_SECONDS:-15}
 clients=${DASHBOARD_BENCH_CLIENTS:-20}
 rate=${DASHBOARD_BENCH_RATE:-40000}

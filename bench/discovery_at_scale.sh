@@ -19,7 +19,8 @@ export CYCLONEDDS_URI="${BENCH_CYCLONEDDS_URI:-file://$here/deploy/cyclonedds-lo
 # The CLI processes use the client configuration (no participant-index port, so clients do not
 # discover each other; BENCH_CLIENT_CYCLONEDDS_URI overrides it, e.g. with the service's).
 client_uri=${BENCH_CLIENT_CYCLONEDDS_URI:-file://$here/deploy/cyclonedds-loopback-client.xml}
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 work=$(mktemp -d)
 echo "# $n CLI processes at once; service $CYCLONEDDS_URI, clients $client_uri, domain $domain, $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg)"
 

@@ -14,7 +14,8 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 runs=${LEARNING_BENCH_RUNS:-3}
 after=${LEARNING_BENCH_AFTER_S:-1}
 cli="$build/clients/cli/gearcoupling"

@@ -16,7 +16,8 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 cells=${LIVE_BENCH_CELLS:-4}
 rate=${LIVE_BENCH_RATE:-10000}
 seconds=${LIVE_BENCH_SECONDS:-10}

@@ -15,7 +15,8 @@ build=${1:-$here/build}
 service_bin=${GEARCOUPLING_SERVICE:-$build/service/gearcoupling-service}
 seconds=${MISBEHAVING_SECONDS:-5}
 export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 echo "# $service_bin, domain $domain, $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg)"
 service=""
 trap 'if [ -n "$service" ]; then kill -TERM $service 2>/dev/null || true; fi' EXIT INT TERM

@@ -18,8 +18,9 @@ export GC_SECURITY_DIR
 GC_SECURITY_DIR=$(mktemp -d /tmp/gc-secure-bench-XXXXXX)
 bash "$here/deploy/security/make-security.sh" "$GC_SECURITY_DIR" --client bench >/dev/null
 prefix=$(cat "$GC_SECURITY_DIR/client-bench/client_id_prefix")
-plain_domain=$((1 + $$ % 200))
-secure_domain=$(( (plain_domain + 100) % 200 + 1 ))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain plain_domain 9
+claim_domain secure_domain 8 100
 echo "# $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg); plain domain $plain_domain, secure domain $secure_domain; $rounds rounds of $requests requests"
 
 CYCLONEDDS_URI=$loopback "$build/service/gearcoupling-service" --domain "$plain_domain" --log-level warn &

@@ -30,8 +30,9 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="${SERVICE_BENCH_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
-domain=$((1 + $$ % 200))
-sdomain=$(( (domain + 100) % 200 + 1 ))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
+claim_domain sdomain 8 100
 seconds=${SERVICE_BENCH_SECONDS:-3}
 loads=${SERVICE_BENCH_LOADS:-0 1 all}
 rounds=${SERVICE_BENCH_ROUNDS:-9}

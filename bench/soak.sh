@@ -18,7 +18,8 @@ duration=${1:-3600}
 build=${2:-$here/build}
 if [ "$duration" -lt 600 ]; then interval=${SOAK_INTERVAL_S:-10}; else interval=${SOAK_INTERVAL_S:-60}; fi
 export CYCLONEDDS_URI="file://$here/deploy/cyclonedds-loopback.xml"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 service=""
 cleanup() {
   if [ -n "$service" ]; then kill -TERM "$service" 2>/dev/null || true; wait "$service" 2>/dev/null || true; fi

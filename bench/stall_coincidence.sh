@@ -38,8 +38,9 @@ case ${STALL_PRIORITY:-fifo} in
   none) prefix="" ;;
   *) echo "STALL_PRIORITY: unknown \"$STALL_PRIORITY\" (allowed: fifo, none)" >&2; exit 2 ;;
 esac
-domain=$((1 + $$ % 200))
-sdomain=$(( (domain + 100) % 200 + 1 ))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
+claim_domain sdomain 8 100
 work=$(mktemp -d)
 service=""
 cleanup() {

@@ -21,7 +21,8 @@ set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 export CYCLONEDDS_URI="${WAKEUPS_CONFIG:-file://$here/deploy/cyclonedds-loopback.xml}"
-domain=$((1 + $$ % 200))
+. "$(dirname "$0")/../tests/claim_domain.sh"  # one domain per run, 1-200
+claim_domain domain 9
 work=$(mktemp -d)
 pids=""
 cleanup() {
@@ -86,7 +87,7 @@ cat "$work/client.out"
 kill -TERM "$service"
 wait "$service" || true
 
-pdomain=$(( (domain + 100) % 200 + 1 ))
+claim_domain pdomain 8 100
 timeout 30 ddsperf -i "$pdomain" -D 7 pong >/dev/null 2>&1 &
 pong=$!
 pids="$pids $pong"

@@ -21,6 +21,8 @@ import headless_chromium
 headless_chromium.require()
 from headless_chromium import By, Select, WebDriverWait  # noqa: E402
 
+import domain_claim
+
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 SERVICE = os.environ["GC_SERVICE_BINARY"]
 DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
@@ -28,7 +30,7 @@ MONITOR = os.environ["GC_MONITOR_BINARY"]
 CLI = os.environ["GC_GEARCOUPLING_BINARY"]
 OUTPUT_DIR = os.environ.get("GC_TEST_OUTPUT_DIR", ".")
 # One domain per test process, as the C++ tests pick theirs (tests/service/service_process.h).
-DOMAIN = 1 + os.getpid() % 200
+DOMAIN = domain_claim.claim()  # one per test process, held while it runs (domain_claim.py)
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 TEST_CELL = "dyno-browser"

@@ -22,9 +22,11 @@ import time
 
 import pytest
 
+import domain_claim
+
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
-DOMAIN = 1 + os.getpid() % 200
+DOMAIN = domain_claim.claim()  # one per test process, held while it runs (domain_claim.py)
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 ATTACKER = "127.0.0.2"

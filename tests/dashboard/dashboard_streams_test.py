@@ -15,10 +15,12 @@ import time
 
 import pytest
 
+import domain_claim
+
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 DASHBOARD = os.environ["GC_DASHBOARD_BINARY"]
 # One domain per test process, as the C++ tests pick theirs (tests/service/service_process.h).
-DOMAIN = 1 + os.getpid() % 200
+DOMAIN = domain_claim.claim()  # one per test process, held while it runs (domain_claim.py)
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 DEFAULT_MAX_STREAMS = 32

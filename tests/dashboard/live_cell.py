@@ -14,6 +14,7 @@ A test module that uses browser() calls headless_chromium.require() at its top, 
 import os
 import subprocess
 
+import domain_claim
 import headless_chromium
 
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
@@ -31,7 +32,7 @@ MONITOR_OPTIONS = ("--window-s", "20", "--health-period-s", "0.2", "--stale-s", 
 
 def domain(offset):
     """The test's loopback DDS domain: one per process, `offset` apart from the other modules'."""
-    return 1 + (os.getpid() + offset) % 200
+    return domain_claim.claim(offset)
 
 
 class LiveCell:

@@ -26,6 +26,8 @@ import urllib.request
 
 import pytest
 
+import domain_claim
+
 # Debian's python3-prometheus-client (deploy/install-deps.sh).
 parser = pytest.importorskip("prometheus_client.parser",
                              reason="python3-prometheus-client is absent (deploy/install-deps.sh)")
@@ -38,7 +40,7 @@ MONITOR = os.environ["GC_MONITOR_BINARY"]
 CLI = os.environ["GC_GEARCOUPLING_BINARY"]
 GRAFANA_DASHBOARD = os.path.join(SOURCE_DIR, "deploy/grafana/gearcoupling.json")
 # One domain per test process, as the C++ tests pick theirs (tests/service/service_process.h).
-DOMAIN = 1 + os.getpid() % 200
+DOMAIN = domain_claim.claim()  # one per test process, held while it runs (domain_claim.py)
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 TEST_CELL = "dyno-metrics"

@@ -6,10 +6,12 @@ import signal
 import subprocess
 import time
 
+import domain_claim
+
 SOURCE_DIR = os.environ["GC_SOURCE_DIR"]
 SERVICE = os.environ["GC_SERVICE_BINARY"]
 CLI = os.environ["GC_GEARCOUPLING_BINARY"]
-DOMAIN = 1 + os.getpid() % 200  # as tests/service/service_process.h picks one per process
+DOMAIN = domain_claim.claim()  # one per test process, held while it runs (domain_claim.py)
 ENVIRONMENT = dict(os.environ,
                    CYCLONEDDS_URI="file://" + os.path.join(SOURCE_DIR, "deploy/cyclonedds-loopback.xml"))
 

@@ -7,7 +7,8 @@
 set -euo pipefail
 build_dir=$(cd "$1" && pwd)
 source_dir=$(cd "$2" && pwd)
-domain=$((1 + $$ % 200))   # as tests/service/service_process.cc: 1-200, by process
+. "$source_dir/tests/claim_domain.sh"
+claim_domain domain 9   # as tests/service/service_process.cc: 1-200, one per process
 scratch=$(mktemp -d /tmp/gc_readme_live.XXXXXX)
 trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$scratch"' EXIT
 ln -s "$build_dir" "$scratch/build"

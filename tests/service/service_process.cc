@@ -3,17 +3,49 @@
 #include <fcntl.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace gc::test {
 
-int test_domain() { return 1 + static_cast<int>(getpid() % 200); }
+namespace {
+
+// The first domain from 1 + pid % 200 on that no other process holds: an exclusive flock on
+// $TMPDIR/gearcoupling-test-domains/<id>, kept open for the life of this process and inherited
+// by its children (no O_CLOEXEC), so a service orphaned by a killed test still holds its domain.
+// By pid alone, two concurrent tests or an orphan share a domain once in 200 pids, and a stopped
+// service's requests are then answered by the other's (tests/claim_domain.sh, test_domain.py).
+int claim_test_domain() {
+  const int first = static_cast<int>(getpid() % 200);
+  std::error_code ignored;
+  const auto dir = std::filesystem::temp_directory_path(ignored) / "gearcoupling-test-domains";
+  std::filesystem::create_directories(dir, ignored);
+  std::filesystem::permissions(dir, std::filesystem::perms::all | std::filesystem::perms::sticky_bit,
+                               ignored);
+  for (int i = 0; i < 200; ++i) {
+    const int domain = 1 + (first + i) % 200;
+    const int fd = open((dir / std::to_string(domain)).c_str(), O_RDWR | O_CREAT, 0666);
+    if (fd < 0) continue;
+    if (flock(fd, LOCK_EX | LOCK_NB) == 0) return domain;  // fd stays open: the claim
+    close(fd);
+  }
+  return 1 + first;  // every domain held (or no temporary directory): the pid's, as before
+}
+
+}  // namespace
+
+int test_domain() {
+  static const int domain = claim_test_domain();
+  return domain;
+}
 
 void use_loopback_config() {
   setenv("CYCLONEDDS_URI", "file://" GC_SOURCE_DIR "/deploy/cyclonedds-loopback.xml", 1);

@@ -10,8 +10,11 @@
 
 namespace gc::test {
 
-/// The DDS domain of this test process: 1 + pid % 200, so tests running in parallel (one
-/// process each under ctest) do not share a domain, and ports stay in range.
+/// The DDS domain of this test process, 1-200 (ports stay in range): the first from
+/// 1 + pid % 200 on that no other test process or its orphaned children hold (a lock file each,
+/// held for the process's life and inherited by its children), so tests running in parallel
+/// (one process each under ctest) never share a domain. Claimed on the first call; call it
+/// before forking a child that joins the domain.
 int test_domain();
 
 /// Moves the calling process into the network namespace /run/netns/<name>; false on failure.
