@@ -16,15 +16,12 @@
 
 namespace gc::test {
 
-namespace {
-
-// The first domain from 1 + pid % 200 on that no other process holds: an exclusive flock on
-// $TMPDIR/gearcoupling-test-domains/<id>, kept open for the life of this process and inherited
-// by its children (no O_CLOEXEC), so a service orphaned by a killed test still holds its domain.
-// By pid alone, two concurrent tests or an orphan share a domain once in 200 pids, and a stopped
-// service's requests are then answered by the other's (tests/claim_domain.sh, test_domain.py).
-int claim_test_domain() {
-  const int first = static_cast<int>(getpid() % 200);
+// The claim is an exclusive flock on $TMPDIR/gearcoupling-test-domains/<id>, its descriptor kept
+// open for the life of this process and inherited by its children (no O_CLOEXEC), so a service
+// orphaned by a killed test still holds its domain. By pid alone, two concurrent tests or an
+// orphan shared a domain once in 200 pids, and a stopped service's requests were then answered
+// by the other's (tests/claim_domain.sh and tests/dashboard/domain_claim.py claim alike).
+int claim_test_domain_from(int first) {
   std::error_code ignored;
   const auto dir = std::filesystem::temp_directory_path(ignored) / "gearcoupling-test-domains";
   std::filesystem::create_directories(dir, ignored);
@@ -37,13 +34,11 @@ int claim_test_domain() {
     if (flock(fd, LOCK_EX | LOCK_NB) == 0) return domain;  // fd stays open: the claim
     close(fd);
   }
-  return 1 + first;  // every domain held (or no temporary directory): the pid's, as before
+  return 1 + first;  // every domain held (or no temporary directory): the first, as before
 }
 
-}  // namespace
-
 int test_domain() {
-  static const int domain = claim_test_domain();
+  static const int domain = claim_test_domain_from(static_cast<int>(getpid() % 200));
   return domain;
 }
 

@@ -17,6 +17,10 @@ namespace gc::test {
 /// before forking a child that joins the domain.
 int test_domain();
 
+/// Claims the first domain from 1 + first on (mod 200, 1-200) that no other process holds, for
+/// the rest of this process's life and its children's; test_domain() with first = pid % 200.
+int claim_test_domain_from(int first);
+
 /// Moves the calling process into the network namespace /run/netns/<name>; false on failure.
 /// Call in a child before it creates any DDS entity.
 bool enter_network_namespace(const std::string& name);
