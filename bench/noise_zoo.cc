@@ -9,9 +9,12 @@
 //   gc_noise_zoo --gearcoupling PATH --power [--effects a,b] [--snrs 0.75,1.5,3] [--draws N]
 //                [--deadline-min M] ...
 //
-// Power mode (--effect-truth torque_gain|misalignment_offset|twice_per_rev|weight --snr X): the
-// same draws with a hidden effect of X times the noise level (tests/diagnosis/zoo/hidden_effects.h);
-// the share of draws whose first claim names it.
+// Power mode (--effect-truth NAME --snr X, NAME one of hidden_effect_table(): torque_gain,
+// misalignment_offset, twice_per_rev, weight, or an effect's truth): the same draws with a hidden
+// effect of X times the noise level (tests/diagnosis/zoo/hidden_effects.h); the share of draws
+// whose first claim names it. Every truth but the two additive signals (twice_per_rev, weight),
+// torque gain and misalignment offset included, is the model's moments at the effect's size,
+// solved for the SNR (int(qN/4) steps with torque and misalignment: no change is scaled).
 //
 // Power table (--power): every hidden effect (or --effects) at every SNR (--snrs, default
 // 0.75,1.5,3), draws 0..N-1 of the master seed each (the same noise draws for every effect), in

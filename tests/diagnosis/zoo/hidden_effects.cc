@@ -35,6 +35,11 @@ struct Physical {
   std::function<SensorMoments(double lam, std::size_t i)> moments;
   std::function<std::string(double lam)> describe;
   double lam_max = std::numeric_limits<double>::infinity();
+  // The RMS may jump with lambda (int(qN/4) steps: on a torque staircase every row of a level
+  // crosses a step at once), so the proportional steps can cycle around the target: bracket it
+  // and bisect, and keep the lambda whose RMS is nearest (a target inside a jump is out of reach;
+  // the touch-up, printed, carries the rest). Off for the truths that predate it (their draws stay).
+  bool bracket = false;
 };
 
 // Solves lambda on a subsample so the physics gives the target RMS, evaluates every row, and
@@ -64,12 +69,38 @@ std::string apply_physical(const Physical& p, double target, Channels& truth) {
     return m ? std::sqrt(ss / (2.0 * static_cast<double>(m))) : 0.0;
   };
   double lam = std::min(1.0, p.lam_max);
+  // Bracketing (p.bracket): the largest lambda seen below the target, the smallest above it, and
+  // the lambda nearest to it (in the ratio).
+  double below = 0.0, above = std::numeric_limits<double>::infinity(), best = lam;
+  double best_miss = std::numeric_limits<double>::infinity();
+  bool reached = false;
+  auto seen = [&](double l, double r) {
+    if (!(r > 0.0)) return;
+    if (r < target) below = std::max(below, l);
+    else above = std::min(above, l);
+    const double miss = std::abs(std::log(r / target));
+    if (miss < best_miss) best_miss = miss, best = l;
+  };
   for (int it = 0; it < 8; ++it) {
     const double r = rms(lam, stride, false);
-    if (!(r > 0.0) || std::abs(r / target - 1.0) < 0.02) break;
+    seen(lam, r);
+    if (!(r > 0.0) || std::abs(r / target - 1.0) < 0.02) {
+      reached = true;
+      break;
+    }
     const double next = std::min(p.lam_max, lam * target / r);
     if (next == lam) break;
     lam = next;
+  }
+  if (p.bracket && !reached) {
+    for (int it = 0; it < 40 && below > 0.0 && std::isfinite(above) && above - below > 1e-9 * above; ++it) {
+      const double mid = 0.5 * (below + above), r = rms(mid, stride, false);
+      seen(mid, r);
+      if (r > 0.0 && std::abs(r / target - 1.0) < 0.02) break;
+      if (!(r > 0.0) || r < target) below = mid;
+      else above = mid;
+    }
+    if (std::isfinite(best_miss)) lam = best;
   }
   const double r = rms(lam, 1, true);
   const double k = r > 0.0 ? target / r : 0.0;
@@ -111,7 +142,33 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
   const double phi = model.geometry().pressure_angle_rad();
   const double inf = std::numeric_limits<double>::infinity();
   Physical p;
-  if (name == "friction") {
+  if (name == "torque_gain") {
+    // Section 3: the torque transducer's gain: the coupling carries T (1 + g) when T is logged.
+    // The moments are the model's at the carried torque, solved at every size: the number of
+    // teeth summed, int(qN/4), steps with the torque, so a trial change scaled is no gain at all.
+    const double g = signed_uniform(rng, 0.01, 0.05);
+    p.moments = [&model, &truth, g](double lam, std::size_t i) {
+      MeasurementSample s = sample(truth, i);
+      s.torque_nm *= 1.0 + lam * g;
+      return model.predict(s).moments;
+    };
+    p.describe = [=](double lam) { return format("gain %+.2f %% (drawn %+.2f %%)", 100.0 * lam * g, 100.0 * g); };
+    p.lam_max = 0.5 / std::abs(g);
+    p.bracket = true;
+  } else if (name == "misalignment_offset") {
+    // Section 6.3.1: an unseen constant misalignment vector, 2 % of the jam angle (times lambda)
+    // at a random direction, summed with the recorded vector; the moments are the model's at the
+    // sum (int(qN/4) steps with the misalignment too: solved at every size, never scaled).
+    const double z0 = 0.02 * jam, b0 = rng.uniform(-kPi, kPi);
+    p.moments = [&model, &truth, z0, b0](double lam, std::size_t i) {
+      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * z0, b0)).moments;
+    };
+    p.describe = [=](double lam) {
+      return format("offset %.4f xi (%.3g mrad) at %.2f rad (drawn 0.02 xi)", lam * z0 / jam, lam * z0 * 1e3, b0);
+    };
+    p.lam_max = 0.3 * jam / z0;
+    p.bracket = true;
+  } else if (name == "friction") {
     // Section 6.3: mu rises at low torque and with misalignment: mu0 + a T_ref / T + b zeta / xi.
     const double mu0 = rng.uniform(0.02, 0.3), a = rng.uniform(0.0, 0.15), b = rng.uniform(0.0, 0.3), tref = 1.5e6 * tscale;
     p.moments = [&model, mu0, a, b, tref, jam, &truth](double lam, std::size_t i) {
@@ -315,8 +372,8 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
 
 const std::vector<HiddenEffectInfo>& hidden_effect_table() {
   static const std::vector<HiddenEffectInfo> t = {
-      {"torque_gain", "true torque = 1.01 x logged (linear scaling of the change)", "torque", "any name containing 'torque'"},
-      {"misalignment_offset", "unseen misalignment 0.02 xi at a random direction (linear scaling)", "misalignment", "any name containing 'misalignment'"},
+      {"torque_gain", "T carried = (1 + g) T logged, |g| 1-5 % either sign (moments at the carried torque)", "torque", "any name containing 'torque'"},
+      {"misalignment_offset", "unseen vector 0.02 lambda xi (at most 0.3 xi) at any direction, summed with the recorded one", "misalignment", "any name containing 'misalignment'"},
       {"twice_per_rev", "oval sleeve: A (cos, sin)(2 phi + p)", "order_2|spacing|2x|twice", "order_2*, spacing*, 2x, twice"},
       {"weight", "M_sy' lower by a constant", "weight", "any name containing 'weight'"},
       {"friction", "mu = 0.1 + lambda (mu0 + a T_ref/T + b zeta/xi - 0.1); mu0 0.02-0.3, a 0-0.15, b 0-0.3", "^friction$", "friction"},
@@ -365,32 +422,15 @@ ProgrammeNeeds hidden_effect_programme(const std::string& name) {
 std::string add_hidden_effect(const std::string& name, double snr, double level_nm, const CouplingModel& model,
                               double jam_rad, Channels& truth, Rng& rng) {
   const std::size_t n = truth.rows();
-  if (name != "torque_gain" && name != "misalignment_offset" && name != "twice_per_rev" && name != "weight") {
+  if (name != "twice_per_rev" && name != "weight") {
     const Physical p = make_physical(name, model, jam_rad, truth, rng);
     const std::string what = apply_physical(p, snr * level_nm, truth);
     return format("%s (%s) at %.2fx the noise = %.3g kN·m rms", name.c_str(), what.c_str(), snr, snr * level_nm / 1e3);
   }
+  // Additive signals, linear in their size by construction: the unit shape, scaled.
   std::vector<double> dy(n, 0.0), dz(n, 0.0);
   std::string what;
-  if (name == "torque_gain" || name == "misalignment_offset") {
-    // The change at a small trial size, then scaled: linear in the size to first order.
-    const double beta0 = rng.uniform(-std::numbers::pi, std::numbers::pi);
-    for (std::size_t i = 0; i < n; ++i) {
-      MeasurementSample s = sample(truth, i);
-      if (name == "torque_gain") {
-        s.torque_nm *= 1.01;
-      } else {
-        const double x = s.misalignment_rad * std::cos(s.direction_rad) + 0.02 * jam_rad * std::cos(beta0);
-        const double y = s.misalignment_rad * std::sin(s.direction_rad) + 0.02 * jam_rad * std::sin(beta0);
-        s.misalignment_rad = std::hypot(x, y);
-        s.direction_rad = s.direction_rad + std::remainder(std::atan2(y, x) - s.direction_rad, 2 * std::numbers::pi);
-      }
-      const SensorMoments m = model.predict(s).moments;
-      dy[i] = m.y_nm - truth.msy_nm[i];
-      dz[i] = m.z_nm - truth.msz_nm[i];
-    }
-    what = name == "torque_gain" ? "gain 1 % trial" : format("offset 2 %% of jam trial at %.2f rad", beta0);
-  } else if (name == "twice_per_rev") {
+  if (name == "twice_per_rev") {
     const double p = rng.uniform(0, 2 * std::numbers::pi);
     double phi = 0.0;
     for (std::size_t i = 0; i < n; ++i) {

@@ -4,18 +4,20 @@
 // (the paper's {friction mu0 0.1, pressure_angle_rotation, self_weight}) lacks it; naming it
 // first is a hit.
 //
-// The four first truths (kept as they were):
-//   torque_gain          the torque transducer reads low by a gain: the rig's true torque is
-//                        (1 + g) times the logged one (moments of the true torque)
-//   misalignment_offset  an assembly misalignment vector added to the commanded one (vector sum)
+// The four first truths:
+//   torque_gain          the torque transducer reads off by a gain: the coupling carries
+//                        (1 + g) times the logged torque, |g| 1-5 % either sign (the moments at the
+//                        carried torque)
+//   misalignment_offset  an unseen constant misalignment vector, 0.02 xi (times the solved size,
+//                        at most 0.3 xi) at any direction, summed with the recorded vector (the
+//                        moments at the sum)
 //   twice_per_rev        an oval sleeve: (A cos(2 phi + p), A sin(2 phi + p)), phi the shaft angle
 //   weight               a heavier hub: M_sy' lower by a constant
-// One truth for every effect of docs/effects.md (the name of the truth is the library effect's,
-// except `speed_drag` for `expression`, a formula); each draws its physical parameters in the
-// doc's plausible ranges, then its size (the amplitude parameters times lambda, the shape
-// parameters kept) is solved so that the physics itself gives snr x the noise level; a final
-// linear touch-up (reported, ~1) makes the RMS exact, and carries the change alone where lambda
-// would leave the physical bounds. hidden_effect_table() lists physics, ranges and accepted names.
+// The first two are solved physically like the effects below (they were once a trial change
+// scaled linearly, which is wrong for them: the number of teeth summed, int(qN/4), steps as the
+// torque or the misalignment changes, so the model's moments jump, and a 1 % change scaled by k
+// puts the jumps where no gain or offset of any size has them); the last two are additive
+// signals, linear by construction: their unit shape is scaled.
 #pragma once
 
 #include <string>
