@@ -1,6 +1,7 @@
 #include "diagnosis/diagnose.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -46,8 +47,10 @@ Diagnosis diagnose(const CouplingModel& model, std::span<const RecordedSample> o
   out.rows = observations.size();
   // A NaN would poison every fit silently: refuse it here, naming the row.
   for (std::size_t i = 0; i < observations.size(); ++i) {
-    require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", observations[i].measured.y_nm);
-    require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", observations[i].measured.z_nm);
+    const SensorMoments& m = observations[i].measured;
+    if (std::isfinite(m.y_nm) && std::isfinite(m.z_nm)) continue;  // the field's name only for the bad row
+    require_finite("recording.rows[" + std::to_string(i) + "].msy_nm", m.y_nm);
+    require_finite("recording.rows[" + std::to_string(i) + "].msz_nm", m.z_nm);
   }
   DataQuality quality = check_data_quality(observations, settings.data_quality);
   const std::vector<std::size_t> every = time_ordered(observations);
