@@ -245,5 +245,49 @@ TEST(Surrogates, FindsASlowTermWhoseProgrammeEndsElsewhere) {
   EXPECT_GE(found, draws * 80 / 100) << found << " of " << draws;
 }
 
+/// A catalogue of slow columns on both channels, as a formula's terms are: `programme`, a slow
+/// cycle and a slower one, a time ramp and a staircase, on each; `choose` of them are taken, on the
+/// residual and on every surrogate alike.
+SurrogateDesign slow_catalogue(const Eigen::VectorXd& programme, int choose) {
+  constexpr int per_channel = 5;
+  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(2 * kRows, 2 * per_channel);
+  for (int i = 0; i < kRows; ++i) {
+    const double t = static_cast<double>(i) / kRows;
+    const double terms[] = {programme(i), std::cos(3.0 * std::numbers::pi * t), std::cos(2.0 * std::numbers::pi * t),
+                            t, std::floor(4.0 * t)};
+    for (int c = 0; c < 2; ++c) {
+      for (int j = 0; j < per_channel; ++j) columns(c * kRows + i, per_channel * c + j) = terms[j];
+    }
+  }
+  return {columns, choose, false, {}};
+}
+
+/// A speed programme as the zoo's blocks make one: a wandering first part, a hold, a sweep, so that
+/// it ends elsewhere than it began without being a ramp [unit RMS].
+Eigen::VectorXd programme_ending_elsewhere() {
+  Eigen::VectorXd x(kRows);
+  for (int i = 0; i < kRows; ++i) {
+    const double t = static_cast<double>(i) / kRows;
+    x(i) = t < 0.4 ? std::sin(9.0 * std::numbers::pi * t) : t < 0.7 ? 0.3 : 0.3 + 2.0 * (t - 0.7);
+  }
+  return (x.array() - x.mean()).matrix() / std::sqrt((x.array() - x.mean()).square().mean());
+}
+
+// The size where a formula's terms are chosen, two of a catalogue of slow ones (a ramp or a
+// staircase is taken on a random walk): the surrogates get the residual's own rise, or the choice,
+// which took the walk's rise, would leave a null with none. Claimed at most at the level, 2 % of
+// 300 random walks.
+TEST(Surrogates, OnRandomWalksChosenSlowTermsAreClaimedAtMostAtTheLevel) {
+  std::mt19937_64 random(20261131);
+  const SurrogateDesign catalogue = slow_catalogue(programme_ending_elsewhere(), 2);
+  int claimed = 0;
+  const int draws = 300 / kScale;
+  for (int d = 0; d < draws; ++d) {
+    if (surrogate_p_values(random_walk(random), {catalogue}, 0.01, random())[0] <= 0.01) ++claimed;
+  }
+  std::printf("two slow terms chosen on random walks: claimed in %d of %d draws\n", claimed, draws);
+  EXPECT_LE(claimed, std::max(2, draws * 2 / 100)) << claimed << " of " << draws;
+}
+
 }  // namespace
 }  // namespace gc
