@@ -9,7 +9,9 @@ claim_domain() {
   _claim_i=0
   while [ "$_claim_i" -lt 200 ]; do
     _claim_d=$((1 + ($$ + ${3:-0} + _claim_i) % 200))
-    if eval "exec $2<>\"\$_claim_dir/\$_claim_d\"" 2>/dev/null && flock -n "$2"; then
+    # Opened in a subshell first: a redirection that fails on `exec` ends a POSIX shell.
+    if (: >>"$_claim_dir/$_claim_d") 2>/dev/null && eval "exec $2<>\"\$_claim_dir/\$_claim_d\"" &&
+      flock -n "$2"; then
       eval "$1=\$_claim_d"
       return 0
     fi
