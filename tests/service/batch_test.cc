@@ -305,15 +305,19 @@ TEST_F(Batch, MoreThanTheMaximumCaseCountIsRefusedWholeNamingTheLimit) {
 }
 
 // The per-calculation deadline bounds a batch as it bounds one request: a batch of costly cases
-// (2000 teeth) on an instance with a 50 ms deadline keeps the cases computed in time and answers
+// (10,000 teeth) on an instance with a 20 ms deadline keeps the cases computed in time and answers
 // the rest with STATUS_DEADLINE_EXCEEDED in place, within about the deadline.
 TEST(BatchDeadline, CasesLeftAtTheDeadlineAreAnsweredDeadlineExceededInPlace) {
-  test::ServiceProcess service({"--deadline-s", "0.05"});
+  test::ServiceProcess service({"--deadline-s", "0.02"});
   client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(20)});
-  // 10,000 teeth (the most a coupling may have): 4,096 load cases outlast 0.05 s on any machine,
-  // with the load case's fast path too, which skips the table of teeth these cases never read.
+  // 10,000 teeth (the most a coupling may have): 4,096 load cases outlast 20 ms on any machine. The
+  // load case's fast path reads no table of teeth and sums eq 9 in closed form, but eqs 42-43 still
+  // visit the quarter's int(qN/4) + 1 teeth: at the largest torque allowed, 1e12 N·m, q = 0.98
+  // and 2,451 teeth a case, each with a root. On the 2-core machine of docs/benchmarks.md the batch
+  // takes 30-55 ms and 200-1,500 cases are computed within the deadline (the request waits about
+  // 10 ms before its first case): a machine 3 times as fast still outlasts it.
   protocol::BatchRequest request{BatchCalculation::kLoadCase, {test::scaled_coupling(10000)}, {}, {}};
-  request.cases.assign(protocol::kMaxBatchCases, {0, {1.0e8, 0.005, 0.3, 0.1}});
+  request.cases.assign(protocol::kMaxBatchCases, {0, {1.0e12, 0.005, 0.3, 0.1}});
   const auto start = std::chrono::steady_clock::now();
   const protocol::BatchResult result = client.call<Calculation::kBatch>(request);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -328,8 +332,9 @@ TEST(BatchDeadline, CasesLeftAtTheDeadlineAreAnsweredDeadlineExceededInPlace) {
     }
     stopped = true;
     ASSERT_EQ(c.status, gearcoupling_STATUS_DEADLINE_EXCEEDED) << c.message;
-    EXPECT_NE(c.message.find("deadline of 0.05 s"), std::string::npos) << c.message;
+    EXPECT_NE(c.message.find("deadline of 0.02 s"), std::string::npos) << c.message;
   }
+  RecordProperty("cases_computed_in_time", static_cast<int>(ok));
   EXPECT_TRUE(stopped);
   EXPECT_LT(ok, protocol::kMaxBatchCases);
   EXPECT_LT(seconds, 5.0);  // the deadline, the reply and discovery; not 4096 costly cases
