@@ -91,21 +91,10 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
 
 namespace {
 
-// Eq 9 in tooth order over every tooth: the totals where the closed form below cannot be used (a
-// NaN or infinite ratio: a torque so small that z_e underflows).
-ToothLoadTotals totals_in_tooth_order(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
-  ToothLoadTotals totals;
-  for (int j = 0; j < coupling.teeth(); ++j) {
-    const double load = pattern.load_n(coupling, j);
-    totals.loaded_teeth += load > 0.0;
-    totals.sum_of_loads_n += load;
-    if (load > totals.max_load_n) {
-      totals.max_load_n = load;
-      totals.max_load_tooth = j;
-    }
-  }
-  return totals;
-}
+// z_o / z_e is NaN (0 / 0: a torque so small that z_e underflows, with no misalignment) or infinite
+// (z_e underflows beside a misalignment): eq 9's share 1 - r sin^2 theta is then NaN or -inf on
+// every tooth (NaN where sin theta = 0), which load_n clips to no load.
+bool no_tooth_carries(const ToothLoadPattern& pattern) { return !std::isfinite(pattern.separation_ratio); }
 
 // The teeth of eq 9 about one of the two angles where sin(theta) = 0, as whole tooth numbers j
 // (taken modulo N): theta_j = 2 pi j / N + alpha is `centre` (0 or pi) at the real j = c, and the
@@ -173,11 +162,8 @@ class ToothArc {
 }  // namespace
 
 ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
-  const double r = pattern.separation_ratio;
-  if (!(r >= 0.0) || !std::isfinite(r) || !std::isfinite(pattern.peak_tooth_load_n)) {
-    return totals_in_tooth_order(coupling, pattern);
-  }
   ToothLoadTotals totals;
+  if (no_tooth_carries(pattern)) return totals;
   const ToothArc arcs[] = {ToothArc(coupling, pattern, 0.0), ToothArc(coupling, pattern, M_PI)};
   // The largest P_d, and the first tooth j in 0 .. N - 1 of equal ones (tooth 0 when none carries).
   for (const ToothArc& arc : arcs) {
@@ -196,9 +182,8 @@ ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothL
 }
 
 double sum_of_tooth_loads_n(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
-  const double r = pattern.separation_ratio;
-  if (!(r >= 0.0) || !std::isfinite(r)) return totals_in_tooth_order(coupling, pattern).sum_of_loads_n;
-  return pattern.peak_tooth_load_n * load_share_sum(coupling.teeth(), pattern.offset_alpha_rad, r);
+  if (no_tooth_carries(pattern)) return 0.0;
+  return pattern.peak_tooth_load_n * load_share_sum(coupling.teeth(), pattern.offset_alpha_rad, pattern.separation_ratio);
 }
 
 ToothLoadPattern tooth_load_pattern(const ToothContact& contact) {

@@ -90,7 +90,7 @@ ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothL
 /// Eq 9's loads summed in closed form: 1 - r sin^2 theta = (1 - r/2) + (r/2) cos 2 theta, and the
 /// cosines of the carrying teeth, a run of even steps, sum as a geometric series. Within a few ulp
 /// per tooth of the sum in tooth order (a tooth at a run's end carries next to nothing, wherever
-/// rounding puts it). In tooth order for a NaN or infinite ratio z_o / z_e [N].
+/// rounding puts it). Zero for a NaN or infinite ratio z_o / z_e: no tooth carries [N].
 double sum_of_tooth_loads_n(const CouplingGeometry& coupling, const ToothLoadPattern& pattern);
 
 /// The pattern at `point`. Validates the operating point and the options (throws InvalidInput
