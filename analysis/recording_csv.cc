@@ -188,25 +188,11 @@ bool dead_band_value(Quantity quantity) {
 // What the plain walk over a row (analysis/plain_csv_row.h) does with each field: converts the
 // columns read (on the dead band's pass only its values, the others checked at a glance as
 // parse_cells does) and skips the columns of no known quantity.
-// On the second pass, a row the first read well has its time and misalignment from it
-// (FirstPassValues): those cells are skipped.
-enum class Pass { dead_band, second, second_known };
-
-bool converted_on(Pass pass, Quantity quantity) {
-  switch (pass) {
-    case Pass::dead_band: return dead_band_value(quantity);
-    case Pass::second: return true;
-    case Pass::second_known: return quantity != Quantity::time && quantity != Quantity::misalignment;
-  }
-  return true;
-}
-
-PlainCells plain_cells(const RecordingHeader& header, Pass pass) {
+PlainCells plain_cells(const RecordingHeader& header, bool dead_band_pass) {
   PlainCells cells{std::vector<CellUse>(header.field_count, CellUse::skip), 0};
   for (const RecordingColumn& column : header.columns) {
-    const bool convert = converted_on(pass, column.quantity);
-    const bool known = pass == Pass::second_known && !convert;
-    cells.uses[column.index] = convert ? CellUse::convert : known ? CellUse::skip : CellUse::check;
+    const bool convert = !dead_band_pass || dead_band_value(column.quantity);
+    cells.uses[column.index] = convert ? CellUse::convert : CellUse::check;
     cells.converted += convert ? 1 : 0;
   }
   return cells;
@@ -373,9 +359,8 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
   const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency())
                                                 : options.threads;
   parallel_for_ = chunked_parallel_for(threads);
-  plain_all_ = plain_cells(header_, Pass::second);
-  plain_known_ = plain_cells(header_, Pass::second_known);
-  plain_dead_band_ = plain_cells(header_, Pass::dead_band);
+  plain_all_ = plain_cells(header_, false);
+  plain_dead_band_ = plain_cells(header_, true);
   loading_dead_band_rad_ = scan_dead_band(options.loading);
   derived_.emplace(loading_dead_band_rad_, options.loading.still_after_s);
 }
@@ -383,29 +368,27 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
 double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
   const std::streamoff first_row = lines_.position();
   const long header_line = lines_.line_number();
+  std::vector<double> amplitudes;
   while (const std::size_t rows = read_rows(kRowsParsedAtOnce, Values::dead_band)) {
     for (std::size_t r = 0; r < rows; ++r) {
       const ParsedRow& row = parsed_[r];
       // Problems are reported on pass 2.
-      if (row.problem || time_problem(row.sample, row.line.line_number)) {
-        first_pass_.add_bad();
-        continue;
-      }
+      if (row.problem || time_problem(row.sample, row.line.line_number)) continue;
       last_time_s_ = row.sample.input.time_s;
-      first_pass_.add_good(row.sample.input.time_s, row.sample.input.misalignment_rad);
+      amplitudes.push_back(row.sample.input.misalignment_rad);
     }
   }
   last_time_s_.reset();
   if (!lines_.rewind(first_row, header_line)) {
     throw InvalidInput("recording", source_name_ + ": cannot be read twice (not a regular file?)");
   }
-  return gc::loading_dead_band_rad(first_pass_.misalignments(), loading);
+  return gc::loading_dead_band_rad(amplitudes, loading);
 }
 
 std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, long line_number,
                                                        CsvFields& fields, RecordedSample& s,
-                                                       Values values, std::optional<std::size_t> known) const {
-  if (read_plain_cells(line, s, values, known)) return std::nullopt;
+                                                       Values values) const {
+  if (read_plain_cells(line, s, values)) return std::nullopt;
   if (auto problem = fields.split(line)) return RowProblem{line_number, 0, "", std::move(*problem)};
   if (fields.size() != header_.field_count) {
     return RowProblem{line_number, 0, "",
@@ -436,9 +419,8 @@ std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, lo
   return std::nullopt;
 }
 
-bool RecordingReader::read_plain_cells(std::string_view line, RecordedSample& s, Values values,
-                                       std::optional<std::size_t> known) const {
-  const PlainCells& plain = values == Values::dead_band ? plain_dead_band_ : known ? plain_known_ : plain_all_;
+bool RecordingReader::read_plain_cells(std::string_view line, RecordedSample& s, Values values) const {
+  const PlainCells& plain = values == Values::all ? plain_all_ : plain_dead_band_;
   std::array<double, kQuantityCount> read;  // a quantity has one column at most
   if (!read_plain_row(line, plain.uses, std::span(read).first(plain.converted))) return false;
   s = RecordedSample{};
@@ -448,10 +430,6 @@ bool RecordingReader::read_plain_cells(std::string_view line, RecordedSample& s,
     const double si = read[next++] * column.unit.scale + column.unit.offset;
     if (!si_acceptable(column.quantity, si)) return false;  // parse_cells words why
     set_value(column.quantity, si, s);
-  }
-  if (known) {
-    s.input.time_s = first_pass_.time_s(*known);
-    s.input.misalignment_rad = first_pass_.misalignment_rad(*known);
   }
   return true;
 }
@@ -476,16 +454,12 @@ std::size_t RecordingReader::read_rows(std::size_t max_rows, Values values) {
   if (parsed_.size() < max_rows) parsed_.resize(max_rows);
   lines_.release();
   std::size_t rows = 0;
-  while (rows < max_rows && lines_.next(parsed_[rows].line)) {
-    parsed_[rows].known = values == Values::all ? first_pass_.next_row() : std::nullopt;
-    ++rows;
-  }
+  while (rows < max_rows && lines_.next(parsed_[rows].line)) ++rows;
   parallel_for_(rows, [&](std::size_t begin, std::size_t end) {
     CsvFields fields;  // the views it hands out live until its next split
     for (std::size_t r = begin; r < end; ++r) {
       ParsedRow& row = parsed_[r];
-      row.problem = parse_cells(lines_.line_text(row.line), row.line.line_number, fields, row.sample,
-                                values, row.known);
+      row.problem = parse_cells(lines_.line_text(row.line), row.line.line_number, fields, row.sample, values);
     }
   });
   return rows;

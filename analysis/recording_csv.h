@@ -10,8 +10,7 @@
 // reported with their line and column, never dropped in silence. It derives each sample's
 // loading direction from the misalignment amplitude of the rows it keeps, with a dead band from
 // the whole recording's misalignment noise (so it reads the rows twice: once, on opening, for
-// the noise, then chunk by chunk; the second converts again only the cells the first did not,
-// analysis/first_pass_values.h), the rates of misalignment and torque (core/input_rate.h), and,
+// the noise, then chunk by chunk), the rates of misalignment and torque (core/input_rate.h), and,
 // where there is a speed column, the rotation phase.
 #pragma once
 
@@ -26,7 +25,6 @@
 #include "analysis/csv_fields.h"
 #include "analysis/csv_line_reader.h"
 #include "analysis/derived_inputs.h"
-#include "analysis/first_pass_values.h"
 #include "analysis/plain_csv_row.h"
 #include "diagnosis/parallel_for.h"
 #include "core/loading_direction.h"
@@ -157,16 +155,12 @@ class RecordingReader {
   enum class Values { all, dead_band };
   /// A row's cells, without the checks that depend on the rows before it: safe to run on
   /// several rows at once, each thread with its own `fields`. The same problems whatever `values`.
-  /// `known`: on the second pass, the row's time and misalignment as the first read them
-  /// (first_pass_), for a row it read well.
   std::optional<RowProblem> parse_cells(std::string_view line, long line_number, CsvFields& fields,
-                                        RecordedSample& sample, Values values,
-                                        std::optional<std::size_t> known) const;
+                                        RecordedSample& sample, Values values) const;
   /// parse_cells' common case in one walk over the line (read_plain_row): false, with `sample`
   /// undefined, when the row is not plain or a value is not accepted in SI; parse_cells then
   /// reads it the general way and words its problem.
-  bool read_plain_cells(std::string_view line, RecordedSample& sample, Values values,
-                        std::optional<std::size_t> known) const;
+  bool read_plain_cells(std::string_view line, RecordedSample& sample, Values values) const;
   /// Time going backwards against the last good row.
   std::optional<RowProblem> time_problem(const RecordedSample& sample, long line_number) const;
   /// Reads up to `max_rows` rows and parses their cells on the reader's threads into parsed_;
@@ -181,13 +175,11 @@ class RecordingReader {
   std::ifstream in_;
   CsvLineReader lines_;
   RecordingHeader header_;
-  PlainCells plain_all_, plain_known_, plain_dead_band_;   // each pass's plain walk (parse_cells)
-  FirstPassValues first_pass_;
+  PlainCells plain_all_, plain_dead_band_;   // each pass's plain walk (parse_cells)
   double loading_dead_band_rad_ = 0.0;
   std::optional<DerivedInputs> derived_;   // once the dead band is known
   struct ParsedRow {
     CsvLine line;
-    std::optional<std::size_t> known;   // FirstPassValues::next_row()
     RecordedSample sample;
     std::optional<RowProblem> problem;
   };
