@@ -134,13 +134,8 @@ InducedMoments induced_moments(const CouplingGeometry& coupling, const Operating
 QuarterSums double_prime_moments(const CouplingGeometry& coupling, const OperatingPoint& point,
                                  const ContactOptions& options) {
   const ToothLoadPattern pattern = tooth_load_pattern(coupling, point, options);
-  // The sum of the loads serves only the refusal: summed in tooth order it was a chain of
-  // additions over every tooth, a third of a prediction; in any order where it is clear.
-  if (!loads_clearly_carried(coupling, pattern, options.min_load_fraction)) {
-    // In tooth order, as tooth_contact() sums them: the same refusals.
-    const double carried = tooth_load_totals(coupling, pattern).sum_of_loads_n;
-    require_load_carried(pattern, carried, point, options.min_load_fraction);
-  }
+  // The sum tooth_contact() reports: the same refusals.
+  require_load_carried(pattern, sum_of_tooth_loads_n(coupling, pattern), point, options.min_load_fraction);
   return quarter_sums(coupling, point, pattern, options.continuous_quarter_sums,
                       [&](int j) { return pattern.load_n(coupling, j); });
 }

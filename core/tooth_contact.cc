@@ -35,14 +35,10 @@ ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern
   const double stiffness = coupling.mesh_stiffness_n_per_m();
   const double crown = coupling.crown_radius_m();
   const double half_face = 0.5 * coupling.facewidth_m();
-  // Reductions in locals: the tooth table's stores could alias them.
-  int in_contact = 0, max_tooth = 0;
-  double max_load = 0.0, sum_loads = 0.0;
-  bool edge = false;
+  bool edge = false;  // in a local: the tooth table's stores could alias it
   // Eq 9 and eq 16 run over a block of teeth as arrays. The division of eq 17 and the root of
   // eq 18 cost most, so they run only over the loaded teeth of the block, gathered: an unloaded
-  // tooth has no deformation and no zone. The table and the reductions are filled tooth by tooth,
-  // so the sum of P_d keeps its order (and its bits).
+  // tooth has no deformation and no zone. The totals are tooth_load_totals', as without the table.
   for (Eigen::Index first = 0; first < n; first += kToothBlock) {
     const Eigen::Index count = std::min<Eigen::Index>(kToothBlock, n - first);
     const ToothBlock load = pattern.load_n(pattern.sin_theta(coupling, first, count));  // eq 9
@@ -73,13 +69,7 @@ ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern
         tooth.contact_length_m = length[k];
         tooth.zone_begin_m = std::clamp(begin, -half_face, half_face);
         tooth.zone_end_m = std::clamp(end, -half_face, half_face);
-        ++in_contact;
         edge = edge || begin < -half_face || end > half_face;
-        sum_loads += load[i];  // an unloaded tooth's +0 would change no bit
-        if (load[i] > max_load) {
-          max_load = load[i];
-          max_tooth = static_cast<int>(j);
-        }
         ++k;
       } else {
         tooth.deformation_m = 0.0;
@@ -90,7 +80,8 @@ ListedTotals fill_teeth(const CouplingGeometry& coupling, const ToothLoadPattern
       }
     }
   }
-  return {{in_contact, max_tooth, max_load, sum_loads}, edge, table[max_tooth].contact_length_m};
+  const ToothLoadTotals totals = tooth_load_totals(coupling, pattern);
+  return {totals, edge, table[totals.max_load_tooth].contact_length_m};
 }
 
 // Whether some loaded tooth's eq 19 zone reaches past a facewidth edge, without the table. Every

@@ -1,5 +1,7 @@
 #include "core/tooth_load_pattern.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -87,34 +89,116 @@ ToothLoadPattern tooth_load_pattern(const CouplingGeometry& coupling, const Oper
   return p;
 }
 
-ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
-  const int n = coupling.teeth();
-  const double* const tooth_sin = coupling.tooth_sin().data();
-  const double* const tooth_cos = coupling.tooth_cos().data();
-  const double cos_alpha = pattern.cos_alpha, sin_alpha = pattern.sin_alpha;
-  const double ratio = pattern.separation_ratio, peak = pattern.peak_tooth_load_n;
+namespace {
+
+// Eq 9 in tooth order over every tooth: the totals where the closed form below cannot be used (a
+// NaN or infinite ratio: a torque so small that z_e underflows).
+ToothLoadTotals totals_in_tooth_order(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
   ToothLoadTotals totals;
-  // One pass, no branch on a tooth: the loaded teeth form arcs whose ends a branch predictor
-  // misses when the point changes. The sum keeps tooth order (its bits; an unloaded tooth's +0
-  // changes none): a chain of one addition per tooth, which the rest of the pass runs beside.
-  // A tooth takes the maximum only from a smaller one, so the first of equal loads keeps it.
-  int loaded = 0, max_tooth = 0;
-  double max_load = 0.0, sum = 0.0;
-  for (int j = 0; j < n; ++j) {
-    const double s = tooth_sin[j] * cos_alpha + tooth_cos[j] * sin_alpha;
-    const double share = 1.0 - ratio * s * s;
-    const double load = peak * (share > 0.0 ? share : 0.0);  // a NaN share too: as load_n
-    loaded += load > 0.0;
-    sum += load;
-    const bool larger = load > max_load;
-    max_load = larger ? load : max_load;
-    max_tooth = larger ? j : max_tooth;
+  for (int j = 0; j < coupling.teeth(); ++j) {
+    const double load = pattern.load_n(coupling, j);
+    totals.loaded_teeth += load > 0.0;
+    totals.sum_of_loads_n += load;
+    if (load > totals.max_load_n) {
+      totals.max_load_n = load;
+      totals.max_load_tooth = j;
+    }
   }
-  totals.loaded_teeth = loaded;
-  totals.max_load_tooth = max_tooth;
-  totals.max_load_n = max_load;
-  totals.sum_of_loads_n = sum;
   return totals;
+}
+
+// The teeth of eq 9 about one of the two angles where sin(theta) = 0, as whole tooth numbers j
+// (taken modulo N): theta_j = 2 pi j / N + alpha is `centre` (0 or pi) at the real j = c, and the
+// teeth this arc owns are those within a quarter turn before or after it, [c - N/4, c + N/4).
+// Within them sin^2(theta) grows with the distance from c, so the loaded teeth (P_d > 0, eq 9's
+// 1 - r sin^2 theta > 0) are one run about the tooth nearest c: its ends are estimated from the
+// arc's half-width and then moved tooth by tooth to where P_d, computed as the tooth table
+// computes it, turns to zero. A tooth beside the estimate is usually the end: a few teeth are
+// evaluated, not N.
+class ToothArc {
+ public:
+  ToothArc(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double centre_rad)
+      : coupling_(coupling), pattern_(pattern), n_(coupling.teeth()) {
+    const double per_rad = n_ / (2.0 * M_PI);
+    // alpha is within a tooth pitch of 0 (eq 13): the arc's teeth are within a turn of 0 .. N - 1.
+    c_ = (centre_rad - pattern.offset_alpha_rad) * per_rad;
+    first_owned_ = static_cast<long>(std::ceil(c_ - 0.25 * n_));
+    last_owned_ = static_cast<long>(std::ceil(c_ + 0.25 * n_)) - 1;
+    nearest_ = std::clamp(std::lround(c_), first_owned_, last_owned_);
+    // Loaded where |sin theta| < 1 / sqrt(r): within asin(1 / sqrt(r)) of the centre.
+    const double r = pattern.separation_ratio;
+    half_width_ = (r > 1.0 ? std::asin(1.0 / std::sqrt(r)) : 0.5 * M_PI) * per_rad;
+  }
+
+  /// Tooth j (any whole number) as its number in 0 .. N - 1; within a turn, without a division.
+  int tooth(long j) const {
+    if (j >= -n_ && j < 2 * n_) return static_cast<int>(j < 0 ? j + n_ : j >= n_ ? j - n_ : j);
+    const long k = j % n_;
+    return static_cast<int>(k < 0 ? k + n_ : k);
+  }
+
+  /// P_d of tooth j.
+  double load_n(long j) const { return pattern_.load_n(coupling_, tooth(j)); }
+  bool loaded(long j) const { return load_n(j) > 0.0; }
+
+  /// The tooth nearest the centre and its neighbours: the largest P_d is one of them.
+  std::array<long, 3> nearest() const { return {nearest_ - 1, nearest_, nearest_ + 1}; }
+
+  /// How many of the arc's teeth carry load.
+  int loaded_teeth() const {
+    long seed = nearest_;
+    if (!loaded(seed)) {  // twins equally near within rounding: either may carry the other's share
+      if (seed - 1 >= first_owned_ && loaded(seed - 1)) --seed;
+      else if (seed + 1 <= last_owned_ && loaded(seed + 1)) ++seed;
+      else return 0;
+    }
+    long first = std::clamp(static_cast<long>(std::ceil(c_ - half_width_)), first_owned_, seed);
+    while (first > first_owned_ && loaded(first - 1)) --first;
+    while (!loaded(first)) ++first;  // stops at seed
+    long last = std::clamp(static_cast<long>(std::floor(c_ + half_width_)), seed, last_owned_);
+    while (last < last_owned_ && loaded(last + 1)) ++last;
+    while (!loaded(last)) --last;
+    return static_cast<int>(last - first + 1);
+  }
+
+ private:
+  const CouplingGeometry& coupling_;
+  const ToothLoadPattern& pattern_;
+  long n_;
+  double c_ = 0.0;             ///< the centre, in teeth
+  long first_owned_ = 0, last_owned_ = 0, nearest_ = 0;
+  double half_width_ = 0.0;    ///< in teeth
+};
+
+}  // namespace
+
+ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
+  const double r = pattern.separation_ratio;
+  if (!(r >= 0.0) || !std::isfinite(r) || !std::isfinite(pattern.peak_tooth_load_n)) {
+    return totals_in_tooth_order(coupling, pattern);
+  }
+  ToothLoadTotals totals;
+  const ToothArc arcs[] = {ToothArc(coupling, pattern, 0.0), ToothArc(coupling, pattern, M_PI)};
+  // The largest P_d, and the first tooth j in 0 .. N - 1 of equal ones (tooth 0 when none carries).
+  for (const ToothArc& arc : arcs) {
+    totals.loaded_teeth += arc.loaded_teeth();
+    for (const long j : arc.nearest()) {
+      const int tooth = arc.tooth(j);
+      const double load = arc.load_n(j);
+      if (load > totals.max_load_n || (load == totals.max_load_n && load > 0.0 && tooth < totals.max_load_tooth)) {
+        totals.max_load_n = load;
+        totals.max_load_tooth = tooth;
+      }
+    }
+  }
+  totals.sum_of_loads_n = sum_of_tooth_loads_n(coupling, pattern);
+  return totals;
+}
+
+double sum_of_tooth_loads_n(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
+  const double r = pattern.separation_ratio;
+  if (!(r >= 0.0) || !std::isfinite(r)) return totals_in_tooth_order(coupling, pattern).sum_of_loads_n;
+  return pattern.peak_tooth_load_n * load_share_sum(coupling.teeth(), pattern.offset_alpha_rad, r);
 }
 
 ToothLoadPattern tooth_load_pattern(const ToothContact& contact) {
@@ -144,14 +228,6 @@ void require_load_carried(const ToothLoadPattern& pattern, double sum_of_loads_n
           << " % (z_e/z_o = " << pattern.load_sharing.ze_over_zo
           << ", light torque near the jam angle is outside eq 22's range)";
   throw InvalidInput("operating_point.torque_nm", point.torque_nm, allowed.str());
-}
-
-bool loads_clearly_carried(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double minimum) {
-  constexpr double kMargin = 1e-9;  // of P_t; the closed form and tooth order differ by ~N ulp (1e-14 for 100 teeth)
-  const double r = pattern.separation_ratio;
-  if (!(r >= 0.0) || !std::isfinite(r)) return false;  // the sum in tooth order says what a NaN share gives
-  const double sum = pattern.peak_tooth_load_n * load_share_sum(coupling.teeth(), pattern.offset_alpha_rad, r);
-  return sum >= (minimum + kMargin) * pattern.total_normal_load_n;  // NaN: false
 }
 
 }  // namespace gc

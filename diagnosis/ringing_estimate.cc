@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
+#include <optional>
 #include <vector>
 
 #include "diagnosis/time_step.h"
@@ -30,7 +32,7 @@ class ModeScore {
  public:
   ModeScore(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
             const Eigen::MatrixX2d& residual)
-      : rows_(rows.begin(), rows.end()) {
+      : rows_(rows.begin(), rows.end()), rows_in_order_(std::is_sorted(rows.begin(), rows.end())) {
     for (const RecordedSample& o : observations) {
       times_.push_back(o.input.time_s);
       torques_.push_back(o.input.torque_nm);
@@ -75,6 +77,7 @@ class ModeScore {
 
   /// The summed squares the mode's ringing, one coefficient per channel, explains of left().
   double operator()(double f_hz, double zeta) const {
+    if (const std::optional<double> score = streamed(f_hz, zeta)) return *score;
     const Eigen::VectorXd c = column(f_hz, zeta);
     return explained(c, c.squaredNorm(), left_);
   }
@@ -86,6 +89,7 @@ class ModeScore {
   /// faster (a few frequencies at a time share the packing of the shifted residuals), each within
   /// shift_tolerance() of its exact value (summed in another order).
   std::vector<std::vector<GridScores>> grid_scores(std::span<const double> frequencies, Shifts shifts) const {
+    if (shifts == Shifts::none) return residual_scores(frequencies);
     std::vector<Eigen::VectorXd> columns;
     std::vector<double> squares;
     for (const double f_hz : frequencies) {
@@ -136,6 +140,47 @@ class ModeScore {
   }
 
  private:
+  /// grid_scores without shifts: operator() at each point, no column kept.
+  std::vector<std::vector<GridScores>> residual_scores(std::span<const double> frequencies) const {
+    std::vector<std::vector<GridScores>> by_frequency;
+    for (const double f_hz : frequencies) {
+      std::vector<GridScores>& at = by_frequency.emplace_back(std::size(kDampings), GridScores{});
+      for (std::size_t z = 0; z < std::size(kDampings); ++z) at[z][0] = (*this)(f_hz, kDampings[z]);
+    }
+    return by_frequency;
+  }
+
+  /// operator() in one pass over the ringing, without forming the column c less the nuisance,
+  /// c_p = c - Q Q^T c (Q = basis_, the nuisance's 4 columns): left() is orthogonal to Q, so
+  /// c_p . left = c . left, and |c_p|^2 = |c|^2 - |Q^T c|^2. Forming and projecting a column was
+  /// half of the grid's time. nullopt where the rows are not in time order, or where c lies so
+  /// near the nuisance that the difference of squares would lose the digits of |c_p|^2.
+  std::optional<double> streamed(double f_hz, double zeta) const {
+    if (!rows_in_order_) return std::nullopt;
+    RingingPole pole({f_hz, zeta});
+    std::complex<double> sum = 0.0;
+    double cc = 0.0, c0 = 0.0, c1 = 0.0, c2 = 0.0, c3 = 0.0, cy = 0.0, cz = 0.0;
+    const auto take = [&](double c, Eigen::Index k) {
+      cc += c * c;
+      c0 += c * basis_(k, 0);
+      c1 += c * basis_(k, 1);
+      c2 += c * basis_(k, 2);
+      c3 += c * basis_(k, 3);
+      cy += c * left_(k, 0);
+      cz += c * left_(k, 1);
+    };
+    std::size_t k = 0;
+    for (; k < rows_.size() && rows_[k] == 0; ++k) take(0.0, static_cast<Eigen::Index>(k));  // r_0 = 0
+    for (std::size_t i = 1; i < times_.size() && k < rows_.size(); ++i) {
+      const double r = pole.next(sum, times_[i] - times_[i - 1], torques_[i] - torques_[i - 1]);
+      for (; k < rows_.size() && rows_[k] == i; ++k) take(r, static_cast<Eigen::Index>(k));
+    }
+    if (!(cc > 0.0)) return 0.0;
+    const double projected = cc - (c0 * c0 + c1 * c1 + c2 * c2 + c3 * c3);
+    if (!(projected > 1e-6 * cc)) return std::nullopt;
+    return (cy * cy + cz * cz) / projected;
+  }
+
   /// The mode's ringing of the torque on the rows, less the nuisance.
   Eigen::VectorXd column(double f_hz, double zeta) const {
     const std::vector<double> r = ringing_sequence(times_, torques_, {f_hz, zeta});
@@ -150,6 +195,7 @@ class ModeScore {
   }
 
   std::vector<std::size_t> rows_;
+  bool rows_in_order_;
   std::vector<double> times_, torques_;
   Eigen::MatrixXd basis_;
   Eigen::MatrixX2d left_;

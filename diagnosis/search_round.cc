@@ -124,11 +124,20 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows), parallel)) {
     hints.push_back({{"delay_s", *delay}});
   }
-  round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, rivals, settings, hints);
+  // The formula's search needs nothing of the effects' ranking and runs on one thread: beside the
+  // ranking, not after it (a tenth of a 20,000-row diagnosis' wall time).
+  parallel(2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t task = begin; task < end; ++task) {
+      if (task == 0) {
+        round.ranking = rank_candidates(model, observations, search, base, folds, parallel, given, partly, rivals, settings, hints);
+      } else if (settings.formula) {
+        round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
+      }
+    }
+  });
   put_claim_first(round.ranking, base_ms, noise_ms, folds, settings);
   put_simpler_swap_first(round.ranking, folds, settings);
   put_simplest_alike_first(round.ranking, base, folds, base_ms, noise_ms, settings);
-  if (settings.formula) round.formula = formula_candidate(observations, search, base, folds, formula_settings(round, settings));
   // The second held-out test of the claim rule: whole fifths (whole_fifths.h).
   const Folds fifths = whole_fifths(search.size(), test_rows_per_block(folds));
   demote_what_does_not_carry(round.ranking, model, observations, search, base, fifths, parallel, base_ms, noise_ms,

@@ -9,40 +9,16 @@
 #include <numbers>
 
 namespace gc {
+
+RingingPole::RingingPole(const RingingMode& m) {
+  const double wn = 2.0 * std::numbers::pi * m.natural_frequency_hz;
+  const double root = std::sqrt(1.0 - m.damping_ratio * m.damping_ratio);
+  s_ = {-m.damping_ratio * wn, wn * root};
+  a_ = {-1.0, m.damping_ratio / root};
+  gaps_.fill(std::numeric_limits<double>::quiet_NaN());
+}
+
 namespace {
-
-/// s and A of the header's g(tau) = Re(A e^{s tau}).
-struct Pole {
-  std::complex<double> s, a;
-  explicit Pole(const RingingMode& m) {
-    const double wn = 2.0 * std::numbers::pi * m.natural_frequency_hz;
-    const double root = std::sqrt(1.0 - m.damping_ratio * m.damping_ratio);
-    s = {-m.damping_ratio * wn, wn * root};
-    a = {-1.0, m.damping_ratio / root};
-  }
-  /// e^{s dt}, remembered per gap: a clock's gaps take a handful of values a few ulp apart (16 on
-  /// a 100 Hz CSV's stamps), which alternate, and an exp per sample was a sixth of a diagnosis.
-  std::complex<double> decay(double dt) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &dt, sizeof bits);
-    const std::size_t slot = static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 58);  // of 64
-    if (!(gaps_[slot] == dt)) {
-      gaps_[slot] = dt;
-      decays_[slot] = std::exp(s * dt);
-    }
-    return decays_[slot];
-  }
-
- private:
-  std::array<double, 64> gaps_ = filled(std::numeric_limits<double>::quiet_NaN());
-  std::array<std::complex<double>, 64> decays_{};
-
-  static std::array<double, 64> filled(double value) {
-    std::array<double, 64> a;
-    a.fill(value);
-    return a;
-  }
-};
 
 /// Where a change is forgotten: e^{-zeta w_n tau} below this.
 constexpr double kForgotten = 1e-6;
@@ -51,23 +27,22 @@ constexpr double kForgotten = 1e-6;
 
 std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<const double> inputs,
                                      const RingingMode& mode) {
-  Pole pole(mode);
+  RingingPole pole(mode);
   std::vector<double> r(inputs.size(), 0.0);
   std::complex<double> sum = 0.0;
   for (std::size_t i = 1; i < inputs.size(); ++i) {
-    sum = sum * pole.decay(times_s[i] - times_s[i - 1]) + pole.a * (inputs[i] - inputs[i - 1]);
-    r[i] = sum.real();
+    r[i] = pole.next(sum, times_s[i] - times_s[i - 1], inputs[i] - inputs[i - 1]);
   }
   return r;
 }
 
 double ringing_memory_s(const RingingMode& mode) {
-  // -Re s of Pole, written out: a Pole fills its 64-gap cache.
+  // -Re s of RingingPole, written out: a pole fills its 64-gap cache.
   return -std::log(kForgotten) / (mode.damping_ratio * (2.0 * std::numbers::pi * mode.natural_frequency_hz));
 }
 
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode) {
-  Pole pole(mode);
+  RingingPole pole(mode);
   const std::size_t i = history.index();
   const double t = history.at(i).time_s;
   const double memory_s = ringing_memory_s(mode);
@@ -75,7 +50,7 @@ double torque_ringing_at(const InputHistory& history, const RingingMode& mode) {
   for (std::size_t k = i; k >= 1; --k) {
     const MeasurementSample& now = history.at(k);
     const MeasurementSample& before = history.at(k - 1);
-    sum += pole.a * (now.torque_nm - before.torque_nm) * factor;
+    sum += pole.a() * (now.torque_nm - before.torque_nm) * factor;
     if (t - before.time_s > memory_s) break;
     factor *= pole.decay(now.time_s - before.time_s);
   }

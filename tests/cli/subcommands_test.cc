@@ -207,7 +207,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--coupling",
                       "nrel_sideways"},
                      {"--coupling nrel_sideways", "nrel_downwind, nrel_upwind"}},
-        BadInputCase{{"contact", "--torque-nm", "1e6", "--misalignment-deg", "0.4",
+        // 42 kN·m at 0.4 deg lies on eq 22's root branch, where one step cannot reach the fixed point.
+        BadInputCase{{"contact", "--torque-nm", "4.2e4", "--misalignment-deg", "0.4",
                       "--max-iterations", "1"},
                      {"did not reach tolerance", "--max-iterations"}},
         BadInputCase{{"friction", "--torque-nm", "1e6", "--misalignment-deg", "0.4", "--msy-nm", "0",

@@ -362,6 +362,24 @@ TEST(RigVocabulary, RingingEstimateIsTheSameOnOneThreadAndTwo) {
   EXPECT_EQ(one->damping_ratio, two->damping_ratio);
 }
 
+// The grid's scores are summed row by row beside the ringing's recursion over every observation
+// (ringing_estimate.cc, streamed): on rows that skip observations, the ringing is still driven by
+// all of them, and the mode is found as on every row.
+TEST(RigVocabulary, RingingEstimateOnEveryOtherRowFindsTheMode) {
+  const RingingCase c = ringing_case(true);
+  const CaseResidual all = case_residual(c);
+  std::vector<std::size_t> rows;
+  Eigen::MatrixX2d residual(static_cast<Eigen::Index>((all.rows.size() + 1) / 2), 2);
+  for (std::size_t k = 0; k < all.rows.size(); k += 2) {
+    residual.row(static_cast<Eigen::Index>(rows.size())) = all.residual.row(static_cast<Eigen::Index>(k));
+    rows.push_back(all.rows[k]);
+  }
+  const std::optional<RingingMode> mode = dominant_ringing(c.recording, rows, residual);
+  ASSERT_TRUE(mode.has_value());
+  EXPECT_NEAR(mode->natural_frequency_hz, kModeHz, 0.1 * kModeHz);
+  EXPECT_NEAR(mode->damping_ratio, kModeZeta, 0.1 * kModeZeta);
+}
+
 TEST(RigVocabulary, FindsNoRingingInNoiseAlone) {
   const RingingCase c = ringing_case(false);
   EXPECT_FALSE(offers_ringing(c));
