@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "analysis/atomic_file.h"
-#include "analysis/report_json.h"
 #include "analysis/report_scale.h"
+#include "codec/result_json.h"
 #include "analysis/validation_messages.h"
 #include "validation_report_js.h"  // kValidationReportJs, generated from validation_report.js
 
@@ -68,7 +68,7 @@ std::string validation_report_html(const gearcoupling::v1::ValidationReport& rep
   html += kStyle;
   html += "</style>\n<script>\n" + script_safe(chart_js()) + "\n</script>\n";
   html += "</head>\n<body>\n<div id=\"main\"></div>\n<script>\nconst DATA = ";
-  html += script_safe(report_json(report));
+  html += script_safe(codec::to_json(report));
   html += ";\n" + script_safe(std::string(kValidationReportJs)) + "\n</script>\n</body>\n</html>\n";
   return html;
 }
