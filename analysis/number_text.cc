@@ -28,25 +28,31 @@ void append_shortest(std::string& out, Number value) {
 
 std::optional<double> parse_double(std::string_view text) { return parse_whole<double>(text); }
 
-bool plainly_moderate_number(std::string_view text) {
+const char* plain_moderate_number_end(const char* begin, const char* end) {
   constexpr std::size_t kMostCharacters = 40, kMostExponentDigits = 2;
-  if (text.size() > kMostCharacters) return false;
-  std::size_t i = text.starts_with('-') ? 1 : 0;
+  const char* at = begin;
+  if (at != end && *at == '-') ++at;
   const auto digits = [&] {
-    const std::size_t start = i;
-    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
-    return i - start;
+    const char* start = at;
+    while (at != end && *at >= '0' && *at <= '9') ++at;
+    return static_cast<std::size_t>(at - start);
   };
-  if (digits() == 0) return false;
-  if (i < text.size() && text[i] == '.' && (++i, digits() == 0)) return false;
-  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  if (digits() == 0) return nullptr;
+  if (at != end && *at == '.' && (++at, digits() == 0)) return nullptr;
+  if (at != end && (*at == 'e' || *at == 'E')) {
+    ++at;
+    if (at != end && (*at == '+' || *at == '-')) ++at;
     const std::size_t exponent_digits = digits();
-    if (exponent_digits == 0 || exponent_digits > kMostExponentDigits) return false;
+    if (exponent_digits == 0 || exponent_digits > kMostExponentDigits) return nullptr;
   }
-  return i == text.size();
+  return static_cast<std::size_t>(at - begin) <= kMostCharacters ? at : nullptr;
 }
+
+bool plainly_moderate_number(std::string_view text) {
+  const char* end = text.data() + text.size();
+  return plain_moderate_number_end(text.data(), end) == end;
+}
+
 std::optional<int> parse_int(std::string_view text) { return parse_whole<int>(text); }
 
 void append_number(std::string& out, double value) { append_shortest(out, value); }

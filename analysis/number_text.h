@@ -19,6 +19,9 @@ std::optional<int> parse_int(std::string_view text);
 /// magnitude, told from its characters without converting it (a tenth of the time): at most 40
 /// of them, as [-]digits[.digits][e|E[+|-]d[d]]. False tells nothing: convert it to know.
 bool plainly_moderate_number(std::string_view text);
+/// The end of the plainly moderate number (as plainly_moderate_number) that [begin, end) starts
+/// with, or nullptr when it starts with none: a cell told where it lies, without finding its end first.
+const char* plain_moderate_number_end(const char* begin, const char* end);
 
 /// Appends the shortest round-trip text of `value` to `out`.
 void append_number(std::string& out, double value);

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <thread>
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "analysis/csv_fields.h"
 #include "analysis/format_error.h"
 #include "analysis/number_text.h"
+#include "analysis/plain_csv_row.h"
 #include "core/model_error.h"
 #include "parallel/chunked_parallel_for.h"
 
@@ -157,9 +159,15 @@ std::string_view si_unit(Quantity quantity) {
   return "";
 }
 
-// Why a finite cell's value in SI is not accepted, or nullopt: a unit's scale can take a finite
-// cell past the largest double (1e308 knm).
+// A unit's scale can take a finite cell past the largest double (1e308 knm).
+bool si_acceptable(Quantity quantity, double si) {
+  const std::optional<double> limit = si_limit(quantity);
+  return std::isfinite(si) && !(limit && std::abs(si) > *limit);
+}
+
+// Why a finite cell's value in SI is not accepted (si_acceptable), or nullopt.
 std::optional<std::string> si_complaint(std::string_view cell, Quantity quantity, double si) {
+  if (si_acceptable(quantity, si)) return std::nullopt;
   if (!std::isfinite(si)) {
     return fmt::format("'{}' is not a finite number in {}", cell, si_unit(quantity));
   }
@@ -175,6 +183,19 @@ std::optional<std::string> si_complaint(std::string_view cell, Quantity quantity
 // the quantities whose range is limited in SI (si_limit).
 bool dead_band_value(Quantity quantity) {
   return quantity == Quantity::time || quantity == Quantity::misalignment || si_limit(quantity).has_value();
+}
+
+// What the plain walk over a row (analysis/plain_csv_row.h) does with each field: converts the
+// columns read (on the dead band's pass only its values, the others checked at a glance as
+// parse_cells does) and skips the columns of no known quantity.
+PlainCells plain_cells(const RecordingHeader& header, bool dead_band_pass) {
+  PlainCells cells{std::vector<CellUse>(header.field_count, CellUse::skip), 0};
+  for (const RecordingColumn& column : header.columns) {
+    const bool convert = !dead_band_pass || dead_band_value(column.quantity);
+    cells.uses[column.index] = convert ? CellUse::convert : CellUse::check;
+    cells.converted += convert ? 1 : 0;
+  }
+  return cells;
 }
 
 std::string_view cell_complaint(std::string_view cell) {
@@ -338,6 +359,8 @@ RecordingReader::RecordingReader(const std::filesystem::path& path, const Record
   const unsigned threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency())
                                                 : options.threads;
   parallel_for_ = chunked_parallel_for(threads);
+  plain_all_ = plain_cells(header_, false);
+  plain_dead_band_ = plain_cells(header_, true);
   loading_dead_band_rad_ = scan_dead_band(options.loading);
   derived_.emplace(loading_dead_band_rad_, options.loading.still_after_s);
 }
@@ -365,6 +388,7 @@ double RecordingReader::scan_dead_band(const LoadingDirectionOptions& loading) {
 std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, long line_number,
                                                        CsvFields& fields, RecordedSample& s,
                                                        Values values) const {
+  if (read_plain_cells(line, s, values)) return std::nullopt;
   if (auto problem = fields.split(line)) return RowProblem{line_number, 0, "", std::move(*problem)};
   if (fields.size() != header_.field_count) {
     return RowProblem{line_number, 0, "",
@@ -393,6 +417,21 @@ std::optional<RowProblem> RecordingReader::parse_cells(std::string_view line, lo
     set_value(column.quantity, si, s);
   }
   return std::nullopt;
+}
+
+bool RecordingReader::read_plain_cells(std::string_view line, RecordedSample& s, Values values) const {
+  const PlainCells& plain = values == Values::all ? plain_all_ : plain_dead_band_;
+  std::array<double, kQuantityCount> read;  // a quantity has one column at most
+  if (!read_plain_row(line, plain.uses, std::span(read).first(plain.converted))) return false;
+  s = RecordedSample{};
+  std::size_t next = 0;
+  for (const RecordingColumn& column : header_.columns) {  // in field order, as `read`
+    if (plain.uses[column.index] != CellUse::convert) continue;
+    const double si = read[next++] * column.unit.scale + column.unit.offset;
+    if (!si_acceptable(column.quantity, si)) return false;  // parse_cells words why
+    set_value(column.quantity, si, s);
+  }
+  return true;
 }
 
 std::optional<RowProblem> RecordingReader::time_problem(const RecordedSample& s, long line_number) const {

@@ -25,6 +25,7 @@
 #include "analysis/csv_fields.h"
 #include "analysis/csv_line_reader.h"
 #include "analysis/derived_inputs.h"
+#include "analysis/plain_csv_row.h"
 #include "diagnosis/parallel_for.h"
 #include "core/loading_direction.h"
 #include "core/recorded_sample.h"
@@ -81,6 +82,13 @@ struct RecordingHeader {
   std::vector<RecordingColumn> columns;
   std::vector<std::string> ignored;   ///< columns of no known quantity, as written
   std::size_t field_count = 0;        ///< every row has this many fields
+};
+
+/// How a pass reads a plain row (analysis/plain_csv_row.h): each field's use, and how many
+/// are converted.
+struct PlainCells {
+  std::vector<CellUse> uses;
+  std::size_t converted = 0;
 };
 
 /// What a recording is read with.
@@ -149,6 +157,10 @@ class RecordingReader {
   /// several rows at once, each thread with its own `fields`. The same problems whatever `values`.
   std::optional<RowProblem> parse_cells(std::string_view line, long line_number, CsvFields& fields,
                                         RecordedSample& sample, Values values) const;
+  /// parse_cells' common case in one walk over the line (read_plain_row): false, with `sample`
+  /// undefined, when the row is not plain or a value is not accepted in SI; parse_cells then
+  /// reads it the general way and words its problem.
+  bool read_plain_cells(std::string_view line, RecordedSample& sample, Values values) const;
   /// Time going backwards against the last good row.
   std::optional<RowProblem> time_problem(const RecordedSample& sample, long line_number) const;
   /// Reads up to `max_rows` rows and parses their cells on the reader's threads into parsed_;
@@ -163,6 +175,7 @@ class RecordingReader {
   std::ifstream in_;
   CsvLineReader lines_;
   RecordingHeader header_;
+  PlainCells plain_all_, plain_dead_band_;   // each pass's plain walk (parse_cells)
   double loading_dead_band_rad_ = 0.0;
   std::optional<DerivedInputs> derived_;   // once the dead band is known
   struct ParsedRow {

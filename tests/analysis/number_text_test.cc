@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -51,6 +52,23 @@ TEST(NumberText, PlainlyModerateNumbersParseFinite) {
                            "-inf", "1,5", "1.5x", " 1", "1 ", "--1", "1e5.5", "0x10",
                            "1234567890123456789012345678901234567890.5"}) {
     EXPECT_FALSE(plainly_moderate_number(text)) << text;
+  }
+}
+
+// Against the rule written as a regular expression, on random text of digits and the bytes
+// about them ('/' and ':', bytes that carry when 6 is added): digit runs of every length and
+// place, eight at a time or one.
+TEST(NumberText, PlainlyModerateNumbersAreTheDocumentedForm) {
+  const std::regex form("-?[0-9]+(\\.[0-9]+)?([eE][+-]?[0-9]{1,2})?");
+  const std::string alphabet = "0123456789012345678901234567890123456789.eE-+/:\xfa\xff ";
+  std::mt19937 random(17);
+  std::uniform_int_distribution<std::size_t> length(0, 45), pick(0, alphabet.size() - 1);
+  for (int trial = 0; trial < 200000; ++trial) {
+    std::string text(length(random), '0');
+    for (char& c : text) c = trial % 2 ? alphabet[pick(random) % 40] : alphabet[pick(random)];
+    if (trial % 3 == 0 && !text.empty()) text[pick(random) % text.size()] = '.';
+    const bool expected = text.size() <= 40 && std::regex_match(text, form);
+    ASSERT_EQ(plainly_moderate_number(text), expected) << text;
   }
 }
 

@@ -350,6 +350,30 @@ TEST(RecordingReader, ReadsTheSameOnOneAndOnSeveralThreads) {
   }
 }
 
+// Plain rows read in one walk (analysis/plain_csv_row.h), others and bad ones by the general
+// tokenizer, on both passes: every row keeps its own values, every problem its line.
+TEST(RecordingReader, PlainOtherAndBadRowsMixedKeepEachRowsValuesAndLines) {
+  const Recording recording = read_text(kHeader +
+                                        "0,1e6,0.1,0,1,2\n"
+                                        "0.1,1e6,,0,1,2\n"                // empty misalignment
+                                        "\"0.2\", 1e6 ,+0.2,0,1,2\n"      // good, not plain
+                                        "0.15,1e6,0.3,0,1,2\n"            // time goes backwards
+                                        "0.3,1e6,0.4,0,x,2\n"             // msy not a number
+                                        "0.3,1e6,0.4,0,1\n"               // a field short
+                                        "0.4,1e6,0.5,0,1,2\n");
+  const double degree = std::numbers::pi / 180.0;
+  ASSERT_EQ(recording.samples.size(), 3u);
+  EXPECT_EQ(recording.excluded_rows, 4u);
+  const std::vector<std::pair<double, double>> expected{{0.0, 0.1}, {0.2, 0.2}, {0.4, 0.5}};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(recording.samples[i].input.time_s, expected[i].first) << i;
+    EXPECT_EQ(recording.samples[i].input.misalignment_rad, expected[i].second * degree) << i;
+  }
+  ASSERT_EQ(recording.problems.size(), 4u);
+  const std::vector<long> lines{3, 5, 6, 7};
+  for (std::size_t i = 0; i < lines.size(); ++i) EXPECT_EQ(recording.problems[i].line, lines[i]) << i;
+}
+
 TEST(RecordingReader, CountsEveryExcludedRowBeyondTheKeptProblems) {
   std::string text = kHeader;
   for (int i = 0; i < 1200; ++i) text += "x,1e6,0.1,0,1,2\n";
