@@ -122,6 +122,7 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
   // The box the fit searched, scanned as the null must be (SurrogateDesign::elsewhere).
   std::mt19937_64 random(0x5ca7'7e2d);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<ParameterValues> points;
   for (int k = 0; k < kPointsElsewhere; ++k) {
     ParameterValues there = values;
     bool moved = false;
@@ -131,9 +132,18 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
       moved = true;
     }
     if (!moved) break;
-    if (std::optional<Eigen::MatrixXd> columns = design_at(there, fit, registration, model, observations, rows, base, parallel)) {
-      if (columns->allFinite()) design.elsewhere.push_back(std::move(*columns));
+    points.push_back(std::move(there));
+  }
+  // A point to a thread: each is a few evaluations of a few thousand rows, too short to share
+  // their rows over threads started for each (they ran on one thread).
+  std::vector<std::optional<Eigen::MatrixXd>> at_points(points.size());
+  parallel(points.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      at_points[k] = design_at(points[k], fit, registration, model, observations, rows, base, serial_for());
     }
+  });
+  for (std::optional<Eigen::MatrixXd>& columns : at_points) {
+    if (columns && columns->allFinite()) design.elsewhere.push_back(std::move(*columns));
   }
   return design;
 }
