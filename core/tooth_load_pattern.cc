@@ -106,17 +106,25 @@ bool no_tooth_carries(const ToothLoadPattern& pattern) { return !std::isfinite(p
 // evaluated, not N.
 class ToothArc {
  public:
-  ToothArc(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double centre_rad)
-      : coupling_(coupling), pattern_(pattern), n_(coupling.teeth()) {
-    const double per_rad = n_ / (2.0 * M_PI);
-    // alpha is within a tooth pitch of 0 (eq 13): the arc's teeth are within a turn of 0 .. N - 1.
-    c_ = (centre_rad - pattern.offset_alpha_rad) * per_rad;
-    first_owned_ = static_cast<long>(std::ceil(c_ - 0.25 * n_));
-    last_owned_ = static_cast<long>(std::ceil(c_ + 0.25 * n_)) - 1;
-    nearest_ = std::clamp(std::lround(c_), first_owned_, last_owned_);
+  /// The arc about the real tooth number `centre`, owning the teeth first_owned .. last_owned.
+  ToothArc(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double centre, long first_owned,
+           long last_owned)
+      : coupling_(coupling), pattern_(pattern), n_(coupling.teeth()), c_(centre), first_owned_(first_owned),
+        last_owned_(last_owned), nearest_(std::clamp(std::lround(centre), first_owned, last_owned)) {
     // Loaded where |sin theta| < 1 / sqrt(r): within asin(1 / sqrt(r)) of the centre.
     const double r = pattern.separation_ratio;
-    half_width_ = (r > 1.0 ? std::asin(1.0 / std::sqrt(r)) : 0.5 * M_PI) * per_rad;
+    half_width_ = (r > 1.0 ? std::asin(1.0 / std::sqrt(r)) : 0.5 * M_PI) * n_ / (2.0 * M_PI);
+  }
+
+  /// The two arcs, about theta = 0 and pi, owning every tooth once: their split is found once
+  /// from the first centre (the second's, computed apart, could round a tooth at 90 deg both ways).
+  static std::array<ToothArc, 2> both(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
+    const long n = coupling.teeth();
+    // alpha is within a tooth pitch of 0 (eq 13): the arcs' teeth are within a turn of 0 .. N - 1.
+    const double c = -pattern.offset_alpha_rad * n / (2.0 * M_PI);
+    const long first = static_cast<long>(std::ceil(c - 0.25 * n));
+    const long split = static_cast<long>(std::ceil(c + 0.25 * n));
+    return {ToothArc(coupling, pattern, c, first, split - 1), ToothArc(coupling, pattern, c + 0.5 * n, split, first + n - 1)};
   }
 
   /// Tooth j (any whole number) as its number in 0 .. N - 1; within a turn, without a division.
@@ -154,8 +162,8 @@ class ToothArc {
   const CouplingGeometry& coupling_;
   const ToothLoadPattern& pattern_;
   long n_;
-  double c_ = 0.0;             ///< the centre, in teeth
-  long first_owned_ = 0, last_owned_ = 0, nearest_ = 0;
+  double c_;                   ///< the centre, in teeth
+  long first_owned_, last_owned_, nearest_;
   double half_width_ = 0.0;    ///< in teeth
 };
 
@@ -164,7 +172,7 @@ class ToothArc {
 ToothLoadTotals tooth_load_totals(const CouplingGeometry& coupling, const ToothLoadPattern& pattern) {
   ToothLoadTotals totals;
   if (no_tooth_carries(pattern)) return totals;
-  const ToothArc arcs[] = {ToothArc(coupling, pattern, 0.0), ToothArc(coupling, pattern, M_PI)};
+  const std::array<ToothArc, 2> arcs = ToothArc::both(coupling, pattern);
   // The largest P_d, and the first tooth j in 0 .. N - 1 of equal ones (tooth 0 when none carries).
   for (const ToothArc& arc : arcs) {
     totals.loaded_teeth += arc.loaded_teeth();

@@ -221,5 +221,39 @@ TEST(InducedMoments, ToothTotalsWithoutAPassOverTheTeethAreThePass) {
   }
 }
 
+// The same on patterns made by hand, where rounding is hardest: alpha at and beside pi / N (a tooth
+// then lies at 90 deg on a tooth count of 4k + 2), z_o / z_e about 1 (every tooth loaded, the ones
+// at 90 deg barely) and large (a few teeth), on 100 to 103 teeth.
+TEST(InducedMoments, ToothTotalsWithoutAPassHoldAtTheEdgesOfRounding) {
+  int compared = 0;
+  for (const int teeth : {100, 101, 102, 103}) {
+    CouplingDefinition definition = nrel_upwind();
+    definition.teeth = teeth;
+    definition.module_m = definition.pitch_diameter_m / teeth;
+    const CouplingGeometry coupling(definition);
+    for (const double alpha_in_half_pitches : {1.0, std::nextafter(1.0, 0.0), std::nextafter(1.0, 2.0), 1.1, 1.25}) {
+      for (const double r : {0.0, 0.5, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 2.0, 50.0, 1e6}) {
+        ToothLoadPattern p;
+        p.offset_alpha_rad = alpha_in_half_pitches * M_PI / teeth;
+        p.sin_alpha = std::sin(p.offset_alpha_rad);
+        p.cos_alpha = std::cos(p.offset_alpha_rad);
+        p.separation_ratio = r;
+        p.peak_tooth_load_n = 1e4;
+        p.total_normal_load_n = 1e4 * teeth;
+        const ToothLoadTotals fast = tooth_load_totals(coupling, p);
+        const ToothLoadTotals pass = totals_tooth_by_tooth(coupling, p);
+        const std::string at = std::to_string(teeth) + " teeth, alpha " + std::to_string(alpha_in_half_pitches) +
+                               " half pitches, r " + std::to_string(r);
+        EXPECT_EQ(fast.loaded_teeth, pass.loaded_teeth) << at;
+        EXPECT_EQ(fast.max_load_tooth, pass.max_load_tooth) << at;
+        EXPECT_EQ(fast.max_load_n, pass.max_load_n) << at;
+        EXPECT_NEAR(fast.sum_of_loads_n, pass.sum_of_loads_n, 1e-12 * p.total_normal_load_n) << at;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 160);
+}
+
 }  // namespace
 }  // namespace gc
