@@ -64,7 +64,7 @@ LoadSharing solve_load_sharing(double mean_tooth_load_n, double stiffness_n_per_
   // lies in [q_min, 1].
   double lo = load_sharing_ratio(0.0);
   double hi = 1.0;
-  // The paper starts from the aligned coupling, q = 1, and took 5-9 steps of dependent divisions
+  // The paper starts from the aligned coupling, q = 1, and took 2-9 steps of dependent divisions
   // and roots, a sixth of a load case. Started where the fixed point lies, a step or two.
   double q = std::clamp(fixed_point_guess(x_at_unit_q), lo, hi);
   double r = residual(q);
