@@ -310,12 +310,12 @@ TEST_F(Batch, MoreThanTheMaximumCaseCountIsRefusedWholeNamingTheLimit) {
 TEST(BatchDeadline, CasesLeftAtTheDeadlineAreAnsweredDeadlineExceededInPlace) {
   test::ServiceProcess service({"--deadline-s", "0.02"});
   client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(20)});
-  // 10,000 teeth (the most a coupling may have): 4,096 load cases outlast 20 ms on any machine. The
-  // load case's fast path reads no table of teeth and sums eq 9 in closed form, but eqs 42-43 still
-  // visit the quarter's int(qN/4) + 1 teeth: at the largest torque allowed, 1e12 N·m, q = 0.98
-  // and 2,451 teeth a case, each with a root. On the 2-core machine of docs/benchmarks.md the batch
-  // takes 30-55 ms and 200-1,500 cases are computed within the deadline (the request waits about
-  // 10 ms before its first case): a machine 3 times as fast still outlasts it.
+  // 10,000 teeth (the most a coupling may have): 4,096 load cases outlast 20 ms. The load case's
+  // fast path reads no table of teeth and sums eq 9 in closed form, but eqs 42-43 still visit the
+  // quarter's int(qN/4) + 1 teeth: at the largest torque allowed, 1e12 N·m (x0 about 48, q about
+  // 0.99), about 2,500 teeth a case, each with a root. On the 2-core machine of docs/benchmarks.md
+  // 200-1,500 of the cases were computed within the deadline in 8 runs (the request waits about
+  // 10 ms before its first case): a margin of a few times, not more, for a faster machine.
   protocol::BatchRequest request{BatchCalculation::kLoadCase, {test::scaled_coupling(10000)}, {}, {}};
   request.cases.assign(protocol::kMaxBatchCases, {0, {1.0e12, 0.005, 0.3, 0.1}});
   const auto start = std::chrono::steady_clock::now();
