@@ -106,15 +106,13 @@ bool no_tooth_carries(const ToothLoadPattern& pattern) { return !std::isfinite(p
 // evaluated, not N.
 class ToothArc {
  public:
-  /// The arc about the real tooth number `centre`, owning the teeth first_owned .. last_owned.
+  /// The arc about the real tooth number `centre`, owning the teeth first_owned .. last_owned,
+  /// loaded within `half_width` teeth of the centre.
   ToothArc(const CouplingGeometry& coupling, const ToothLoadPattern& pattern, double centre, long first_owned,
-           long last_owned)
+           long last_owned, double half_width)
       : coupling_(coupling), pattern_(pattern), n_(coupling.teeth()), c_(centre), first_owned_(first_owned),
-        last_owned_(last_owned), nearest_(std::clamp(std::lround(centre), first_owned, last_owned)) {
-    // Loaded where |sin theta| < 1 / sqrt(r): within asin(1 / sqrt(r)) of the centre.
-    const double r = pattern.separation_ratio;
-    half_width_ = (r > 1.0 ? std::asin(1.0 / std::sqrt(r)) : 0.5 * M_PI) * n_ / (2.0 * M_PI);
-  }
+        last_owned_(last_owned), nearest_(std::clamp(std::lround(centre), first_owned, last_owned)),
+        half_width_(half_width) {}
 
   /// The two arcs, about theta = 0 and pi, owning every tooth once: their split is found once
   /// from the first centre (the second's, computed apart, could round a tooth at 90 deg both ways).
@@ -124,7 +122,11 @@ class ToothArc {
     const double c = -pattern.offset_alpha_rad * n / (2.0 * M_PI);
     const long first = static_cast<long>(std::ceil(c - 0.25 * n));
     const long split = static_cast<long>(std::ceil(c + 0.25 * n));
-    return {ToothArc(coupling, pattern, c, first, split - 1), ToothArc(coupling, pattern, c + 0.5 * n, split, first + n - 1)};
+    // Loaded where |sin theta| < 1 / sqrt(r): within asin(1 / sqrt(r)) of either centre.
+    const double r = pattern.separation_ratio;
+    const double half_width = (r > 1.0 ? std::asin(1.0 / std::sqrt(r)) : 0.5 * M_PI) * n / (2.0 * M_PI);
+    return {ToothArc(coupling, pattern, c, first, split - 1, half_width),
+            ToothArc(coupling, pattern, c + 0.5 * n, split, first + n - 1, half_width)};
   }
 
   /// Tooth j (any whole number) as its number in 0 .. N - 1; within a turn, without a division.
@@ -164,7 +166,7 @@ class ToothArc {
   long n_;
   double c_;                   ///< the centre, in teeth
   long first_owned_, last_owned_, nearest_;
-  double half_width_ = 0.0;    ///< in teeth
+  double half_width_;          ///< in teeth
 };
 
 }  // namespace
