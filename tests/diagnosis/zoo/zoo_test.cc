@@ -214,6 +214,24 @@ TEST(NoiseZooPower, AFormulaBetterThanTheClaimedEffectIsNotCalledItsEqual) {
   EXPECT_EQ(p.json.find("cannot tell from it"), std::string::npos) << p.json.substr(0, 4000);
 }
 
+// A compliance beyond its plausible range: the mesh at 0.121 of eq 5's stiffness (rim 12.4 C, scaled
+// x1.15 to reach SNR 1.5) under AR(1) noise at phi 0.984 with jittered stamps, 2,042 rows on a
+// torque staircase (power table seed 20261237, draw 0). The fit ended on the plausible box's edge
+// (0.6), the box widened to the physical bound 0.1, and the descent from the edge stopped on the
+// staircase's first step at 0.593 (-26 % held out): a gain and offset of both channels (-33 %)
+// was named first. The widened box is scanned as the plausible one is (effect_fit.cc,
+// widen_where_on_edge): compliance first, its factor within a fifth of the truth.
+TEST(NoiseZooPower, ACompliancePastItsPlausibleRangeIsScannedWhereTheBoxWidens) {
+  const PowerDraw p = diagnosed_power_draw(20261237, 0, "compliance");
+  ASSERT_NE(p.draw.description.find("mesh at 0.121"), std::string::npos) << p.draw.description;
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
+  EXPECT_EQ(p.out.first_claim.front(), "compliance") << p.out.outcomes << ": " << p.out.numbers;
+  const std::size_t at = p.json.find("\"value\":", p.json.find("\"stiffness_factor\""));
+  ASSERT_NE(at, std::string::npos) << p.json.substr(0, 3000);
+  EXPECT_NEAR(std::strtod(p.json.c_str() + at + 8, nullptr), 0.121, 0.2 * 0.121) << p.draw.description;
+}
+
 // An ADC step of 5.2 kN·m on M_sy' (1.74 times the noise; another hand's adc_step family) under
 // slow resonant and GARCH noise, 3,265 rows at 2.98 Hz (power table seed 20261219, draw 1). Where
 // most neighbours are equal, the running median's deviations are the model's slow change, and every
