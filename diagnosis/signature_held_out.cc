@@ -1,5 +1,6 @@
 #include "diagnosis/signature_held_out.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,18 @@ Eigen::MatrixXd bin_design(const std::vector<std::vector<int>>& bins, std::size_
   return x;
 }
 
+/// The bins of the signature's systematic inputs but time, on `rows`; empty when there are none.
+std::vector<std::vector<int>> systematic_bins(std::span<const RecordedSample> observations,
+                                              std::span<const std::size_t> rows, const ResidualSignature& signature) {
+  std::vector<std::vector<int>> bins;
+  for (const InputSignature& s : signature.inputs) {
+    if (!s.systematic || s.input == "time") continue;
+    std::vector<int> b = signature_bins(observations, rows, s.input);
+    if (!b.empty() && *std::max_element(b.begin(), b.end()) > 0) bins.push_back(std::move(b));
+  }
+  return bins;
+}
+
 Eigen::MatrixXd take_rows(const Eigen::MatrixXd& m, const std::vector<std::size_t>& rows) {
   Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), m.cols());
   for (std::size_t k = 0; k < rows.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = m.row(static_cast<Eigen::Index>(rows[k]));
@@ -31,12 +44,7 @@ Eigen::MatrixXd take_rows(const Eigen::MatrixXd& m, const std::vector<std::size_
 std::optional<CandidateScore> signature_held_out(std::span<const RecordedSample> observations,
                                                  std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
                                                  const Folds& folds, const ResidualSignature& signature) {
-  std::vector<std::vector<int>> bins;
-  for (const InputSignature& s : signature.inputs) {
-    if (!s.systematic || s.input == "time") continue;
-    std::vector<int> b = signature_bins(observations, rows, s.input);
-    if (!b.empty() && *std::max_element(b.begin(), b.end()) > 0) bins.push_back(std::move(b));
-  }
+  const std::vector<std::vector<int>> bins = systematic_bins(observations, rows, signature);
   if (bins.empty()) return std::nullopt;
   const Eigen::MatrixXd x = bin_design(bins, rows.size());
   const Eigen::MatrixXd y = base;
@@ -56,6 +64,22 @@ std::optional<CandidateScore> signature_held_out(std::span<const RecordedSample>
   }
   score_held_out(score, base, folds);
   return score;
+}
+
+std::optional<SurrogateDesign> signature_design(std::span<const RecordedSample> observations,
+                                               std::span<const std::size_t> rows, const ResidualSignature& signature) {
+  const std::vector<std::vector<int>> bins = systematic_bins(observations, rows, signature);
+  if (bins.empty()) return std::nullopt;
+  const Eigen::MatrixXd x = bin_design(bins, rows.size());
+  const Eigen::Index n = x.rows(), p = x.cols();
+  // Each channel its own levels: the stacked rows (M_sy' then M_sz') against a block diagonal.
+  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(2 * n, 2 * p);
+  columns.topLeftCorner(n, p) = x;
+  columns.bottomRightCorner(n, p) = x;
+  // Judged on what it explains about the levels only, against noise with the residual's own
+  // spectrum: its bins follow the programme, so a level test against what they leave, or a null
+  // drawn from it, would take a walk they follow for structure.
+  return SurrogateDesign{std::move(columns), 0, false, {}, true};
 }
 
 }  // namespace gc

@@ -13,6 +13,7 @@
 #include "diagnosis/candidate_score.h"
 #include "diagnosis/cross_validation_folds.h"
 #include "diagnosis/residual_signature.h"
+#include "diagnosis/surrogate_test.h"
 #include "core/recorded_sample.h"
 
 namespace gc {
@@ -25,5 +26,11 @@ namespace gc {
 std::optional<CandidateScore> signature_held_out(std::span<const RecordedSample> observations,
                                                  std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
                                                  const Folds& folds, const ResidualSignature& signature);
+
+/// The same additive model as a design for the surrogate test (surrogate_test.h), both channels
+/// stacked with their own bin levels: an "unexplained" verdict pays the third test of the claim
+/// rule as an effect does. nullopt when no such input is systematic.
+std::optional<SurrogateDesign> signature_design(std::span<const RecordedSample> observations,
+                                               std::span<const std::size_t> rows, const ResidualSignature& signature);
 
 }  // namespace gc

@@ -487,9 +487,12 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       // that the design spans (its leverage there): the surrogates give it back, or a slow design
       // fitted to a slow noise would leave a null with less of the slow power than it took (ter
       // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
-      SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, designs[d].choose > 0), {}};
-      for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
-      SurrogateSource surrogates(left, seed + d, shape);
+      SurrogateSpectrum shape;
+      if (!designs[d].null_of_the_residual) {
+        shape.rise_variance = rise_of_the_noise(residual, left, span, designs[d].choose > 0);
+        for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
+      }
+      SurrogateSource surrogates(designs[d].null_of_the_residual ? residual : left, seed + d, shape);
       int as_well = 0, drawn = 0;
       double sum = 0.0, sum_of_squares = 0.0;
       std::optional<double> beyond_doubt;

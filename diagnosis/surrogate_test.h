@@ -100,6 +100,11 @@ struct SurrogateDesign {
   /// direction, a delay) was searched over its box on this residual; a null that looks only where
   /// the search ended is not searched as the residual was (Davies, Biometrika 74, 1987).
   std::vector<Eigen::MatrixXd> elsewhere;
+  /// The null drawn from the residual itself, its spectrum as it is, not from what the design
+  /// leaves: for a design of many columns along the programme (the signature's bins), which can
+  /// take nearly all of a random walk's slow power, so that what it leaves has too little of it to
+  /// give back (SurrogateSpectrum::kMostRestored).
+  bool null_of_the_residual = false;
 };
 
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
