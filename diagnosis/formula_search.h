@@ -60,7 +60,8 @@ struct FormulaSettings {
 
 /// The time_cycle, step and ringing terms of `residual` on `rows` (in time order): the dominant cycle
 /// (cycle_period.h), change in mean (change_point.h) and mode of the rig (ringing_estimate.h), each
-/// where it stands out of the noise. The ringing's grid is shared over `parallel`.
+/// where it stands out of the noise. The three run side by side on `parallel`, which also shares
+/// the ringing's grid.
 std::vector<std::string> time_terms_for(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                         const Eigen::MatrixX2d& residual, const ParallelFor& parallel = serial_for());
 

@@ -1,6 +1,7 @@
 #include "diagnosis/model_jumps.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -73,9 +74,14 @@ std::optional<DataQualityFinding> rows_at_model_jumps(const CouplingModel& model
                                                       const std::vector<std::size_t>& rows, double moment_sigma_nm,
                                                       const ParallelFor& parallel) {
   const std::vector<std::size_t> tested = evenly_spaced(rows, kJumpTestedRows);
-  const double torque_sigma = noise_at(observations, rows, tested, [](const MeasurementSample& s) { return s.torque_nm; });
-  const double zeta_sigma =
-      noise_at(observations, rows, tested, [](const MeasurementSample& s) { return s.misalignment_rad; });
+  // The two inputs' noises side by side: their running medians were a serial stretch of a diagnosis.
+  constexpr std::array<double (*)(const MeasurementSample&), 2> kInputs{
+      [](const MeasurementSample& s) { return s.torque_nm; }, [](const MeasurementSample& s) { return s.misalignment_rad; }};
+  std::array<double, 2> sigma{};
+  parallel(kInputs.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) sigma[k] = noise_at(observations, rows, tested, kInputs[k]);
+  });
+  const double torque_sigma = sigma[0], zeta_sigma = sigma[1];
   if (!(moment_sigma_nm > 0.0) || (torque_sigma <= 0.0 && zeta_sigma <= 0.0)) return std::nullopt;
   std::vector<char> jumps(tested.size(), 0);
   const double least = kJumpShareOfNoise * moment_sigma_nm;

@@ -435,6 +435,19 @@ double tail_bound(double observed, double mean, double variance) {
 /// The level test's blocks: 21 contiguous ones, 20 degrees of freedom.
 constexpr Eigen::Index kLevelBlocks = 21;
 
+namespace {
+
+/// The spectrum a null drawn from what `design` leaves is given: the rise it leaves given back, and
+/// the share of each frequency its columns (`span`, orthonormal) took.
+SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left, const Eigen::MatrixXd& span,
+                             const SurrogateDesign& design) {
+  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose > 0), {}};
+  for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
+  return shape;
+}
+
+}  // namespace
+
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander) {
   double p = 1.0;
   for (int c = 0; c < 2; ++c) {
@@ -487,15 +500,12 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       // that the design spans (its leverage there): the surrogates give it back, or a slow design
       // fitted to a slow noise would leave a null with less of the slow power than it took (ter
       // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
-      SurrogateSpectrum shape;
-      if (!designs[d].null_of_the_residual) {
-        shape.rise_variance = rise_of_the_noise(residual, left, span, designs[d].choose > 0);
-        for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
-      }
-      SurrogateSource surrogates(designs[d].null_of_the_residual ? residual : left, seed + d, shape);
+      const bool of_the_residual = designs[d].null_of_the_residual;
+      const SurrogateSpectrum shape = of_the_residual ? SurrogateSpectrum{} : left_shape(residual, left, span, designs[d]);
+      SurrogateSource surrogates(of_the_residual ? residual : left, seed + d, shape);
       int as_well = 0, drawn = 0;
       double sum = 0.0, sum_of_squares = 0.0;
-      std::optional<double> beyond_doubt;
+      double beyond_doubt = -1.0;  // the tail's bound once it settles the test; negative before
       // A few surrogates drawn in order, their shares found side by side, then taken in order as
       // one at a time would take them: a stop leaves the rest of the batch unused.
       std::vector<Eigen::VectorXd> batch;
@@ -518,15 +528,15 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
             stopped = true;
           } else if (drawn == kBeforeTail && as_well == 0) {
             beyond_doubt = tail_bound(observed, sum / drawn, sum_of_squares / drawn - std::pow(sum / drawn, 2));
-            if (*beyond_doubt <= level / (4.0 * family)) {
+            if (beyond_doubt <= level / (4.0 * family)) {
               stopped = true;
             } else {
-              beyond_doubt.reset();
+              beyond_doubt = -1.0;
             }
           }
         }
       }
-      p = as_well >= enough ? 1.0 : beyond_doubt.value_or((1.0 + as_well) / (1.0 + static_cast<double>(drawn)));
+      p = as_well >= enough ? 1.0 : beyond_doubt >= 0.0 ? beyond_doubt : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
     }
     // A level the design moves, against the wander of what it leaves (its levels taken out with it).
     if (designs[d].level) p = std::min(p, level_p_value(residual, left));
