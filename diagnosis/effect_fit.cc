@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/parameter_box.h"
@@ -94,7 +95,11 @@ Eigen::VectorXd near_neutral(const EffectInfo& info, const Eigen::VectorXd& x, c
 /// wide: eight probes and a descent stop on a step beside it (a misalignment scale of -0.24 fitted
 /// as -0.17, and a gain and offset of both channels took the claim). The grid's step is a hundredth
 /// of the box; a quarter of the rows place the valley as the whole would, at a quarter of the cost.
-std::optional<Eigen::VectorXd> scanned_start(const EffectProblem& problem, const FitSettings& settings, int& evaluations) {
+/// `scanned`: an interval of the unit box already scanned, whose points are skipped; `than`: a
+/// point the grid's best must cost less than, on the same rows, to be returned.
+std::optional<Eigen::VectorXd> scanned_start(const EffectProblem& problem, const FitSettings& settings, int& evaluations,
+                                             std::pair<double, double> scanned = {1.0, 0.0},
+                                             const Eigen::VectorXd* than = nullptr) {
   if (settings.scan_points < 2 || std::count(problem.free.begin(), problem.free.end(), true) != 1) return std::nullopt;
   const auto i = static_cast<Eigen::Index>(std::find(problem.free.begin(), problem.free.end(), true) - problem.free.begin());
   if (problem.box.info().parameters[static_cast<std::size_t>(i)].period > 0.0) return std::nullopt;
@@ -107,9 +112,15 @@ std::optional<Eigen::VectorXd> scanned_start(const EffectProblem& problem, const
   for (int g = 0; g < settings.scan_points; ++g) {
     Eigen::VectorXd x = problem.full;
     x(i) = static_cast<double>(g) / static_cast<double>(settings.scan_points - 1);
+    if (x(i) >= scanned.first && x(i) <= scanned.second) continue;
     ++evaluations;
     const std::optional<Eigen::VectorXd> r = sparse.residual(x);
     if (r && (!best || r->squaredNorm() < best_cost)) { best_cost = r->squaredNorm(); best = x; }
+  }
+  if (best && than) {
+    ++evaluations;
+    const std::optional<Eigen::VectorXd> r = sparse.residual(*than);
+    if (r && r->squaredNorm() <= best_cost) return std::nullopt;
   }
   return best;
 }
@@ -300,9 +311,18 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
       return;
     }
     evaluations += best->evaluations;
-    if (const std::optional<Eigen::VectorXd> scanned = scanned_start(problem, settings, evaluations)) {
+    // The grid over what the widening added (the plausible box was scanned), descended from only
+    // where it beats the descent from the edge.
+    std::pair<double, double> scanned{1.0, 0.0};
+    for (int i = 0; i < box.size(); ++i) {
+      if (!problem.free[static_cast<std::size_t>(i)]) continue;
+      const double a = box.to_unit(i, narrower.lower(i)), b = box.to_unit(i, narrower.upper(i));
+      scanned = {std::min(a, b), std::max(a, b)};
+    }
+    const Eigen::VectorXd from_edge = problem.expand(best->x);
+    if (const std::optional<Eigen::VectorXd> scanned_best = scanned_start(problem, settings, evaluations, scanned, &from_edge)) {
       try {
-        LeastSquaresResult from_grid = problem.solve_and_polish(*scanned, options);
+        LeastSquaresResult from_grid = problem.solve_and_polish(*scanned_best, options);
         evaluations += from_grid.evaluations;
         if (from_grid.cost < best->cost) best = std::move(from_grid);
       } catch (const std::invalid_argument&) {  // the grid's best cannot be evaluated on all rows
