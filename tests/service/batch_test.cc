@@ -308,36 +308,42 @@ TEST_F(Batch, MoreThanTheMaximumCaseCountIsRefusedWholeNamingTheLimit) {
 // (10,000 teeth) on an instance with a 20 ms deadline keeps the cases computed in time and answers
 // the rest with STATUS_DEADLINE_EXCEEDED in place, within about the deadline.
 TEST(BatchDeadline, CasesLeftAtTheDeadlineAreAnsweredDeadlineExceededInPlace) {
-  test::ServiceProcess service({"--deadline-s", "0.02"});
-  client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(20)});
   // 10,000 teeth (the most a coupling may have): 4,096 load cases outlast 20 ms. The load case's
   // fast path reads no table of teeth and sums eq 9 in closed form, but eqs 42-43 still visit the
   // quarter's int(qN/4) + 1 teeth: at the largest torque allowed, 1e12 N·m (x0 about 48, q about
   // 0.99), about 2,500 teeth a case, each with a root. On the 2-core machine of docs/benchmarks.md
-  // 200-1,500 of the cases were computed within the deadline in 8 runs (the request waits about
-  // 10 ms before its first case): a margin of a few times, not more, for a faster machine.
+  // 200-1,500 of the cases were computed within 20 ms in 8 runs (the request waits about 10 ms
+  // before its first case): a margin of a few times. A machine that computes them all within
+  // 20 ms is asked again with a deadline ten times shorter.
   protocol::BatchRequest request{BatchCalculation::kLoadCase, {test::scaled_coupling(10000)}, {}, {}};
   request.cases.assign(protocol::kMaxBatchCases, {0, {1.0e12, 0.005, 0.3, 0.1}});
-  const auto start = std::chrono::steady_clock::now();
-  const protocol::BatchResult result = client.call<Calculation::kBatch>(request);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ASSERT_EQ(result.cases.size(), protocol::kMaxBatchCases);
-  std::size_t ok = 0;
-  bool stopped = false;
-  for (const BatchCaseReply& c : result.cases) {
-    if (c.status == protocol::kCaseOk) {
-      ASSERT_FALSE(stopped) << "a case after the deadline was computed";
-      ++ok;
-      continue;
+  for (const std::string deadline : {"0.02", "0.002"}) {
+    test::ServiceProcess service({"--deadline-s", deadline});
+    client::Client client({.domain = test::test_domain(), .timeout = std::chrono::seconds(20)});
+    const auto start = std::chrono::steady_clock::now();
+    const protocol::BatchResult result = client.call<Calculation::kBatch>(request);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(result.cases.size(), protocol::kMaxBatchCases);
+    std::size_t ok = 0;
+    bool stopped = false;
+    for (const BatchCaseReply& c : result.cases) {
+      if (c.status == protocol::kCaseOk) {
+        ASSERT_FALSE(stopped) << "a case after the deadline was computed";
+        ++ok;
+        continue;
+      }
+      stopped = true;
+      ASSERT_EQ(c.status, gearcoupling_STATUS_DEADLINE_EXCEEDED) << c.message;
+      EXPECT_NE(c.message.find("deadline of " + deadline + " s"), std::string::npos) << c.message;
     }
-    stopped = true;
-    ASSERT_EQ(c.status, gearcoupling_STATUS_DEADLINE_EXCEEDED) << c.message;
-    EXPECT_NE(c.message.find("deadline of 0.02 s"), std::string::npos) << c.message;
+    RecordProperty("cases_computed_in_time_at_" + deadline + "_s", static_cast<int>(ok));
+    EXPECT_LT(seconds, 5.0);  // the deadline, the reply and discovery; not 4096 costly cases
+    if (stopped || deadline == "0.002") {
+      EXPECT_TRUE(stopped);
+      EXPECT_LT(ok, protocol::kMaxBatchCases);
+      return;
+    }
   }
-  RecordProperty("cases_computed_in_time", static_cast<int>(ok));
-  EXPECT_TRUE(stopped);
-  EXPECT_LT(ok, protocol::kMaxBatchCases);
-  EXPECT_LT(seconds, 5.0);  // the deadline, the reply and discovery; not 4096 costly cases
 }
 
 }  // namespace
