@@ -202,10 +202,11 @@ std::string round_verdict_body(int number, const DiagnosisRound& round) {
     }
     case RoundOutcome::partly_explained: {
       const CandidateScore& c = round.ranking.front();
+      const std::string rival = rival_formula_text(round);  // a formula that does as well or better, if any
       return head + (c.kind == CandidateKind::refinement ? "refining " : "") + c.info->name + " partly explains the residual in " +
              channels(round.channel_reduction) + " (" + c.info->physics + "): " + fitted_parameters_text(*round.claimed) + "; " +
-             gain_text(round, c) + ". Only partly: " + round.partly_reason + "; no formula did better. The search continues "
-             "with it." + rival_formula_text(round) + dropped_text(round);
+             gain_text(round, c) + ". Only partly: " + round.partly_reason + (rival.empty() ? "; no formula did better" : "") +
+             ". The search continues with it." + rival + dropped_text(round);
     }
     case RoundOutcome::formula_proposed: {
       const CandidateScore& c = *round.formula;
