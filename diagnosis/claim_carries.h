@@ -23,8 +23,8 @@ bool formula_carries(const CandidateScore& formula, std::span<const RecordedSamp
                      std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths);
 
 /// The claim rule's second test on the effect that would be claimed: one that does not carry to
-/// whole fifths is marked failed and goes last, and the next claimable one is tried (three at most,
-/// each test costs a fit).
+/// whole fifths is marked failed and goes last, and the next claimable one is tried, until one
+/// carries or none is claimable (each test costs a fit; only where the best do not carry).
 void demote_what_does_not_carry(std::vector<CandidateScore>& ranking, const CouplingModel& model,
                                 std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
                                 const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,

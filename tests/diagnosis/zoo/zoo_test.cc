@@ -147,14 +147,17 @@ TEST(NoiseZoo, NoisyInputSensorsAloneAreNoLagAndNoPhysics) {
 // walk, and carried to whole fifths): seed 20261236 draw 191 (109,671 rows, the noise read as 33 N·m
 // under a 4.8 kN·m walk), seed 20261238 draws 63 (3,731 rows in 6 s) and 370 (with a torque
 // transducer's noise and jittered stamps): the signature pays the surrogate test as an effect does
-// (signature_held_out.h, signature_design).
+// (signature_held_out.h, signature_design); seed 20261243 draw 35, a zero wandering over 20 s of
+// 108 s, where a compliance fitted past its plausible box, a gain and offset and a torque
+// calibration did not carry to whole fifths, and the fourth claimable, a refined friction taking
+// 4 %, went untested (three at most were tried): every claimable one is (claim_carries.h).
 // The rate is docs/benchmarks.md's; these keep the mechanisms fixed.
 TEST(NoiseZoo, DrawsThatFreshMeasurementsClaimedOrFailedOnAreNoise) {
   std::size_t claims = 0, errors = 0;
   std::string report;
   for (const auto& [master, k] : {std::pair<std::uint64_t, std::size_t>{20261211, 74}, {20261211, 161}, {20261220, 143},
                                   {20261225, 108}, {20261225, 425}, {20261225, 362}, {20261227, 71},
-                                  {20261236, 191}, {20261238, 63}, {20261238, 370}}) {
+                                  {20261236, 191}, {20261238, 63}, {20261238, 370}, {20261243, 35}}) {
     const ZooRun run = run_zoo(master, 1, DrawLimits{}, k);
     claims += run.claims;
     errors += run.errors;
