@@ -311,7 +311,8 @@ void scan_beyond_plausible(EffectProblem& problem, std::optional<LeastSquaresRes
   problem.full = wide.to_unit(ordered);
   const Eigen::VectorXd fitted = problem.full;
   const double a = wide.to_unit(i, narrower.lower(i)), b = wide.to_unit(i, narrower.upper(i));
-  if (const std::optional<Eigen::VectorXd> outside = scanned_start(problem, settings, evaluations, {std::min(a, b), std::max(a, b)}, &fitted)) {
+  const std::pair<double, double> scanned{std::min(a, b), std::max(a, b)};  // the plausible box, scanned before
+  if (const std::optional<Eigen::VectorXd> outside = scanned_start(problem, settings, evaluations, scanned, &fitted)) {
     try {
       LeastSquaresResult from_grid = problem.solve_and_polish(*outside, settings.least_squares);
       evaluations += from_grid.evaluations;

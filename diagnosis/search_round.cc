@@ -214,8 +214,8 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   if (formula_ok && effect_ok) {
     const CandidateScore& effect = round.ranking.front();
     round.formula_chosen = formula_over_effect();
-    if (round.formula_chosen && effect_explains_part(effect, *round.formula, base, observations, search,
-                                                                            folds, formula_settings(round, settings))) {
+    if (round.formula_chosen && effect_explains_part(effect, *round.formula, base, observations, search, folds,
+                                                     formula_settings(round, settings))) {
       round.formula_chosen = false;
     }
   } else {

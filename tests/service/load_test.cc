@@ -114,7 +114,7 @@ TEST(Service, AClientKeepsAtMost256RequestsInFlight) {
   test::ServiceProcess service;
   client::Client client({test::test_domain(), std::chrono::seconds(30)});
   ASSERT_TRUE(client.wait_for_service(Calculation::kJamAngle, std::chrono::seconds(20)));
-  service.signal(SIGSTOP);
+  ASSERT_TRUE(service.signal(SIGSTOP));
   std::vector<std::future<protocol::JamAngleResult>> futures(kRequests);
   std::thread caller([&] {
     for (auto& future : futures) {

@@ -98,10 +98,31 @@ ChildProcess::~ChildProcess() {
   if (running()) signal(SIGKILL);
 }
 
-void ChildProcess::signal(int signal) {
-  if (reaped_) return;
+bool ChildProcess::signal(int signal) {
+  if (reaped_) return false;
   kill(pid_, signal);
   if (signal == SIGKILL) wait_exit(10.0);
+  return signal == SIGSTOP ? wait_stopped(10.0) : true;
+}
+
+// kill() returns once one thread is chosen to take SIGSTOP; the others stop only when it runs. On a
+// busy host it may wait for a core while the DDS threads answer on: a client counted 273-304
+// requests written against the service "stopped", where at most 256 may be in flight. The parent
+// hears of the stop (WUNTRACED) when the whole group has stopped.
+bool ChildProcess::wait_stopped(double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (!reaped_ && std::chrono::steady_clock::now() < deadline) {
+    int status = 0;
+    const pid_t r = waitpid(pid_, &status, WNOHANG | WUNTRACED);
+    if (r == pid_ && WIFSTOPPED(status)) return true;
+    if (r == pid_) {  // it ended instead
+      status_ = status;
+      reaped_ = true;
+    }
+    if (r < 0) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
 }
 
 bool ChildProcess::running() {

@@ -44,8 +44,9 @@ class ChildProcess {
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
 
-  /// Sends `signal`; for SIGKILL also waits for the process.
-  void signal(int signal);
+  /// Sends `signal`; for SIGKILL also waits for the process, for SIGSTOP until it has stopped
+  /// (false if it did not within 10 s).
+  bool signal(int signal);
   /// Waits (at most `timeout_s`) for the process to exit; its exit status, or -1 on timeout
   /// (then it is SIGKILLed).
   int wait_exit(double timeout_s);
@@ -54,6 +55,9 @@ class ChildProcess {
   pid_t pid() const { return pid_; }
 
  private:
+  /// Waits (at most `timeout_s`) until every thread of the process has stopped; whether it has.
+  bool wait_stopped(double timeout_s);
+
   pid_t pid_ = -1;
   bool reaped_ = false;
   int status_ = 0;

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -192,6 +193,23 @@ PowerDraw diagnosed_power_draw(std::uint64_t seed, std::size_t k, const std::str
   return p;
 }
 
+/// Whether the draw's diagnosis named `name` first, with what it did otherwise.
+::testing::AssertionResult named_first(const PowerDraw& p, const std::string& name) {
+  if (p.out.error) return ::testing::AssertionFailure() << p.out.stderr_tail;
+  if (p.out.first_claim.empty()) return ::testing::AssertionFailure() << p.out.outcomes << "\n" << p.draw.description;
+  if (p.out.first_claim.front() != name) {
+    return ::testing::AssertionFailure() << p.out.first_claim.front() << " first: " << p.out.outcomes << ": " << p.out.numbers;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+/// The value diagnose --json gives `parameter` where it first names it; NaN when it does not.
+double first_value_of(const std::string& json, const std::string& parameter) {
+  const std::size_t name = json.find("\"" + parameter + "\"");
+  const std::size_t at = name == std::string::npos ? name : json.find("\"value\":", name);
+  return at == std::string::npos ? std::nan("") : std::strtod(json.c_str() + at + 8, nullptr);
+}
+
 // Power: a misalignment scale of -0.24 (the hidden effect written from the physics in
 // hidden_effects.cc) under slow heteroscedastic noise at SNR 1.5, on a torque staircase of 3,252
 // rows (power table seed 20261214, draw 1). The cost in the scale is a staircase with a narrow
@@ -233,12 +251,8 @@ TEST(NoiseZooPower, AFormulaBetterThanTheClaimedEffectIsNotCalledItsEqual) {
 TEST(NoiseZooPower, ACompliancePastItsPlausibleRangeIsScannedWhereTheBoxWidens) {
   const PowerDraw p = diagnosed_power_draw(20261237, 0, "compliance");
   ASSERT_NE(p.draw.description.find("mesh at 0.121"), std::string::npos) << p.draw.description;
-  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
-  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
-  EXPECT_EQ(p.out.first_claim.front(), "compliance") << p.out.outcomes << ": " << p.out.numbers;
-  const std::size_t at = p.json.find("\"value\":", p.json.find("\"stiffness_factor\""));
-  ASSERT_NE(at, std::string::npos) << p.json.substr(0, 3000);
-  EXPECT_NEAR(std::strtod(p.json.c_str() + at + 8, nullptr), 0.121, 0.2 * 0.121) << p.draw.description;
+  EXPECT_TRUE(named_first(p, "compliance"));
+  EXPECT_NEAR(first_value_of(p.json, "stiffness_factor"), 0.121, 0.2 * 0.121) << p.json.substr(0, 3000);
 }
 
 // An ADC step of 5.2 kN·m on M_sy' (1.74 times the noise; another hand's adc_step family) under
@@ -271,15 +285,11 @@ TEST(NoiseZooPower, AnAdcStepIsNotTakenForSpikesAndTheOffsetBesideItIsFound) {
 // is the generator's within 10 %.
 TEST(NoiseZooPower, TheSawtoothsChangeScaledIsNamedWithItsShare) {
   const PowerDraw p = diagnosed_power_draw(20261219, 2, "continuous_quarter_sums");
-  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
-  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
-  EXPECT_EQ(p.out.first_claim.front(), "continuous_quarter_sums") << p.out.outcomes << ": " << p.out.numbers;
-  const std::size_t at = p.json.find("\"value\":", p.json.find("\"smoothed_share\""));
-  ASSERT_NE(at, std::string::npos) << p.json.substr(0, 3000);
+  EXPECT_TRUE(named_first(p, "continuous_quarter_sums"));
   const std::size_t lambda_at = p.draw.description.find("lambda ");
   ASSERT_NE(lambda_at, std::string::npos) << p.draw.description;
   const double lambda = std::strtod(p.draw.description.c_str() + lambda_at + 7, nullptr);  // 2.25
-  EXPECT_NEAR(std::strtod(p.json.c_str() + at + 8, nullptr), lambda, 0.1 * lambda) << p.draw.description;
+  EXPECT_NEAR(first_value_of(p.json, "smoothed_share"), lambda, 0.1 * lambda) << p.json.substr(0, 3000);
 }
 
 // A thermal growth of -248 urad/degC from 26.1 degC (just past the plausible 200) under resonant
@@ -291,12 +301,8 @@ TEST(NoiseZooPower, TheSawtoothsChangeScaledIsNamedWithItsShare) {
 TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
   const PowerDraw p = diagnosed_power_draw(20261241, 2, "thermal_misalignment");
   ASSERT_NE(p.draw.description.find("growth -0.000248"), std::string::npos) << p.draw.description;
-  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
-  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
-  EXPECT_EQ(p.out.first_claim.front(), "thermal_misalignment") << p.out.outcomes << ": " << p.out.numbers;
-  const std::size_t at = p.json.find("\"value\":", p.json.find("\"growth_rad_per_c\""));
-  ASSERT_NE(at, std::string::npos) << p.json.substr(0, 3000);
-  EXPECT_LT(std::strtod(p.json.c_str() + at + 8, nullptr), -150e-6) << p.draw.description;
+  EXPECT_TRUE(named_first(p, "thermal_misalignment"));
+  EXPECT_LT(first_value_of(p.json, "growth_rad_per_c"), -150e-6) << p.json.substr(0, 3000);
 }
 
 // A spacing error at the library's physical bound, 100 um, scaled x1.40 to reach SNR 1.5, on the
@@ -308,9 +314,7 @@ TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
 TEST(NoiseZooPower, ASpacingErrorAtItsBoundIsNamedAsPartlyExplaining) {
   const PowerDraw p = diagnosed_power_draw(20261241, 2, "spacing_errors");
   ASSERT_NE(p.draw.description.find("spacing error 100 um"), std::string::npos) << p.draw.description;
-  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
-  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
-  EXPECT_EQ(p.out.first_claim.front(), "spacing_errors") << p.out.outcomes << ": " << p.out.numbers;
+  EXPECT_TRUE(named_first(p, "spacing_errors"));
   EXPECT_NE(p.out.outcomes.find("partly_explained"), std::string::npos) << p.out.outcomes;
   EXPECT_NE(p.json.find("A formula of physical terms does better on held-out data"), std::string::npos)
       << p.json.substr(0, 4000);
