@@ -291,6 +291,39 @@ void descend_with_coarser_derivative(const EffectProblem& problem, std::optional
   if (again.cost < best->cost) best = std::move(again);
 }
 
+/// `problem` in `box`: the same values, in its unit coordinates.
+void move_to(EffectProblem& problem, const ParameterBox& box) {
+  const ParameterValues values = problem.box.to_values(problem.full);
+  std::vector<double> ordered;
+  for (const ParameterSpec& spec : box.info().parameters) ordered.push_back(values.at(spec.name));
+  problem.box = box;
+  problem.full = box.to_unit(ordered);
+}
+
+/// Where `narrower`'s range of parameter `i` lies in `wide`'s unit coordinates.
+std::pair<double, double> unit_range_of(const ParameterBox& narrower, const ParameterBox& wide, int i) {
+  const double a = wide.to_unit(i, narrower.lower(i)), b = wide.to_unit(i, narrower.upper(i));
+  return {std::min(a, b), std::max(a, b)};
+}
+
+/// A lone parameter's grid outside `scanned` (scanned_start), descended from only where it beats
+/// `than` on the same rows; `best` takes the descent where it costs less, and then true.
+bool descend_from_the_grid(const EffectProblem& problem, const FitSettings& settings, int& evaluations,
+                           std::pair<double, double> scanned, const Eigen::VectorXd& than,
+                           std::optional<LeastSquaresResult>& best) {
+  const std::optional<Eigen::VectorXd> grid_best = scanned_start(problem, settings, evaluations, scanned, &than);
+  if (!grid_best) return false;
+  try {
+    LeastSquaresResult from_grid = problem.solve_and_polish(*grid_best, settings.least_squares);
+    evaluations += from_grid.evaluations;
+    if (!(from_grid.cost < best->cost)) return false;
+    best = std::move(from_grid);
+    return true;
+  } catch (const std::invalid_argument&) {  // the grid's best cannot be evaluated on all rows
+    return false;
+  }
+}
+
 /// A lone parameter whose fit ends inside the plausible box is also scanned beyond it, to the
 /// physical bounds, and descended from there only where the grid beats the fit on the same rows: a
 /// staircase cost can hold a valley inside the box while the truth lies past it (a spacing error of
@@ -304,25 +337,12 @@ void scan_beyond_plausible(EffectProblem& problem, std::optional<LeastSquaresRes
   const ParameterBox wide = narrower.widened(i, 0.0).widened(i, 1.0);
   if (wide.lower(i) == narrower.lower(i) && wide.upper(i) == narrower.upper(i)) return;
   const Eigen::VectorXd there = problem.full;
-  const ParameterValues values = narrower.to_values(there);
-  std::vector<double> ordered;
-  for (const ParameterSpec& spec : wide.info().parameters) ordered.push_back(values.at(spec.name));
-  problem.box = wide;
-  problem.full = wide.to_unit(ordered);
+  move_to(problem, wide);
   const Eigen::VectorXd fitted = problem.full;
-  const double a = wide.to_unit(i, narrower.lower(i)), b = wide.to_unit(i, narrower.upper(i));
-  const std::pair<double, double> scanned{std::min(a, b), std::max(a, b)};  // the plausible box, scanned before
-  if (const std::optional<Eigen::VectorXd> outside = scanned_start(problem, settings, evaluations, scanned, &fitted)) {
-    try {
-      LeastSquaresResult from_grid = problem.solve_and_polish(*outside, settings.least_squares);
-      evaluations += from_grid.evaluations;
-      if (from_grid.cost < best->cost) {
-        best = std::move(from_grid);
-        problem.full = problem.expand(best->x);
-        return;
-      }
-    } catch (const std::invalid_argument&) {  // the grid's best cannot be evaluated on all rows
-    }
+  // The plausible box was scanned before (best_starts).
+  if (descend_from_the_grid(problem, settings, evaluations, unit_range_of(narrower, wide, i), fitted, best)) {
+    problem.full = problem.expand(best->x);
+    return;
   }
   problem.box = narrower;
   problem.full = there;
@@ -336,7 +356,6 @@ void scan_beyond_plausible(EffectProblem& problem, std::optional<LeastSquaresRes
 /// as 0.59, just past the plausible 0.6, and a gain and offset of both channels took the claim).
 void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResult>& best, int& evaluations,
                          const FitSettings& settings) {
-  const LeastSquaresOptions& options = settings.least_squares;
   for (int pass = 0; pass < 2; ++pass) {
     ParameterBox box = problem.box;
     bool widened = false;
@@ -351,15 +370,11 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
       if (pass == 0) scan_beyond_plausible(problem, best, evaluations, settings);
       return;
     }
-    const ParameterValues values = problem.box.to_values(problem.full);
-    std::vector<double> ordered;
-    for (const ParameterSpec& spec : box.info().parameters) ordered.push_back(values.at(spec.name));
     const ParameterBox narrower = problem.box;
     const Eigen::VectorXd there = problem.full;
-    problem.box = box;
-    problem.full = box.to_unit(ordered);
+    move_to(problem, box);
     try {
-      best = problem.solve_and_polish(problem.full, options);
+      best = problem.solve_and_polish(problem.full, settings.least_squares);
     } catch (const std::invalid_argument&) {  // the point cannot be evaluated in the wider box
       problem.box = narrower;
       problem.full = there;
@@ -367,22 +382,12 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
     }
     evaluations += best->evaluations;
     // The grid over what the widening added (the plausible box was scanned), descended from only
-    // where it beats the descent from the edge.
+    // where it beats the descent from the edge (a lone parameter only: scanned_start).
     std::pair<double, double> scanned{1.0, 0.0};
     for (int i = 0; i < box.size(); ++i) {
-      if (!problem.free[static_cast<std::size_t>(i)]) continue;
-      const double a = box.to_unit(i, narrower.lower(i)), b = box.to_unit(i, narrower.upper(i));
-      scanned = {std::min(a, b), std::max(a, b)};
+      if (problem.free[static_cast<std::size_t>(i)]) scanned = unit_range_of(narrower, box, i);
     }
-    const Eigen::VectorXd from_edge = problem.expand(best->x);
-    if (const std::optional<Eigen::VectorXd> scanned_best = scanned_start(problem, settings, evaluations, scanned, &from_edge)) {
-      try {
-        LeastSquaresResult from_grid = problem.solve_and_polish(*scanned_best, options);
-        evaluations += from_grid.evaluations;
-        if (from_grid.cost < best->cost) best = std::move(from_grid);
-      } catch (const std::invalid_argument&) {  // the grid's best cannot be evaluated on all rows
-      }
-    }
+    descend_from_the_grid(problem, settings, evaluations, scanned, problem.expand(best->x), best);
     problem.full = problem.expand(best->x);
   }
 }
