@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <future>
 #include <limits>
 #include <optional>
 #include <span>
@@ -172,6 +173,41 @@ class RecordingWindow {
   bool from_start_ = true;          // samples_ begins with the recording's first row
 };
 
+// The reader's next chunk, read on a thread of its own while the caller validates the current one
+// (with more than one thread). Reading (the lines split, time and derived inputs in row order)
+// ran on the calling thread alone between chunks: with 2 threads, the calling thread did two
+// thirds of validate's work and the others waited.
+class ChunkAhead {
+ public:
+  ChunkAhead(RecordingReader& reader, std::size_t chunk_samples, bool ahead)
+      : reader_(reader), chunk_samples_(chunk_samples), ahead_(ahead) {
+    if (ahead_) start();
+  }
+  ChunkAhead(const ChunkAhead&) = delete;
+  ChunkAhead& operator=(const ChunkAhead&) = delete;
+
+  /// Makes the next chunk current() and starts reading the one after; as next_chunk().
+  bool next() {
+    if (!ahead_) return reader_.next_chunk(current_, chunk_samples_);
+    const bool more = reading_.get();  // rethrows the reader's InvalidInput
+    current_.swap(read_);
+    if (more) start();
+    return more;
+  }
+  const std::vector<RecordedSample>& current() const { return current_; }
+
+ private:
+  void start() {
+    reading_ = std::async(std::launch::async, [this] { return reader_.next_chunk(read_, chunk_samples_); });
+  }
+
+  RecordingReader& reader_;
+  std::size_t chunk_samples_;
+  bool ahead_;
+  std::vector<RecordedSample> current_, read_;
+  std::future<bool> reading_;  // declared last: destroyed first, waiting for a read under way
+};
+
 }  // namespace
 
 RecordingSummary run_validation(const std::filesystem::path& path, std::vector<ModelRun>& runs,
@@ -180,7 +216,7 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
   RecordingReader reader(path, RecordingOptions{{}, options.renames, options.negated,
                                                 options.source_name, threads});
   const ParallelFor parallel_for = chunked_parallel_for(threads);
-  std::vector<RecordedSample> chunk;
+  ChunkAhead chunks(reader, options.chunk_samples, threads > 1);
   std::vector<Outcome> outcomes;
   double largest_misalignment_rad = 0.0, largest_torque_nm = 0.0;
   const bool reads_other_samples = std::any_of(runs.begin(), runs.end(), [](const ModelRun& run) {
@@ -189,7 +225,8 @@ RecordingSummary run_validation(const std::filesystem::path& path, std::vector<M
   RecordingWindow window(runs);
   bool more = true;
   while (more) {
-    more = reader.next_chunk(chunk, options.chunk_samples);
+    more = chunks.next();
+    const std::vector<RecordedSample>& chunk = chunks.current();
     for (const RecordedSample& sample : chunk) {
       largest_misalignment_rad = std::max(largest_misalignment_rad, std::abs(sample.input.misalignment_rad));
       largest_torque_nm = std::max(largest_torque_nm, std::abs(sample.input.torque_nm));
