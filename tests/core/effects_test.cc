@@ -176,13 +176,26 @@ TEST(Effects, ChannelGainAndOffsetAreAffine) {
   EXPECT_NEAR(predict(with, s).z_nm, 0.9 * predict(base, s).z_nm - 3e4, 1e-6);
 }
 
-TEST(Effects, HysteresisLagsTheMisalignmentInTheLoadingDirection) {
+// The lag follows the last travel, held through a hold (the friction keeps the coupling where it
+// stuck), not whether the misalignment is moving at this sample.
+MeasurementSample travelled(double torque, double zeta_deg, int travel, int loading) {
+  MeasurementSample s = sample(torque, zeta_deg, 0, loading);
+  s.travel_direction = travel;
+  return s;
+}
+
+TEST(Effects, HysteresisLagsTheMisalignmentAgainstItsLastTravelThroughAHold) {
   const CouplingModel with = paper_model().with_effect(make_effect("hysteresis", {{"lag_rad", deg(0.02)}}));
-  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, +1)).state.point.misalignment_rad, deg(0.38), 1e-12);
-  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, -1)).state.point.misalignment_rad, deg(0.42), 1e-12);
-  EXPECT_NEAR(with.predict(sample(1.5e6, 0.4, 0, 0)).state.point.misalignment_rad, deg(0.40), 1e-12);
+  const auto seen = [&](int travel, int loading) {
+    return with.predict(travelled(1.5e6, 0.4, travel, loading)).state.point.misalignment_rad;
+  };
+  EXPECT_NEAR(seen(+1, +1), deg(0.38), 1e-12);  // rising
+  EXPECT_NEAR(seen(-1, -1), deg(0.42), 1e-12);  // falling
+  EXPECT_NEAR(seen(+1, 0), deg(0.38), 1e-12);   // held after a rise
+  EXPECT_NEAR(seen(-1, 0), deg(0.42), 1e-12);   // held after a fall
+  EXPECT_NEAR(seen(0, 0), deg(0.40), 1e-12);    // before any travel
   // Falling, the coupling sees what the paper's model sees at zeta + lag.
-  const SensorMoments falling = predict(with, sample(1.5e6, 0.4, 0, -1));
+  const SensorMoments falling = predict(with, travelled(1.5e6, 0.4, -1, -1));
   const SensorMoments lagged = predict(paper_model(), sample(1.5e6, 0.42, 0, 0));
   EXPECT_NEAR(falling.y_nm, lagged.y_nm, 1e-6);
   EXPECT_NEAR(falling.z_nm, lagged.z_nm, 1e-6);
