@@ -59,7 +59,11 @@ std::vector<Sweep> sweeps(const CouplingModel& model, double max_torque, std::sp
   out[0] = {"torque", "N·m", {}, [](MeasurementSample& s, double v) { s.torque_nm = v; }};
   out[1] = {"misalignment", "rad", {}, [](MeasurementSample& s, double v) { s.misalignment_rad = v; }};
   out[2] = {"direction", "rad", {}, [](MeasurementSample& s, double v) { s.direction_rad = v; }};
-  out[3] = {"loading_direction", "-", {-1, 0, 1}, [](MeasurementSample& s, double v) { s.loading_direction = static_cast<int>(v); }};
+  // A sample moving one way has travelled that way (hysteresis reads the travel, held in a hold).
+  out[3] = {"loading_direction", "-", {-1, 0, 1}, [](MeasurementSample& s, double v) {
+              s.loading_direction = static_cast<int>(v);
+              s.travel_direction = static_cast<int>(v);
+            }};
   const double jam = model.geometry().jam_angle().angle_rad;
   for (int k = 0; k <= 24; ++k) {
     out[0].values.push_back(max_torque * (0.1 + 1.4 * k / 24.0));
