@@ -1,5 +1,6 @@
 #include "diagnosis/candidate_score.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "diagnosis/model_residuals.h"
@@ -57,6 +58,12 @@ CandidateScore score_candidate(const CouplingModel& base, const EffectRegistrati
   }
   score_held_out(score, base_residual, folds);
   return score;
+}
+
+std::size_t fitted_parameter_count(const CandidateScore& score) {
+  if (!score.fit) return 0;
+  return static_cast<std::size_t>(std::count_if(score.fit->parameters.begin(), score.fit->parameters.end(),
+                                                [](const ParameterEstimate& p) { return !p.held; }));
 }
 
 void score_held_out(CandidateScore& score, const Eigen::MatrixX2d& base_residual, const Folds& folds) {

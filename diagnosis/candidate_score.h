@@ -49,6 +49,9 @@ struct CrossValidationSettings {
   std::uint64_t fold_seed = 0;  ///< blocked_folds' seed
 };
 
+/// The parameters its fit determined (a held one says nothing of the data); 0 unfitted.
+std::size_t fitted_parameter_count(const CandidateScore& score);
+
 /// Fills the score's held-out RMSE, reduction and paired test from its held_out_residual, against
 /// the base model's residual on the same rows.
 void score_held_out(CandidateScore& score, const Eigen::MatrixX2d& base_residual, const Folds& folds);

@@ -135,6 +135,9 @@ struct DiagnosisRound {
   /// The candidate claimed: ranking.front(), or the formula (then ranking.front() is the best effect).
   const CandidateScore& chosen() const;
   bool formula_chosen = false;
+  /// The formula was chosen over a claimable effect for doing better with no more fitted parameters
+  /// (search_round.cc, simpler_and_better): the verdict says so.
+  bool formula_simpler_and_better = false;
   /// The formula was found and scored on the dense (refit) rows, with folds of their own: a weak
   /// one that the search rows of a long recording cannot show. Its held-out residual is on those rows.
   bool formula_on_dense_rows = false;

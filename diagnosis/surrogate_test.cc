@@ -539,7 +539,7 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       p = as_well >= enough ? 1.0 : beyond_doubt >= 0.0 ? beyond_doubt : (1.0 + as_well) / (1.0 + static_cast<double>(drawn));
     }
     // A level the design moves, against the wander of what it leaves (its levels taken out with it).
-    if (designs[d].level) p = std::min(p, level_p_value(residual, left));
+    if (designs[d].level) p = std::min(p, level_p_value(residual, designs[d].level_against_the_residual ? residual : left));
     adjusted[d] = std::min(1.0, 2.0 * family * p);
   }
   return adjusted;

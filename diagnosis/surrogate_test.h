@@ -105,6 +105,10 @@ struct SurrogateDesign {
   /// take nearly all of a random walk's slow power, so that what it leaves has too little of it to
   /// give back (SurrogateSpectrum::kMostRestored).
   bool null_of_the_residual = false;
+  /// The level judged against the residual's own wander, not against what the design leaves: the
+  /// design's columns were chosen for this residual among many (a formula's terms), and slow ones
+  /// chosen take the very wander the level is judged against.
+  bool level_against_the_residual = false;
 };
 
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against

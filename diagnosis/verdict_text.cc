@@ -214,7 +214,15 @@ std::string round_verdict_body(int number, const DiagnosisRound& round) {
       if (!round.ranking.empty() && round.ranking.front().failure.empty()) {
         const CandidateScore& e = round.ranking.front();
         effect = " (the best effect, " + std::string(e.kind == CandidateKind::refinement ? "refining " : "") + e.info->name +
-                 ", lowers it " + percent(e.reduction) + (plausible_fit(e) ? "" : " with implausible values") + ")";
+                 ", lowers it " + percent(e.reduction) + (plausible_fit(e) ? "" : " with implausible values");
+        if (round.formula_simpler_and_better) {
+          const std::size_t terms = fitted_parameter_count(c);
+          effect += ", and would be claimed; the formula, with " + std::to_string(terms) +
+                    (terms == 1 ? " parameter" : " parameters") + " against its " +
+                    std::to_string(fitted_parameter_count(e)) + ", predicts the held-out rows better, t = " +
+                    short_number(round.formula_against_effect.t);
+        }
+        effect += ")";
       }
       const std::string where =
           round.formula_on_dense_rows ? " (found on the recording's dense rows: too weak for the search rows)" : "";
