@@ -1,6 +1,7 @@
 #include "diagnosis/claim_carries.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "diagnosis/claim_rule.h"
 #include "diagnosis/claimed_effects.h"
@@ -15,17 +16,37 @@ namespace {
 /// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
 /// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
 /// a swap (CandidateScore::replaces) refits what earlier rounds claimed and is not tested again.
+/// A lone effect's fit (not a joint refit of several, nor a swap of earlier claims) that has a
+/// registration to refit it with.
+bool refittable_alone(const CandidateScore& c) {
+  return c.fit && c.fit->effect && c.replaces.empty() && c.fit->effect->members().empty();
+}
+
+/// The effect refitted on four contiguous fifths of the search rows: its residual on the fifth each
+/// fit never saw; nullopt when it has no registration or a fit fails.
+std::optional<Eigen::MatrixX2d> effect_on_whole_fifths(const CandidateScore& c, const CouplingModel& model,
+                                                       std::span<const RecordedSample> observations,
+                                                       const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
+                                                       const Folds& fifths, const ParallelFor& parallel,
+                                                       const DiagnosisSettings& settings) {
+  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
+  if (!registration) return std::nullopt;
+  const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
+  CandidateScore on_fifths = score_candidate(model, *registration, observations, search, base, fifths, parallel,
+                                             settings.cross_validation, current.get());
+  if (!on_fifths.failure.empty()) return std::nullopt;
+  return std::move(on_fifths.held_out_residual);
+}
+
 bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::span<const RecordedSample> observations,
                     const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base, const Folds& fifths,
                     const ParallelFor& parallel, const DiagnosisSettings& settings, bool against_wander) {
-  if (!c.fit || !c.fit->effect || !c.replaces.empty() || !c.fit->effect->members().empty()) return true;
+  if (!refittable_alone(c)) return true;
   if (against_wander && !stands_out_of_wander(base - c.held_out_residual, c.held_out_residual)) return false;
-  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
-  if (!registration) return true;
-  const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
-  const CandidateScore on_fifths = score_candidate(model, *registration, observations, search, base, fifths, parallel,
-                                                   settings.cross_validation, current.get());
-  return on_fifths.failure.empty() && carries_to_whole_fifths(base, on_fifths.held_out_residual, fifths);
+  if (!registration_for(*c.fit->effect, settings)) return true;
+  const std::optional<Eigen::MatrixX2d> held_out =
+      effect_on_whole_fifths(c, model, observations, search, base, fifths, parallel, settings);
+  return held_out && carries_to_whole_fifths(base, *held_out, fifths);
 }
 
 /// A claim that takes less than this share of the model's held-out mean square is tested again on
@@ -50,13 +71,36 @@ bool leaves_a_wander(const CandidateScore& c) { return slow_share(c.held_out_res
 
 }  // namespace
 
-bool formula_carries(const CandidateScore& formula, std::span<const RecordedSample> observations,
-                     std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths) {
-  if (!formula.fit) return false;
+namespace {
+
+std::optional<Eigen::MatrixX2d> formula_on_whole_fifths(const CandidateScore& formula,
+                                                        std::span<const RecordedSample> observations,
+                                                        std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
+                                                        const Folds& fifths) {
+  if (!formula.fit) return std::nullopt;
   std::vector<std::string> terms;
   for (const ParameterEstimate& p : formula.fit->parameters) terms.push_back(p.name);
-  const std::optional<Eigen::MatrixX2d> held_out = formula_held_out(observations, rows, base, terms, fifths);
+  return formula_held_out(observations, rows, base, terms, fifths);
+}
+
+}  // namespace
+
+bool formula_carries(const CandidateScore& formula, std::span<const RecordedSample> observations,
+                     std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths) {
+  const std::optional<Eigen::MatrixX2d> held_out = formula_on_whole_fifths(formula, observations, rows, base, fifths);
   return held_out && carries_to_whole_fifths(base, *held_out, fifths);
+}
+
+bool formula_edge_carries(const CandidateScore& formula, const CandidateScore& effect, const CouplingModel& model,
+                          std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
+                          const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,
+                          const DiagnosisSettings& settings) {
+  if (!refittable_alone(effect)) return false;
+  const std::optional<Eigen::MatrixX2d> by_formula = formula_on_whole_fifths(formula, observations, search, base, fifths);
+  if (!by_formula) return false;
+  const std::optional<Eigen::MatrixX2d> by_effect =
+      effect_on_whole_fifths(effect, model, observations, search, base, fifths, parallel, settings);
+  return by_effect && carries_to_whole_fifths(*by_effect, *by_formula, fifths);
 }
 
 void demote_what_does_not_carry(std::vector<CandidateScore>& ranking, const CouplingModel& model,

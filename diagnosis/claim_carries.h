@@ -22,6 +22,17 @@ namespace gc {
 bool formula_carries(const CandidateScore& formula, std::span<const RecordedSample> observations,
                      std::span<const std::size_t> rows, const Eigen::MatrixX2d& base, const Folds& fifths);
 
+/// Whether a formula's edge over an effect carries to whole fifths: each refitted on four
+/// contiguous fifths, the formula better on the fifth neither saw (whole_fifths.h: a paired t of
+/// kWholeFifthsT with the noise's long-run inflation). What a formula's extra terms take from a slow
+/// noise through the interleaved folds does not (a weight's offset with two terms beside it that
+/// followed a zero wandering over 5.7 s of a 12.5 s recording, t = 3.7 interleaved). False for an
+/// effect that is not refitted alone (a joint refit, a swap).
+bool formula_edge_carries(const CandidateScore& formula, const CandidateScore& effect, const CouplingModel& model,
+                          std::span<const RecordedSample> observations, const std::vector<std::size_t>& search,
+                          const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,
+                          const DiagnosisSettings& settings);
+
 /// The claim rule's second test on the effect that would be claimed: one that does not carry to
 /// whole fifths is marked failed and goes last, and the next claimable one is tried, until one
 /// carries or none is claimable (each test costs a fit; only where the best do not carry).

@@ -75,7 +75,8 @@ bool effect_explains_part(const CandidateScore& effect, const CandidateScore& fo
 /// round finds). Two speed terms, 2.30 kN·m held out at t = 5.5 against a gain and offset of both
 /// channels (four parameters, 2.36, which took 98 % of their gain through the level and the trend
 /// that moments and speed share), lost to the gain and offset, and the model kept a calibration
-/// error the rig did not have (noise zoo power seed 20261253, draw 9: a speed drag).
+/// error the rig did not have (noise zoo power seed 20261253, draw 9: a speed drag). The cheap
+/// conditions only; the edge must also carry to whole fifths (formula_edge_carries).
 bool simpler_and_better(const CandidateScore& formula, const CandidateScore& effect,
                         const PairedBlockTest& formula_against_effect, const DiagnosisSettings& settings) {
   const std::size_t terms = fitted_parameter_count(formula);
@@ -215,12 +216,16 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     const CandidateScore& effect = round.ranking.front();
     const double effect_gain = base_ms - std::pow(effect.held_out_rmse_nm, 2);
     const double formula_gain = base_ms - std::pow(round.formula->held_out_rmse_nm, 2);
-    return at_bound(effect) || simpler_and_better(*round.formula, effect, round.formula_against_effect, settings) ||
-           (round.formula_against_effect.t >= settings.formula_over_effect_t &&
-            formula_gain >= settings.formula_over_effect_gain * effect_gain);
+    return at_bound(effect) || (round.formula_against_effect.t >= settings.formula_over_effect_t &&
+                                formula_gain >= settings.formula_over_effect_gain * effect_gain);
+  };
+  const auto formula_simpler_and_better = [&] {
+    const CandidateScore& effect = round.ranking.front();
+    return simpler_and_better(*round.formula, effect, round.formula_against_effect, settings) &&
+           formula_edge_carries(*round.formula, effect, model, observations, search, base, fifths, parallel, settings);
   };
   bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
-  if (formula_ok && (!effect_ok || formula_over_effect())) {
+  if (formula_ok && (!effect_ok || formula_over_effect() || formula_simpler_and_better())) {
     // Only where the formula could be the claim: the check may search the formula again.
     demote_formula_that_noisy_inputs_explain(*round.formula, read_back, observations, search, folds,
                                              formula_settings(round, settings), settings.claim_t,
@@ -229,9 +234,8 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   }
   if (formula_ok && effect_ok) {
     const CandidateScore& effect = round.ranking.front();
-    round.formula_chosen = formula_over_effect();
-    round.formula_simpler_and_better =
-        round.formula_chosen && simpler_and_better(*round.formula, effect, round.formula_against_effect, settings);
+    round.formula_simpler_and_better = formula_simpler_and_better();
+    round.formula_chosen = round.formula_simpler_and_better || formula_over_effect();
     if (round.formula_chosen && !round.formula_simpler_and_better &&
         effect_explains_part(effect, *round.formula, base, observations, search, folds,
                              formula_settings(round, settings))) {

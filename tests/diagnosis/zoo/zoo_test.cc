@@ -259,6 +259,22 @@ TEST(NoiseZooPower, TwoSpeedTermsBetterThanAGainAndOffsetStandFirst) {
       << p.json.substr(0, 3000);
 }
 
+// A weight (an M_sy' offset of 17.4 kN·m rms) under a zero wandering with tau 5.7 s on 12.5 s, a
+// moving average and torque-heteroscedastic noise, 2,407 rows (power table seed 20261258, draw 2).
+// A formula of the offset and two terms that followed the wander through the sweep (3 parameters,
+// 11.23 kN·m held out) beat the gain and offset of both channels (4 parameters, 11.37) by t = 3.7
+// on the interleaved folds, and stood first as the simpler and better. Its edge does not carry to
+// whole fifths, so the offset is named.
+TEST(NoiseZooPower, AFormulaWhoseEdgeFollowsAWanderDoesNotTakeTheOffsetsPlace) {
+  const PowerDraw p = diagnosed_power_draw(20261258, 2, "weight");
+  ASSERT_NE(p.draw.description.find("wandering zero OU tau 5.65 s"), std::string::npos) << p.draw.description;
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
+  const std::string& first = p.out.first_claim.front();
+  EXPECT_TRUE(first == "channel_gain_offset" || first == "self_weight") << first << ": " << p.out.numbers;
+  EXPECT_NEAR(first_value_of(p.json, "offset_y_nm"), -20.9e3, 2.0e3) << p.json.substr(0, 3000);
+}
+
 // A compliance beyond its plausible range: the mesh at 0.121 of eq 5's stiffness (rim 12.4 C, scaled
 // x1.15 to reach SNR 1.5) under AR(1) noise at phi 0.984 with jittered stamps, 2,042 rows on a
 // torque staircase (power table seed 20261237, draw 0). The fit ended on the plausible box's edge
