@@ -217,17 +217,21 @@ std::string round_verdict_body(int number, const DiagnosisRound& round) {
                  ", lowers it " + percent(e.reduction) + (plausible_fit(e) ? "" : " with implausible values");
         if (round.formula_simpler_and_better) {
           const std::size_t terms = fitted_parameter_count(c);
-          effect += ", and would be claimed; the formula, with " + std::to_string(terms) +
+          effect += ", and could be claimed; the formula, with " + std::to_string(terms) +
                     (terms == 1 ? " parameter" : " parameters") + " against its " +
                     std::to_string(fitted_parameter_count(e)) + ", predicts the held-out rows better, t = " +
-                    short_number(round.formula_against_effect.t);
+                    short_number(round.formula_against_effect.t) + ", on whole fifths too";
         }
         effect += ")";
       }
       const std::string where =
           round.formula_on_dense_rows ? " (found on the recording's dense rows: too weak for the search rows)" : "";
-      return head + "no effect of the library explains the residual in " + channels(round.channel_reduction) + effect +
-             "; a formula does" + where + ": " + formula_text(*round.claimed) + ". " + gain_text(round, c) +
+      const std::string lead = round.formula_simpler_and_better
+                                   ? "a formula explains the residual in " + channels(round.channel_reduction) +
+                                         " better than any effect of the library" + effect + where + ": "
+                                   : "no effect of the library explains the residual in " +
+                                         channels(round.channel_reduction) + effect + "; a formula does" + where + ": ";
+      return head + lead + formula_text(*round.claimed) + ". " + gain_text(round, c) +
              ". The search continues with it (an expression effect in the model file)." + dropped_text(round);
     }
     case RoundOutcome::indistinguishable: {
