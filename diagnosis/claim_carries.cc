@@ -12,12 +12,8 @@
 namespace gc {
 namespace {
 
-/// Whether the candidate's correction stands out of the wander it leaves when it is slow
-/// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
-/// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
-/// a swap (CandidateScore::replaces) refits what earlier rounds claimed and is not tested again.
-/// A lone effect's fit (not a joint refit of several, nor a swap of earlier claims) that has a
-/// registration to refit it with.
+/// A lone effect's fit: not a joint refit of several, nor a swap of earlier claims
+/// (CandidateScore::replaces), which refit what earlier rounds claimed.
 bool refittable_alone(const CandidateScore& c) {
   return c.fit && c.fit->effect && c.replaces.empty() && c.fit->effect->members().empty();
 }
@@ -38,6 +34,22 @@ std::optional<Eigen::MatrixX2d> effect_on_whole_fifths(const CandidateScore& c, 
   return std::move(on_fifths.held_out_residual);
 }
 
+/// The formula's terms refitted on four contiguous fifths: their residual on the fifth each fit
+/// never saw.
+std::optional<Eigen::MatrixX2d> formula_on_whole_fifths(const CandidateScore& formula,
+                                                        std::span<const RecordedSample> observations,
+                                                        std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
+                                                        const Folds& fifths) {
+  if (!formula.fit) return std::nullopt;
+  std::vector<std::string> terms;
+  for (const ParameterEstimate& p : formula.fit->parameters) terms.push_back(p.name);
+  return formula_held_out(observations, rows, base, terms, fifths);
+}
+
+/// Whether the candidate's correction stands out of the wander it leaves when it is slow
+/// (slow_wander.h), and, fitted on four contiguous fifths of the search rows and judged on the
+/// fifth it never saw, still beats the model (whole_fifths.h). A refit of several effects at once or
+/// a swap is not tested again.
 bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::span<const RecordedSample> observations,
                     const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base, const Folds& fifths,
                     const ParallelFor& parallel, const DiagnosisSettings& settings, bool against_wander) {
@@ -68,20 +80,6 @@ bool weak_claim(const CandidateScore& c, double base_ms) {
 constexpr double kSlowLeftover = 0.5;
 
 bool leaves_a_wander(const CandidateScore& c) { return slow_share(c.held_out_residual) >= kSlowLeftover; }
-
-}  // namespace
-
-namespace {
-
-std::optional<Eigen::MatrixX2d> formula_on_whole_fifths(const CandidateScore& formula,
-                                                        std::span<const RecordedSample> observations,
-                                                        std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
-                                                        const Folds& fifths) {
-  if (!formula.fit) return std::nullopt;
-  std::vector<std::string> terms;
-  for (const ParameterEstimate& p : formula.fit->parameters) terms.push_back(p.name);
-  return formula_held_out(observations, rows, base, terms, fifths);
-}
 
 }  // namespace
 
