@@ -18,17 +18,16 @@ bool refittable_alone(const CandidateScore& c) {
   return c.fit && c.fit->effect && c.replaces.empty() && c.fit->effect->members().empty();
 }
 
-/// The effect refitted on four contiguous fifths of the search rows: its residual on the fifth each
-/// fit never saw; nullopt when it has no registration or a fit fails.
-std::optional<Eigen::MatrixX2d> effect_on_whole_fifths(const CandidateScore& c, const CouplingModel& model,
+/// The effect refitted (by `registration`) on four contiguous fifths of the search rows: its
+/// residual on the fifth each fit never saw; nullopt when a fit fails.
+std::optional<Eigen::MatrixX2d> effect_on_whole_fifths(const CandidateScore& c, const EffectRegistration& registration,
+                                                       const CouplingModel& model,
                                                        std::span<const RecordedSample> observations,
                                                        const std::vector<std::size_t>& search, const Eigen::MatrixX2d& base,
                                                        const Folds& fifths, const ParallelFor& parallel,
                                                        const DiagnosisSettings& settings) {
-  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
-  if (!registration) return std::nullopt;
   const std::shared_ptr<const Effect> current = c.kind == CandidateKind::refinement ? model.effect(c.info->name) : nullptr;
-  CandidateScore on_fifths = score_candidate(model, *registration, observations, search, base, fifths, parallel,
+  CandidateScore on_fifths = score_candidate(model, registration, observations, search, base, fifths, parallel,
                                              settings.cross_validation, current.get());
   if (!on_fifths.failure.empty()) return std::nullopt;
   return std::move(on_fifths.held_out_residual);
@@ -55,9 +54,10 @@ bool effect_carries(const CandidateScore& c, const CouplingModel& model, std::sp
                     const ParallelFor& parallel, const DiagnosisSettings& settings, bool against_wander) {
   if (!refittable_alone(c)) return true;
   if (against_wander && !stands_out_of_wander(base - c.held_out_residual, c.held_out_residual)) return false;
-  if (!registration_for(*c.fit->effect, settings)) return true;
+  const std::optional<EffectRegistration> registration = registration_for(*c.fit->effect, settings);
+  if (!registration) return true;
   const std::optional<Eigen::MatrixX2d> held_out =
-      effect_on_whole_fifths(c, model, observations, search, base, fifths, parallel, settings);
+      effect_on_whole_fifths(c, *registration, model, observations, search, base, fifths, parallel, settings);
   return held_out && carries_to_whole_fifths(base, *held_out, fifths);
 }
 
@@ -94,10 +94,12 @@ bool formula_edge_carries(const CandidateScore& formula, const CandidateScore& e
                           const Eigen::MatrixX2d& base, const Folds& fifths, const ParallelFor& parallel,
                           const DiagnosisSettings& settings) {
   if (!refittable_alone(effect)) return false;
+  const std::optional<EffectRegistration> registration = registration_for(*effect.fit->effect, settings);
+  if (!registration) return false;
   const std::optional<Eigen::MatrixX2d> by_formula = formula_on_whole_fifths(formula, observations, search, base, fifths);
   if (!by_formula) return false;
   const std::optional<Eigen::MatrixX2d> by_effect =
-      effect_on_whole_fifths(effect, model, observations, search, base, fifths, parallel, settings);
+      effect_on_whole_fifths(effect, *registration, model, observations, search, base, fifths, parallel, settings);
   return by_effect && carries_to_whole_fifths(*by_effect, *by_formula, fifths);
 }
 

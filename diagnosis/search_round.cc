@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "diagnosis/alike_candidates.h"
 #include "diagnosis/candidate_ranking.h"
@@ -219,10 +220,17 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     return at_bound(effect) || (round.formula_against_effect.t >= settings.formula_over_effect_t &&
                                 formula_gain >= settings.formula_over_effect_gain * effect_gain);
   };
+  // Asked before the formula's read-back check and again after it (which changes at most its
+  // failure): the whole-fifths refits cost an effect's scoring, so they are made once.
+  std::optional<bool> simpler_once;
   const auto formula_simpler_and_better = [&] {
-    const CandidateScore& effect = round.ranking.front();
-    return simpler_and_better(*round.formula, effect, round.formula_against_effect, settings) &&
-           formula_edge_carries(*round.formula, effect, model, observations, search, base, fifths, parallel, settings);
+    if (!simpler_once) {
+      const CandidateScore& effect = round.ranking.front();
+      simpler_once = simpler_and_better(*round.formula, effect, round.formula_against_effect, settings) &&
+                     formula_edge_carries(*round.formula, effect, model, observations, search, base, fifths, parallel,
+                                          settings);
+    }
+    return *simpler_once;
   };
   bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
   if (formula_ok && (!effect_ok || formula_over_effect() || formula_simpler_and_better())) {
