@@ -5,10 +5,7 @@ namespace gc::dashboard {
 bool ConnectionGuard::begin_reading(const std::string& peer) {
   std::lock_guard lock(mutex_);
   std::size_t& reading = reading_[peer];
-  if (reading >= limits_.max_reading_per_peer) {
-    ++refused_peer_limit_;
-    return false;
-  }
+  if (reading >= limits_.max_reading_per_peer) return false;
   ++reading;
   return true;
 }
@@ -18,6 +15,11 @@ void ConnectionGuard::end_reading(const std::string& peer) {
   const auto found = reading_.find(peer);
   if (found == reading_.end()) return;
   if (--found->second == 0) reading_.erase(found);   // the map holds only peers sending now
+}
+
+void ConnectionGuard::count_peer_limit() {
+  std::lock_guard lock(mutex_);
+  ++refused_peer_limit_;
 }
 
 void ConnectionGuard::count_timeout() {

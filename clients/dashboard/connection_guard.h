@@ -3,7 +3,8 @@
 // request a byte at a time (or nothing) hold threads as long as they like. Here a connection
 // has request_timeout to send its whole request (header and body) and read_timeout between two
 // reads; and each peer (IP address) has at most max_reading_per_peer connections still sending
-// their request: a further one is answered 429 and closed at once. So one host holds at most
+// their request: a further one still sending is answered 429 and closed at once (one whose whole
+// request has arrived is served, guarded_http_server.cc). So one host holds at most
 // that many threads, each for at most request_timeout, and the rest serve the page, /metrics
 // and the API.
 #pragma once
@@ -30,9 +31,11 @@ class ConnectionGuard {
   explicit ConnectionGuard(ConnectionLimits limits) : limits_(limits) {}
 
   const ConnectionLimits& limits() const { return limits_; }
-  /// A connection of `peer` starts sending its request: false (counted) when the peer already
-  /// has max_reading_per_peer doing so.
+  /// A connection of `peer` starts sending its request: false (and not counted) when the peer
+  /// already has max_reading_per_peer doing so.
   bool begin_reading(const std::string& peer);
+  /// A connection refused because its peer had max_reading_per_peer sending (429).
+  void count_peer_limit();
   /// Its request was read (or the connection ended): the peer's place is free again.
   void end_reading(const std::string& peer);
   /// A request not sent within request_timeout or read_timeout.

@@ -6,6 +6,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <string>
@@ -34,9 +36,10 @@ void address_of(const sockaddr_storage& address, std::string& ip, int& port) {
 /// deadline; then the peer's place in the guard is given back.
 class DeadlineStream final : public httplib::Stream {
  public:
-  DeadlineStream(socket_t sock, ConnectionGuard& guard, std::string peer)
+  /// `counted`: the connection holds one of its peer's places in the guard until its request is read.
+  DeadlineStream(socket_t sock, ConnectionGuard& guard, std::string peer, bool counted)
       : sock_(sock), guard_(guard), peer_(std::move(peer)),
-        deadline_(Clock::now() + guard.limits().request_timeout) {}
+        deadline_(Clock::now() + guard.limits().request_timeout), counted_(counted) {}
   ~DeadlineStream() override {
     header_read();
     if (current_ == this) current_ = nullptr;
@@ -118,7 +121,7 @@ class DeadlineStream final : public httplib::Stream {
   ConnectionGuard& guard_;
   std::string peer_;
   Clock::time_point deadline_;
-  bool reading_ = true, counted_ = true, timed_out_ = false;
+  bool counted_, reading_ = true, timed_out_ = false;
   char buffer_[4096];
   std::size_t begin_ = 0, end_ = 0;
 };
@@ -134,6 +137,28 @@ std::string peer_of(socket_t sock) {
   return ip;
 }
 
+/// Whether the connection's whole request is already waiting in its socket: a head (at most
+/// httplib's 8 kB) that has ended and announces no body. Such a connection is no longer sending,
+/// so it takes none of its peer's places: its thread is busy for the answer only, as a counted
+/// connection's is once read. (A burst of complete requests from one address, a proxy's or a
+/// loaded client's, is served; a connection still sending its head or a body is not.)
+bool whole_request_arrived(socket_t sock) {
+  char head[CPPHTTPLIB_HEADER_MAX_LENGTH];
+  const ssize_t n = ::recv(sock, head, sizeof head, MSG_PEEK | MSG_DONTWAIT);
+  if (n <= 0) return false;
+  std::string text(head, static_cast<std::size_t>(n));
+  const std::size_t end = text.find("\r\n\r\n");
+  if (end == std::string::npos) return false;
+  text.resize(end + 2);
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (text.find("\ntransfer-encoding:") != std::string::npos) return false;
+  const std::size_t length = text.find("\ncontent-length:");
+  if (length == std::string::npos) return true;
+  const std::size_t value = text.find_first_not_of(" \t", length + 16);
+  return value != std::string::npos && text.compare(value, 3, "0\r\n") == 0;
+}
+
 void close_socket(socket_t sock) {
   ::shutdown(sock, SHUT_RDWR);
   ::close(sock);
@@ -143,18 +168,20 @@ void close_socket(socket_t sock) {
 
 bool GuardedHttpServer::process_and_close_socket(socket_t sock) {
   const std::string peer = peer_of(sock);
-  if (!guard_.begin_reading(peer)) {
+  const bool counted = guard_.begin_reading(peer);
+  if (!counted && !whole_request_arrived(sock)) {
     // Told, not just dropped, so a proxy or a user sees why; without waiting for the request.
     static constexpr char kTooMany[] =
         "HTTP/1.1 429 Too Many Requests\r\nRetry-After: 5\r\nContent-Length: 0\r\n"
         "Connection: close\r\n\r\n";
+    guard_.count_peer_limit();
     ::send(sock, kTooMany, sizeof kTooMany - 1, MSG_NOSIGNAL | MSG_DONTWAIT);
     close_socket(sock);
     return false;
   }
   bool ok = false;
   {
-    DeadlineStream stream(sock, guard_, peer);
+    DeadlineStream stream(sock, guard_, peer, counted);
     DeadlineStream::current_ = &stream;
     bool closed = false;
     // One request per connection (keep-alive off, as set_keep_alive_max_count(1) did).

@@ -196,3 +196,42 @@ def test_a_host_that_holds_connections_leaves_the_page_metrics_and_api_answering
     assert slowest < 1.0
     assert float(refused["peer_limit"]) > 0
     assert float(refused["timeout"]) > 0
+
+
+def test_a_whole_request_from_a_host_at_its_limit_is_answered_and_one_still_sending_is_not(dashboard):
+    """The per-peer limit counts connections still sending. With 8 of the attacker's sending a
+    head a byte at a time, a 9th whose whole GET has arrived (a proxy's, or a loaded client's
+    burst) is answered; a 9th still sending gets 429."""
+    port = dashboard["port"]
+    slow = []
+    try:
+        for _ in range(8):
+            s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+            s.bind((ATTACKER, 0))
+            s.connect(("127.0.0.1", port))
+            s.sendall(b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")
+            slow.append(s)
+        time.sleep(0.5)   # each taken by a thread and counted (the deadline is 5 s, 2 s a read)
+
+        def ask(head):
+            with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+                s.bind((ATTACKER, 0))
+                s.settimeout(3.0)
+                s.connect(("127.0.0.1", port))
+                s.sendall(head)
+                data = b""
+                while chunk := s.recv(65536):
+                    data += chunk
+            return int(data.split(b" ", 2)[1])
+
+        assert ask(b"GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n") == 200
+        assert ask(b"GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\n") == 429
+        # A body announced is still to come: counted, so refused.
+        assert ask(b"POST /api/apply HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 10\r\n\r\n") == 429
+    finally:
+        for s in slow:
+            s.close()
+    _, metrics, _ = request(port, "GET", "/metrics", {"Host": "127.0.0.1"})
+    refused = next(line.split()[-1] for line in metrics.splitlines()
+                   if line.startswith('gearcoupling_dashboard_http_refused_total{reason="peer_limit"}'))
+    assert float(refused) == 2

@@ -51,7 +51,10 @@ def open_streams(port, count, within_s):
     sockets, heads = [], {}
     selector = selectors.DefaultSelector()
     for k in range(count):
-        s = socket.create_connection(("127.0.0.1", port), timeout=2)
+        # Each from its own loopback address, as `count` browsers: one address's burst is
+        # dashboard_network_test.py's (--max-pending-per-peer).
+        s = socket.create_connection(("127.0.0.1", port), timeout=2,
+                                     source_address=(f"127.0.{1 + k // 250}.{1 + k % 250}", 0))
         s.sendall(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\nAccept: text/event-stream\r\n\r\n")
         s.setblocking(False)
         selector.register(s, selectors.EVENT_READ, k)
