@@ -196,5 +196,18 @@ TEST(ZooArtefacts, BackwardsStampGoesBackwardsAndDropoutsAreWrittenAsSaid) {
   EXPECT_NE(write_csv(n.rec, {}).find("nan"), std::string::npos);
 }
 
+TEST(ZooGenerator, APowerDrawUnderWhiteNoiseHasAnOracleFarAboveNinetyPercentAndANoiseDrawNone) {
+  DrawLimits l = small({"white"});
+  EXPECT_TRUE(std::isnan(draw(44, l).oracle_d));
+  l.effect_truth = "twice_per_rev";
+  l.effect_snr = 1.5;
+  const ZooDraw d = draw(44, l);
+  // Known signal in white noise: d^2 = the signal's sum of squares over both channels over the
+  // noise's variance = 2 n x 1.5^2 (the SNR is the change's RMS over both channels).
+  const double expected = 1.5 * std::sqrt(2.0 * static_cast<double>(d.rows));
+  EXPECT_NEAR(d.oracle_d, expected, 0.1 * expected);
+  EXPECT_GT(d.oracle_power, 0.999);
+}
+
 }  // namespace
 }  // namespace gc::zoo

@@ -8,6 +8,7 @@
 #include "core/coupling_geometry.h"
 #include "tests/diagnosis/zoo/families.h"
 #include "tests/diagnosis/zoo/hidden_effects.h"
+#include "tests/diagnosis/zoo/oracle.h"
 #include "tests/diagnosis/zoo/programme.h"
 #include "tests/diagnosis/zoo/text.h"
 
@@ -19,19 +20,23 @@ double three_digits(double x) {
   return std::round(x / p) * p;
 }
 
+SensorMoments predict_row(const CouplingModel& model, const Channels& c, std::size_t i) {
+  MeasurementSample s;
+  s.time_s = c.time_s[i];
+  s.torque_nm = c.torque_nm[i];
+  s.misalignment_rad = c.zeta_rad[i];
+  s.direction_rad = c.beta_rad[i];
+  s.speed_rpm = c.speed_rpm[i];
+  s.temperature_c = c.temperature_c[i];
+  return model.predict(s).moments;
+}
+
 // The model's prediction at the true inputs, on two threads for long records.
 void predict(const CouplingModel& model, Channels& c) {
   const std::size_t n = c.rows();
   auto part = [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i) {
-      MeasurementSample s;
-      s.time_s = c.time_s[i];
-      s.torque_nm = c.torque_nm[i];
-      s.misalignment_rad = c.zeta_rad[i];
-      s.direction_rad = c.beta_rad[i];
-      s.speed_rpm = c.speed_rpm[i];
-      s.temperature_c = c.temperature_c[i];
-      const SensorMoments m = model.predict(s).moments;
+      const SensorMoments m = predict_row(model, c, i);
       c.msy_nm[i] = m.y_nm;
       c.msz_nm[i] = m.z_nm;
     }
@@ -45,6 +50,38 @@ void predict(const CouplingModel& model, Channels& c) {
 double spread(const std::vector<double>& v) {
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
   return *hi - *lo;
+}
+
+// The oracle's bound (oracle.h): the effect's signal is what it added to the true moments; the
+// noise is the rest of what diagnose's residual holds, the logged moments less the model fed the
+// logged inputs, less that signal.
+void set_oracle_bound(const CouplingModel& model, const Channels& truth, const Channels& logged,
+                      const std::vector<double>& clean_y, const std::vector<double>& clean_z, ZooDraw& d) {
+  const std::size_t n = truth.rows();
+  if (logged.rows() != n || n < 64) return;
+  // A row whose logged inputs the model refuses is left out, as diagnose leaves it out; beyond
+  // 5 % of the rows there is no bound.
+  std::vector<double> sy, sz, ny, nz;
+  for (std::size_t i = 0; i < n; ++i) {
+    SensorMoments read;
+    try {
+      read = predict_row(model, logged, i);
+    } catch (const std::exception&) {
+      continue;
+    }
+    sy.push_back(truth.msy_nm[i] - clean_y[i]);
+    sz.push_back(truth.msz_nm[i] - clean_z[i]);
+    ny.push_back(logged.msy_nm[i] - read.y_nm - sy.back());
+    nz.push_back(logged.msz_nm[i] - read.z_nm - sz.back());
+  }
+  if (sy.size() < n - n / 20) return;
+  try {
+    const OracleBound bound = oracle_bound(sy, sz, ny, nz);
+    d.oracle_d = bound.d;
+    d.oracle_power = bound.power;
+  } catch (const std::invalid_argument&) {
+    // a value not finite (a dropout written as NaN): no bound for this draw
+  }
 }
 
 }  // namespace
@@ -86,6 +123,7 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
   d.moment_range_nm = std::max({ry, rz, 0.1 * peak});
   d.level_nm = d.level_share * d.moment_range_nm;
   std::string hidden;
+  const std::vector<double> clean_y = truth.msy_nm, clean_z = truth.msz_nm;
   if (!lim.effect_truth.empty()) {
     Rng effect_rng(derive_seed(seed, "effect"));
     hidden = "HIDDEN " + add_hidden_effect(lim.effect_truth, lim.effect_snr, d.level_nm, *model, jam, truth, effect_rng) + "; ";
@@ -137,6 +175,8 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
     d.families.push_back(chosen[j]->name);
     fams += (fams.empty() ? "" : "; ") + std::string(chosen[j]->name) + "(" + params + ")";
   }
+
+  if (!lim.effect_truth.empty()) set_oracle_bound(*model, truth, logged, clean_y, clean_z, d);
 
   Rng style_rng(derive_seed(seed, "style"));
   const CsvStyle style = style_rng.chance(lim.style_share) ? draw_style(style_rng) : CsvStyle{};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,11 @@ struct ZooDraw {
   double level_nm = 0.0;             ///< moment noise RMS asked for [N·m]
   double moment_range_nm = 0.0;      ///< spread of the clean moments (the larger channel) [N·m]
   Channels truth, logged;            ///< only with DrawLimits::keep_channels
+  /// Power mode: the best power of any 1 % test that knew the effect's signal and the noise's
+  /// spectrum (oracle.h); its d (>= 3.61 for 90 %). NaN without an effect, or where the noise
+  /// is not finite.
+  double oracle_d = std::numeric_limits<double>::quiet_NaN();
+  double oracle_power = std::numeric_limits<double>::quiet_NaN();
 };
 
 ZooDraw draw(std::uint64_t seed, const DrawLimits& limits = {});

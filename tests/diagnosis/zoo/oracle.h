@@ -1,0 +1,44 @@
+// An upper bound on any test's power in one power-mode draw: the detectability of the hidden
+// effect by an oracle that knows its exact signal on the moments and the noise's spectrum.
+//
+// For Gaussian noise n of covariance Sigma and a known signal s, the Neyman-Pearson test of
+// "r = n" against "r = s + n" is linear in r and its statistic, standardised, moves by
+//   d = sqrt(s' Sigma^-1 s)
+// under the effect. At size alpha (one-sided) its power is Phi(d - z_alpha); no test of that size
+// does better, and a diagnosis that must also fit the effect's parameters, choose it among many
+// and beat every other explanation does worse. At 1 % and 90 % power, d >= 2.326 + 1.282 = 3.61.
+//
+// Sigma is the draw's own noise (what the recording holds beside the effect, read against the
+// model fed the logged inputs, so input-sensor noise carried through the model counts), taken as
+// stationary: each channel is whitened by an autoregression fitted to it by Burg's method
+// (order by AIC, at most 64), s' Sigma^-1 s ~ the whitened signal's sum of squares over the
+// innovations' covariance, the two channels' innovations correlated at lag 0 (a common-mode
+// noise; their cross-correlation at other lags is not modelled). For noise that is not
+// Gaussian (spikes, steps, a variance that moves) this is the bound for Gaussian noise of the
+// same spectrum, an indication, not a proof.
+#pragma once
+
+#include <vector>
+
+namespace gc::zoo {
+
+struct OracleBound {
+  double d = 0.0;       ///< sqrt(s' Sigma^-1 s) over both channels
+  double power = 0.0;   ///< Phi(d - z_0.01): the best power of any one-sided 1 % test
+  int order_y = 0, order_z = 0;   ///< the autoregressions' orders
+};
+
+/// signal_*: the effect's change of each moment channel [N·m]; noise_*: the rest of the residual
+/// [N·m]; all of one length >= 64 and finite (std::invalid_argument otherwise).
+OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
+                         const std::vector<double>& noise_y, const std::vector<double>& noise_z);
+
+/// Burg's autoregression of x (mean removed): coefficients a_1..a_p with
+/// x_t + a_1 x_{t-1} + ... + a_p x_{t-p} = e_t, and the innovations' variance.
+struct Autoregression {
+  std::vector<double> a;
+  double innovation_variance = 0.0;
+};
+Autoregression burg(const std::vector<double>& x, int order);
+
+}  // namespace gc::zoo
