@@ -448,6 +448,23 @@ SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::Matr
 
 }  // namespace
 
+double level_standard_error(const Eigen::VectorXd& means) {
+  const double m = static_cast<double>(means.size());
+  const Eigen::ArrayXd about = means.array() - means.mean();
+  const double spread = std::sqrt(about.square().sum() / (m - 1.0));
+  const double sum_squares = about.square().sum();
+  if (!(sum_squares > 0.0)) return spread;
+  // Adjacent means' correlation, its bias on m means added back (Marriott and Pope 1954:
+  // -(1 + 3 rho) / m), and 2.33 of its standard errors above that: a one-sided 1 % bound.
+  const double r1 = (about.head(means.size() - 1) * about.tail(means.size() - 1)).sum() / sum_squares;
+  const double bias = (1.0 + 3.0 * std::max(r1, 0.0)) / m;
+  const double rho = std::min(0.999, r1 + bias + 2.326 * std::sqrt(std::max(1.0 - r1 * r1, 0.05) / m));
+  // The mean's standard error with means correlated as an AR(1) of rho: (1 + rho) / (1 - rho)
+  // times the independent one; never beyond the spread itself.
+  const double inflation = std::sqrt(std::max(1.0 + rho, 0.0) / (1.0 - rho));
+  return spread * std::min(1.0, inflation / std::sqrt(m));
+}
+
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander) {
   double p = 1.0;
   for (int c = 0; c < 2; ++c) {
@@ -457,8 +474,8 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
     if (n < 2 * parts) continue;
     Eigen::VectorXd means(parts);
     for (Eigen::Index k = 0; k < parts; ++k) means(k) = x.segment(k * n / parts, (k + 1) * n / parts - k * n / parts).mean();
-    const double spread = std::sqrt((means.array() - means.mean()).square().sum() / (parts - 1.0));
-    const double t = spread > 0.0 ? std::abs(level) / spread : (level != 0.0 ? 1e300 : 0.0);
+    const double error = level_standard_error(means);
+    const double t = error > 0.0 ? std::abs(level) / error : (level != 0.0 ? 1e300 : 0.0);
     p = std::min(p, student_two_sided_p(t, static_cast<int>(parts - 1)));
   }
   return std::min(1.0, 2.0 * p);  // either channel

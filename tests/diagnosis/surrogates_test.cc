@@ -289,5 +289,51 @@ TEST(Surrogates, OnRandomWalksChosenSlowTermsAreClaimedAtMostAtTheLevel) {
   EXPECT_LE(claimed, std::max(2, draws * 2 / 100)) << claimed << " of " << draws;
 }
 
+// A level's standard error from 21 block means (level_standard_error). Independent means (white
+// noise) give about 1.7 / sqrt(21) of their spread: a level of 2.845 such errors is p = 0.01 at 20
+// degrees of freedom, and white noise reaches it in about 0.1 % of draws (the 1 % bound on the
+// means' correlation is conservative where there is none). A random walk's means wander together:
+// their spread itself, as the level test had for every noise before, and a walk's level stands
+// 2.845 errors out in about 2.5 % of draws with either (the rest of the claim rule, the whole
+// fifths and the surrogates, keeps walks below the level: OnRandomWalksASlowDesignIs...).
+TEST(Surrogates, ALevelIsJudgedOnItsStandardErrorWhereTheBlockMeansAreIndependentAndOnTheirSpreadForAWalk) {
+  std::mt19937_64 random(20261201);
+  std::normal_distribution<double> normal;
+  const int draws = 2000;
+  const Eigen::Index blocks = 21, length = 150;
+  int white_out = 0, walk_out = 0, walk_spread = 0;
+  std::vector<double> white_ratio;
+  for (int d = 0; d < draws; ++d) {
+    Eigen::VectorXd white(blocks), walk(blocks);
+    double position = 0.0;
+    for (Eigen::Index k = 0; k < blocks; ++k) {
+      double sum = 0.0, walked = 0.0;
+      for (Eigen::Index i = 0; i < length; ++i) {
+        sum += normal(random);
+        walked += (position += normal(random));
+      }
+      white(k) = sum / length;
+      walk(k) = walked / length;
+    }
+    const auto spread = [&](const Eigen::VectorXd& m) {
+      return std::sqrt((m.array() - m.mean()).square().sum() / (blocks - 1.0));
+    };
+    const double white_error = level_standard_error(white), walk_error = level_standard_error(walk);
+    white_ratio.push_back(white_error / spread(white));
+    if (std::abs(white.mean()) > 2.845 * white_error) ++white_out;
+    if (std::abs(walk.mean()) > 2.845 * walk_error) ++walk_out;
+    if (walk_error >= spread(walk) * (1.0 - 1e-12)) ++walk_spread;
+  }
+  std::nth_element(white_ratio.begin(), white_ratio.begin() + draws / 2, white_ratio.end());
+  const double median_ratio = white_ratio[draws / 2];
+  std::printf("white: error / spread median %.3f, level out %d of %d; walk: the spread in %d, level out %d\n",
+              median_ratio, white_out, draws, walk_spread, walk_out);
+  EXPECT_GT(median_ratio, 1.0 / std::sqrt(21.0));   // never below the independent error
+  EXPECT_LT(median_ratio, 0.45);                      // far below the spread the test used before
+  EXPECT_LE(white_out, draws / 100);                  // at most the 1 % level
+  EXPECT_GE(walk_spread, draws * 9 / 10);             // a walk's means: the spread
+  EXPECT_LE(walk_out, draws * 4 / 100);               // as before (2.5 %), with room for scatter
+}
+
 }  // namespace
 }  // namespace gc

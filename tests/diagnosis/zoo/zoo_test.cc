@@ -281,6 +281,22 @@ TEST(NoiseZooPower, AFormulaWhoseEdgeFollowsAWanderDoesNotTakeTheOffsetsPlace) {
   EXPECT_NEAR(first_value_of(p.json, "offset_y_nm"), -20.9e3, 2.0e3) << p.json.substr(0, 3000);
 }
 
+// A heavier hub, an offset of 4.7 kN·m on M_sy' (1.5 times the noise), under a hidden AR(1) of phi
+// 0.982 (2.7 times its white part), a random telegraph and a sample-and-hold, 1,293 rows at 30.3 Hz
+// (power table seed 20261263, draw 7). The offset took 44 % of the held-out error at t = 21, yet its
+// level was judged against the spread of 21 block means itself: p = 0.033 in the family, no claim.
+// The means were nearly independent (the correlation is shorter than a block), so the level's
+// standard error is their spread over sqrt(21), inflated only by a 1 % bound on their correlation
+// (surrogate_test.h, level_standard_error).
+TEST(NoiseZooPower, AnOffsetOverBlockMeansNearlyIndependentIsJudgedOnItsStandardError) {
+  const PowerDraw p = diagnosed_power_draw(20261263, 7, "weight");
+  ASSERT_NE(p.draw.description.find("hidden ar1 phi 0.982"), std::string::npos) << p.draw.description;
+  ASSERT_FALSE(p.out.error) << p.out.stderr_tail;
+  ASSERT_FALSE(p.out.first_claim.empty()) << p.out.outcomes << "\n" << p.draw.description;
+  const std::string& first = p.out.first_claim.front();
+  EXPECT_TRUE(first == "self_weight" || first == "channel_gain_offset") << first << ": " << p.out.numbers;
+}
+
 // A compliance beyond its plausible range: the mesh at 0.121 of eq 5's stiffness (rim 12.4 C, scaled
 // x1.15 to reach SNR 1.5) under AR(1) noise at phi 0.984 with jittered stamps, 2,042 rows on a
 // torque staircase (power table seed 20261237, draw 0). The fit ended on the plausible box's edge
