@@ -155,6 +155,7 @@ bool whole_request_arrived(socket_t sock) {
   if (text.find("\ntransfer-encoding:") != std::string::npos) return false;
   const std::size_t length = text.find("\ncontent-length:");
   if (length == std::string::npos) return true;
+  if (text.find("\ncontent-length:", length + 1) != std::string::npos) return false;   // two: not ours to judge
   const std::size_t value = text.find_first_not_of(" \t", length + 16);
   return value != std::string::npos && text.compare(value, 3, "0\r\n") == 0;
 }
