@@ -213,9 +213,9 @@ class Generalisation : public ::testing::TestWithParam<std::string> {};
 TEST_P(Generalisation, NamesThePhysicsBeatsSindyAndReachesTheNoiseFloorOnHeldOutData) {
   // Known regressions of the issue-37 session's claim rule (its closing note): these cases passed
   // before it and fail after it. Skipped by name, with the reason; each is to be made to pass again.
-  // misalignment_and_offset: since the surrogate test (docs/diagnosis.md, "The claim rule"), the
-  // offset beside 2.7 kN·m of slow structure is no more than its wander.
-  static const std::set<std::string> known_regressions{"zero_drift", "temperature_friction", "misalignment_and_offset"};
+  // (misalignment_and_offset, skipped from the surrogate test until its level was judged on the
+  // block means' standard error, passes again.)
+  static const std::set<std::string> known_regressions{"zero_drift", "temperature_friction"};
   if (known_regressions.count(GetParam()) && !std::getenv("GC_RUN_KNOWN_REGRESSIONS")) {
     GTEST_SKIP() << "known regression of the issue-37 claim rule: " << GetParam();
   }
