@@ -43,14 +43,8 @@ zoo::Channels clean_recording(std::uint64_t seed, bool moment_noise = true) {
 std::vector<RecordedSample> samples(const zoo::Channels& c) {
   std::vector<RecordedSample> out(c.rows());
   for (std::size_t i = 0; i < c.rows(); ++i) {
-    RecordedSample& s = out[i];
-    s.input.time_s = c.time_s[i];
-    s.input.torque_nm = c.torque_nm[i];
-    s.input.misalignment_rad = c.zeta_rad[i];
-    s.input.direction_rad = c.beta_rad[i];
-    s.input.speed_rpm = c.speed_rpm[i];
-    s.input.temperature_c = c.temperature_c[i];
-    s.measured = {c.msy_nm[i], c.msz_nm[i]};
+    out[i].input = c.sample(i);
+    out[i].measured = {c.msy_nm[i], c.msz_nm[i]};
   }
   return out;
 }

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/measurement_sample.h"
+
 namespace gc::zoo {
 
 struct Channels {
@@ -17,6 +19,8 @@ struct Channels {
   std::vector<double> msz_nm;         ///< M_sz' [N·m]
   std::size_t rows() const { return time_s.size(); }
   void resize(std::size_t n);
+  /// Row i's inputs as the model takes them.
+  MeasurementSample sample(std::size_t i) const;
 };
 
 }  // namespace gc::zoo

@@ -18,17 +18,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-MeasurementSample sample(const Channels& c, std::size_t i) {
-  MeasurementSample s;
-  s.time_s = c.time_s[i];
-  s.torque_nm = c.torque_nm[i];
-  s.misalignment_rad = c.zeta_rad[i];
-  s.direction_rad = c.beta_rad[i];
-  s.speed_rpm = c.speed_rpm[i];
-  s.temperature_c = c.temperature_c[i];
-  return s;
-}
-
 // One truth in physical form: the sensor moments at row i with the effect's amplitude parameters
 // times lambda (shape parameters fixed), lambda at most lam_max (the physical bounds).
 struct Physical {
@@ -148,7 +137,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // teeth summed, int(qN/4), steps with the torque, so a trial change scaled is no gain at all.
     const double g = signed_uniform(rng, 0.01, 0.05);
     p.moments = [&model, &truth, g](double lam, std::size_t i) {
-      MeasurementSample s = sample(truth, i);
+      MeasurementSample s = truth.sample(i);
       s.torque_nm *= 1.0 + lam * g;
       return model.predict(s).moments;
     };
@@ -161,7 +150,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // sum (int(qN/4) steps with the misalignment too: solved at every size, never scaled).
     const double z0 = 0.02 * jam, b0 = rng.uniform(-kPi, kPi);
     p.moments = [&model, &truth, z0, b0](double lam, std::size_t i) {
-      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * z0, b0)).moments;
+      return model.predict(independent::with_added_misalignment(truth.sample(i), lam * z0, b0)).moments;
     };
     p.describe = [=](double lam) {
       return format("offset %.4f xi (%.3g mrad) at %.2f rad (drawn 0.02 xi)", lam * z0 / jam, lam * z0 * 1e3, b0);
@@ -172,7 +161,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // Section 6.3: mu rises at low torque and with misalignment: mu0 + a T_ref / T + b zeta / xi.
     const double mu0 = rng.uniform(0.02, 0.3), a = rng.uniform(0.0, 0.15), b = rng.uniform(0.0, 0.3), tref = 1.5e6 * tscale;
     p.moments = [&model, mu0, a, b, tref, jam, &truth](double lam, std::size_t i) {
-      return independent::with_contact_change(model, sample(truth, i), [=](OperatingPoint& op, double&) {
+      return independent::with_contact_change(model, truth.sample(i), [=](OperatingPoint& op, double&) {
         const double drawn = mu0 + a * tref / op.torque_nm + b * op.misalignment_rad / jam;
         op.friction_coefficient = std::clamp(0.1 + lam * (drawn - 0.1), 0.0, 0.6);
       });
@@ -195,7 +184,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // Eqs 44-47: the moments turn by s phi T / (T + T_s) instead of the paper's phi.
     const double s = rng.uniform(0.0, 1.5), ts = rng.chance(0.3) ? 0.0 : rng.uniform(0.0, 1.5e6) * tscale;
     p.moments = [&model, &truth, s, ts, phi](double lam, std::size_t i) {
-      return independent::with_contact_change(model, sample(truth, i), [=](OperatingPoint& op, double& shift) {
+      return independent::with_contact_change(model, truth.sample(i), [=](OperatingPoint& op, double& shift) {
         shift += lam * (s * phi * op.torque_nm / (op.torque_nm + ts) - phi);
       });
     };
@@ -207,7 +196,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // Section 6.3.1: an unseen misalignment vector, summed with the measured one.
     const double z0 = rng.uniform(0.05, 0.3) * jam, b0 = rng.uniform(-kPi, kPi);
     p.moments = [&model, &truth, z0, b0](double lam, std::size_t i) {
-      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * z0, b0)).moments;
+      return model.predict(independent::with_added_misalignment(truth.sample(i), lam * z0, b0)).moments;
     };
     p.describe = [=](double lam) { return format("zeta0 %.3f xi at %.2f rad", lam * z0 / jam, b0); };
     p.lam_max = std::min(0.05, 0.35 * jam) / z0;
@@ -218,7 +207,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     p.moments = [&model, &truth, ze, s, k, g, tm](double lam, std::size_t i) {
       const double t = truth.torque_nm[i], th = s * tm;
       const double fade = t < th ? 1.0 - std::pow(t / th, k) : 0.0;
-      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * ze * fade, g)).moments;
+      return model.predict(independent::with_added_misalignment(truth.sample(i), lam * ze * fade, g)).moments;
     };
     p.describe = [=](double lam) {
       return format("zeta_e %.3f xi, threshold %.2f T_m (T_m %.3g MN·m), sharpness %.2f, gravity %.2f rad", lam * ze / jam, s, tm / 1e6, k, g);
@@ -231,7 +220,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     auto rebuilt = std::make_shared<Rebuilt>(model, [r](double lam, CouplingDefinition& c, ContactOptions&) {
       c.youngs_modulus_pa *= 1.0 / (1.0 + lam / r);
     });
-    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(sample(truth, i)).moments; };
+    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(truth.sample(i)).moments; };
     p.describe = [=](double lam) { return format("rim stiffness %.3g C: mesh at %.3f of eq 5", r, 1.0 / (1.0 + lam / r)); };
     p.lam_max = 9.0 * r;
   } else if (name == "spacing_errors") {
@@ -240,7 +229,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     auto rebuilt = std::make_shared<Rebuilt>(model, [e](double lam, CouplingDefinition&, ContactOptions& o) {
       o.spacing_error_m += lam * e;
     });
-    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(sample(truth, i)).moments; };
+    p.moments = [rebuilt, &truth](double lam, std::size_t i) { return rebuilt->at(lam).predict(truth.sample(i)).moments; };
     p.describe = [=](double lam) { return format("spacing error %.3g um", lam * e * 1e6); };
     p.lam_max = 1e-4 / e;
   } else if (name == "channel_gain_offset") {
@@ -265,7 +254,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
       (*travel)[i] = std::abs(d) > 1e-9 * jam ? (d > 0 ? 1 : -1) : (*travel)[i - 1];
     }
     p.moments = [&model, &truth, lag, travel](double lam, std::size_t i) {
-      MeasurementSample s = sample(truth, i);
+      MeasurementSample s = truth.sample(i);
       s.misalignment_rad = std::max(0.0, s.misalignment_rad - (*travel)[i] * lam * lag);
       return model.predict(s).moments;
     };
@@ -275,7 +264,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // Section 3: the displacement sensors' lever arm: the coupling sees (1 + k) zeta.
     const double k = signed_uniform(rng, 0.03, 0.2);
     p.moments = [&model, &truth, k](double lam, std::size_t i) {
-      MeasurementSample s = sample(truth, i);
+      MeasurementSample s = truth.sample(i);
       s.misalignment_rad *= 1.0 + lam * k;
       return model.predict(s).moments;
     };
@@ -285,7 +274,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // Section 3: the torque flange's slope and curvature: T carried = T (1 + k + c T / 1 MN·m).
     const double k = rng.uniform(-0.05, 0.05), c = rng.uniform(-0.05, 0.05);
     p.moments = [&model, &truth, k, c](double lam, std::size_t i) {
-      MeasurementSample s = sample(truth, i);
+      MeasurementSample s = truth.sample(i);
       s.torque_nm *= 1.0 + lam * (k + c * s.torque_nm / 1e6);
       return model.predict(s).moments;
     };
@@ -297,7 +286,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     double dmax = 0.0;
     for (double t : truth.temperature_c) dmax = std::max(dmax, std::abs(t - th0));
     p.moments = [&model, &truth, g, th0, bt](double lam, std::size_t i) {
-      return model.predict(independent::with_added_misalignment(sample(truth, i), lam * g * (truth.temperature_c[i] - th0), bt)).moments;
+      return model.predict(independent::with_added_misalignment(truth.sample(i), lam * g * (truth.temperature_c[i] - th0), bt)).moments;
     };
     p.describe = [=](double lam) { return format("growth %.3g rad/degC from %.1f degC at %.2f rad", lam * g, th0, bt); };
     p.lam_max = std::min(2e-3 / std::abs(g), dmax > 0 ? 0.35 * jam / (std::abs(g) * dmax) : inf);
@@ -349,7 +338,7 @@ Physical make_physical(const std::string& name, const CouplingModel& model, doub
     // (a switch: its change is scaled linearly).
     auto rebuilt = std::make_shared<Rebuilt>(model, [](double, CouplingDefinition&, ContactOptions& o) { o.continuous_quarter_sums = true; });
     p.moments = [rebuilt, &truth](double lam, std::size_t i) {
-      const SensorMoments m = rebuilt->at(1.0).predict(sample(truth, i)).moments;
+      const SensorMoments m = rebuilt->at(1.0).predict(truth.sample(i)).moments;
       return SensorMoments{truth.msy_nm[i] + lam * (m.y_nm - truth.msy_nm[i]), truth.msz_nm[i] + lam * (m.z_nm - truth.msz_nm[i])};
     };
     p.describe = [](double) { return std::string("continuous quarter sums (the switch's change, scaled)"); };

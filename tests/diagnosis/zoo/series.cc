@@ -8,6 +8,17 @@
 
 namespace gc::zoo {
 
+MeasurementSample Channels::sample(std::size_t i) const {
+  MeasurementSample s;
+  s.time_s = time_s[i];
+  s.torque_nm = torque_nm[i];
+  s.misalignment_rad = zeta_rad[i];
+  s.direction_rad = beta_rad[i];
+  s.speed_rpm = speed_rpm[i];
+  s.temperature_c = temperature_c[i];
+  return s;
+}
+
 void Channels::resize(std::size_t n) {
   for (auto* v : {&time_s, &torque_nm, &zeta_rad, &beta_rad, &speed_rpm, &temperature_c, &msy_nm, &msz_nm}) v->resize(n);
 }

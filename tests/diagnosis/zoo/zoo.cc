@@ -20,23 +20,12 @@ double three_digits(double x) {
   return std::round(x / p) * p;
 }
 
-SensorMoments predict_row(const CouplingModel& model, const Channels& c, std::size_t i) {
-  MeasurementSample s;
-  s.time_s = c.time_s[i];
-  s.torque_nm = c.torque_nm[i];
-  s.misalignment_rad = c.zeta_rad[i];
-  s.direction_rad = c.beta_rad[i];
-  s.speed_rpm = c.speed_rpm[i];
-  s.temperature_c = c.temperature_c[i];
-  return model.predict(s).moments;
-}
-
 // The model's prediction at the true inputs, on two threads for long records.
 void predict(const CouplingModel& model, Channels& c) {
   const std::size_t n = c.rows();
   auto part = [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i) {
-      const SensorMoments m = predict_row(model, c, i);
+      const SensorMoments m = model.predict(c.sample(i)).moments;
       c.msy_nm[i] = m.y_nm;
       c.msz_nm[i] = m.z_nm;
     }
@@ -65,7 +54,7 @@ void set_oracle_bound(const CouplingModel& model, const Channels& truth, const C
   for (std::size_t i = 0; i < n; ++i) {
     SensorMoments read;
     try {
-      read = predict_row(model, logged, i);
+      read = model.predict(logged.sample(i)).moments;
     } catch (const std::exception&) {
       continue;
     }
