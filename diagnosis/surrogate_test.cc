@@ -451,8 +451,8 @@ SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::Matr
 double level_standard_error(const Eigen::VectorXd& means) {
   const double m = static_cast<double>(means.size());
   const Eigen::ArrayXd about = means.array() - means.mean();
-  const double spread = std::sqrt(about.square().sum() / (m - 1.0));
   const double sum_squares = about.square().sum();
+  const double spread = std::sqrt(sum_squares / (m - 1.0));
   if (!(sum_squares > 0.0)) return spread;
   // Adjacent means' correlation, its bias on m means added back (Marriott and Pope 1954:
   // -(1 + 3 rho) / m), and 2.33 of its standard errors above that: a one-sided 1 % bound.

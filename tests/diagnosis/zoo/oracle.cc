@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -104,7 +105,10 @@ OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<
   const double cyy = std::inner_product(ey.begin(), ey.end(), ey.begin(), 0.0) / m;
   const double czz = std::inner_product(ez.begin(), ez.end(), ez.begin(), 0.0) / m;
   double cyz = std::inner_product(ey.begin(), ey.end(), ez.begin(), 0.0) / m;
-  if (cyy <= 0.0 || czz <= 0.0) return bound;   // a channel without noise: no bound (d 0)
+  if (!(cyy > 0.0 && czz > 0.0)) {   // a channel without noise: no bound
+    bound.d = bound.power = std::numeric_limits<double>::quiet_NaN();
+    return bound;
+  }
   if (cyz * cyz > 0.999 * cyy * czz) cyz = std::copysign(std::sqrt(0.999 * cyy * czz), cyz);
   const double det = cyy * czz - cyz * cyz;
   double d2 = 0.0;

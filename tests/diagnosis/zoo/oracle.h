@@ -23,7 +23,7 @@
 namespace gc::zoo {
 
 struct OracleBound {
-  double d = 0.0;       ///< sqrt(s' Sigma^-1 s) over both channels
+  double d = 0.0;       ///< sqrt(s' Sigma^-1 s) over both channels; NaN where a channel has no noise
   double power = 0.0;   ///< Phi(d - z_0.01): the best power of any one-sided 1 % test
   int order_y = 0, order_z = 0;   ///< the autoregressions' orders
 };
