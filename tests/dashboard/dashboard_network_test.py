@@ -203,15 +203,26 @@ def test_a_whole_request_from_a_host_at_its_limit_is_answered_and_one_still_send
     head a byte at a time, a 9th whose whole GET has arrived (a proxy's, or a loaded client's
     burst) is answered; a 9th still sending gets 429."""
     port = dashboard["port"]
-    slow = []
+    slow, stop = [], threading.Event()
+
+    def trickle():   # a byte each 0.5 s: within the 2 s between reads, so they stay counted
+        while not stop.wait(0.5):
+            for s in slow:
+                try:
+                    s.sendall(b"x")
+                except OSError:
+                    pass
+
+    keeper = threading.Thread(target=trickle, daemon=True)
     try:
         for _ in range(8):
             s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
             s.bind((ATTACKER, 0))
             s.connect(("127.0.0.1", port))
-            s.sendall(b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")
+            s.sendall(b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: ")
             slow.append(s)
-        time.sleep(0.5)   # each taken by a thread and counted (the deadline is 5 s, 2 s a read)
+        keeper.start()
+        time.sleep(1.0)   # each taken by a thread and counted (5 s for the whole request)
 
         def ask(head):
             with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
@@ -229,6 +240,9 @@ def test_a_whole_request_from_a_host_at_its_limit_is_answered_and_one_still_send
         # A body announced is still to come: counted, so refused.
         assert ask(b"POST /api/apply HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 10\r\n\r\n") == 429
     finally:
+        stop.set()
+        if keeper.is_alive():
+            keeper.join(timeout=2)
         for s in slow:
             s.close()
     _, metrics, _ = request(port, "GET", "/metrics", {"Host": "127.0.0.1"})
