@@ -226,11 +226,11 @@ std::string round_verdict_body(int number, const DiagnosisRound& round) {
       }
       const std::string where =
           round.formula_on_dense_rows ? " (found on the recording's dense rows: too weak for the search rows)" : "";
+      const std::string residual = "the residual in " + channels(round.channel_reduction);
       const std::string lead = round.formula_simpler_and_better
-                                   ? "a formula explains the residual in " + channels(round.channel_reduction) +
-                                         " better than any effect of the library" + effect + where + ": "
-                                   : "no effect of the library explains the residual in " +
-                                         channels(round.channel_reduction) + effect + "; a formula does" + where + ": ";
+                                   ? "a formula explains " + residual + " better than any effect of the library" + effect +
+                                         where + ": "
+                                   : "no effect of the library explains " + residual + effect + "; a formula does" + where + ": ";
       return head + lead + formula_text(*round.claimed) + ". " + gain_text(round, c) +
              ". The search continues with it (an expression effect in the model file)." + dropped_text(round);
     }
