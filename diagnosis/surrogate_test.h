@@ -119,10 +119,10 @@ struct SurrogateDesign {
 /// adjacent ones correlated, rho near 1) give the spread: a walk's mean is as far from zero as its
 /// blocks wander, and a random walk's level is no offset. Means nearly independent (a noise whose
 /// correlation is shorter than a block) give about 0.39 of the spread for 21 (1.7 / sqrt(21)):
-/// in a family of 15 a level must stand about 1.9 spreads out, where the spread alone asked for
-/// 4.8. A heavier hub's offset of 4.7 kN·m, 44 % of the held-out error at t = 21, under an AR(1)
-/// whose correlation was shorter than a block, was no claim with the spread (p = 0.033 in the
-/// family; zoo power seed 20261263, draw 7).
+/// in a family of 15 a level must stand about 1.8 spreads out, where the spread alone asked for
+/// 4.6 (Student's t at 0.01 / 60, 20 degrees of freedom). A heavier hub's offset of 4.7 kN·m, 44 %
+/// of the held-out error at t = 21, under an AR(1) whose correlation was shorter than a block, was
+/// no claim with the spread (p = 0.033 in the family; zoo power seed 20261263, draw 7).
 double level_standard_error(const Eigen::VectorXd& means);
 
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
