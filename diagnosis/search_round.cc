@@ -11,6 +11,7 @@
 #include "diagnosis/claim_rule.h"
 #include "diagnosis/claimed_effects.h"
 #include "diagnosis/delay_estimate.h"
+#include "diagnosis/thermal_growth_estimate.h"
 #include "diagnosis/input_noise_check.h"
 #include "diagnosis/mains_pickup.h"
 #include "diagnosis/noise_estimate.h"
@@ -149,6 +150,10 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   std::vector<ParameterValues> hints;
   if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows), parallel)) {
     hints.push_back({{"delay_s", *delay}});
+  }
+  // The vector a growth asks for, as a line in the oil temperature: a start for thermal_misalignment.
+  if (const auto growth = thermal_growth_estimate(model, observations, search, settings.library, parallel)) {
+    hints.push_back(*growth);
   }
   // The formula's search needs nothing of the effects' ranking and runs on one thread: beside the
   // ranking, not after it (about 0.07 s of a 20,000-row diagnosis on one thread, in a profile).
