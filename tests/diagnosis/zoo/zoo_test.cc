@@ -362,7 +362,7 @@ TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
 // table seed 20261267, draw 1: 2,919 rows at 411 Hz, low-passed, white and averaged noise): mostly a
 // constant vector with a slope on it. From the box's probes the fit stopped with theta_0 inside the
 // recorded range and assembly_misalignment was named first; so in 4 of that seed's 10 draws. The
-// line the residual asks for, in the vector itself (thermal_growth_estimate.h), starts the fit in
+// line the residual asks for, in the vector itself (misalignment_line.h), starts the fit in
 // the growth's valley: named first, its growth within a third of the truth.
 TEST(NoiseZooPower, AThermalGrowthAlignedBelowTheRecordedTemperaturesStartsFromItsLine) {
   const PowerDraw p = diagnosed_power_draw(20261267, 1, "thermal_misalignment");
