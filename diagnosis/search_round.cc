@@ -11,7 +11,6 @@
 #include "diagnosis/claim_rule.h"
 #include "diagnosis/claimed_effects.h"
 #include "diagnosis/delay_estimate.h"
-#include "diagnosis/misalignment_line.h"
 #include "diagnosis/input_noise_check.h"
 #include "diagnosis/mains_pickup.h"
 #include "diagnosis/noise_estimate.h"
@@ -150,11 +149,6 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   std::vector<ParameterValues> hints;
   if (const auto delay = moment_delay_estimate(observations, signature_rows, select_rows(residual, rows, signature_rows), parallel)) {
     hints.push_back({{"delay_s", *delay}});
-  }
-  // The misalignment vector the residual asks for, as a line in the oil temperature and in the
-  // torque: starts for thermal_misalignment and eccentricity (misalignment_line.h).
-  for (const auto& starts : {thermal_growth_starts, eccentricity_starts}) {
-    for (ParameterValues& values : starts(model, observations, search, settings.library, parallel)) hints.push_back(std::move(values));
   }
   // The formula's search needs nothing of the effects' ranking and runs on one thread: beside the
   // ranking, not after it (about 0.07 s of a 20,000-row diagnosis on one thread, in a profile).

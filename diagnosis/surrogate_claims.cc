@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include "diagnosis/formula_search.h"
-#include "diagnosis/misalignment_line.h"
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/stacked_channels.h"
 
@@ -160,21 +159,6 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
   });
   for (std::optional<Eigen::MatrixXd>& columns : at_points) {
     if (columns && columns->allFinite()) design.elsewhere.push_back(std::move(*columns));
-  }
-  // A fit that started from the line the residual asks for searched that whole family
-  // (misalignment_line.h): the null is scanned over it too, linearised at the fit. And drawn from
-  // the residual's own spectrum: a line in a slow input (the oil temperature, a torque programme)
-  // fitted to slow noise takes so much of its slow power that what it leaves, given back at most
-  // tenfold (SurrogateSpectrum::kMostRestored), is no walk; brown noise along a cooling oil was
-  // claimed as a growth at p = 0.005, none of 6,000 surrogates explained as well (noise zoo seed
-  // 20261268, draw 370; slow families seed 20261269, draws 82, a growth, and 33, a sag, claimed
-  // before the line too). The effect's own slow power then counts as noise against it: a growth
-  // or a sag must stand out of the residual's whole spectrum.
-  std::optional<Eigen::MatrixXd> line = misalignment_line_design(
-      registration.info->name, model_with(model, registration, values), observations, rows, parallel);
-  if (line && line->allFinite()) {
-    design.elsewhere.push_back(std::move(*line));
-    design.null_of_the_residual = true;
   }
   return design;
 }

@@ -358,19 +358,6 @@ TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
   EXPECT_LT(first_value_of(p.json, "growth_rad_per_c"), -150e-6) << p.json.substr(0, 3000);
 }
 
-// A thermal growth of 61.2 urad/degC aligned at 19.1 degC, recorded while the oil is warmer (power
-// table seed 20261267, draw 1: 2,919 rows at 411 Hz, low-passed, white and averaged noise): mostly a
-// constant vector with a slope on it. From the box's probes the fit stopped with theta_0 inside the
-// recorded range and assembly_misalignment was named first; so in 4 of that seed's 10 draws. The
-// line the residual asks for, in the vector itself (misalignment_line.h), starts the fit in
-// the growth's valley: named first, its growth within a third of the truth.
-TEST(NoiseZooPower, AThermalGrowthAlignedBelowTheRecordedTemperaturesStartsFromItsLine) {
-  const PowerDraw p = diagnosed_power_draw(20261267, 1, "thermal_misalignment");
-  ASSERT_NE(p.draw.description.find("growth 6.12e-05 rad/degC from 19.1 degC"), std::string::npos) << p.draw.description;
-  EXPECT_TRUE(named_first(p, "thermal_misalignment"));
-  EXPECT_NEAR(first_value_of(p.json, "growth_rad_per_c"), 61.2e-6, 20e-6) << p.json.substr(0, 3000);
-}
-
 // A spacing error at the library's physical bound, 100 um, scaled x1.40 to reach SNR 1.5, on the
 // same recording (seed 20261241, draw 2). Inside the plausible 0-50 um the fit found a valley at
 // 42 um, and a torque calibration with a curvature four times its plausible range was named
