@@ -46,7 +46,10 @@ void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen:
   std::size_t simplest = 0;
   for (std::size_t k = 1; k < ranking.size(); ++k) {
     const CandidateScore& c = ranking[k];
-    if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || !plausible(c)) continue;
+    // Plausible or not: a range is advice, and a simpler effect a little past its range names what
+    // the data shows as well as one with more parameters that stays within theirs. One held on a
+    // physical bound cannot say how far beyond it the truth lies, and does not take the place.
+    if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || at_bound(c)) continue;
     if (c.info->parameters.size() >= ranking[simplest].info->parameters.size()) continue;
     double similarity = 0.0;
     PairedBlockTest t;
