@@ -50,7 +50,7 @@ void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen:
     // the data shows as well as one with more parameters that stays within theirs. One held on a
     // physical bound cannot say how far beyond it the truth lies, and does not take the place.
     if (!c.info || !c.replaces.empty() || !claimable(c, base_ms, noise_ms, settings) || at_bound(c)) continue;
-    if (c.info->parameters.size() >= ranking[simplest].info->parameters.size()) continue;
+    if (fitted_parameter_count(c) >= fitted_parameter_count(ranking[simplest])) continue;
     double similarity = 0.0;
     PairedBlockTest t;
     if (alike(ranking.front(), c, base, folds, settings, similarity, t)) simplest = k;

@@ -1,7 +1,8 @@
 // Which of the ranked candidates a round would claim, moved to the front of the ranking: plausible
 // before implausible unless significantly worse, and of candidates alike on held-out rows, the one
 // with fewer parameters (a simpler swap of an earlier claim, or the simplest alike effect, plausible
-// or not: among candidates the data cannot tell apart, fewer parameters outrank a plausible range).
+// or not: among candidates the data cannot tell apart, fewer fitted parameters outrank a plausible
+// range).
 #pragma once
 
 #include <vector>
@@ -27,8 +28,10 @@ void put_claim_first(std::vector<CandidateScore>& ranking, double base_ms, doubl
 void put_simpler_swap_first(std::vector<CandidateScore>& ranking, const Folds& folds, const DiagnosisSettings& settings);
 
 /// Of the claimable effects alike to the one ranked first (alike()) and not held on a physical
-/// bound, the one with the fewest parameters goes first: where the data cannot tell two apart, the
-/// simpler model, plausible or not. An assembly misalignment (two parameters) and a thermal
+/// bound, the one with the fewest fitted parameters goes first: where the data cannot tell two
+/// apart, the simpler model, plausible or not. A parameter held at the model's value (the data could
+/// not determine it) is not fitted: a refined friction with its reference torque and misalignment
+/// share held fits two, against a gain and offset's four (power table seed 20261278, draw 5). An assembly misalignment (two parameters) and a thermal
 /// misalignment (more) fit a recording at a nearly steady oil temperature alike; the simpler says as
 /// much with less. At a steady torque a torque gain of 10.6 % scales the moments as a gain and
 /// offset of both channels does (four parameters, the gains within their plausible 10 %): the
