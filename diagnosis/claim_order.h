@@ -29,14 +29,16 @@ void put_simpler_swap_first(std::vector<CandidateScore>& ranking, const Folds& f
 
 /// Of the claimable effects alike to the one ranked first (alike()) and not held on a physical
 /// bound, the one with the fewest fitted parameters goes first: where the data cannot tell two
-/// apart, the simpler model, plausible or not. A parameter held at the model's value (the data could
-/// not determine it) is not fitted: a refined friction with its reference torque and misalignment
-/// share held fits two, against a gain and offset's four (power table seed 20261278, draw 5). An assembly misalignment (two parameters) and a thermal
-/// misalignment (more) fit a recording at a nearly steady oil temperature alike; the simpler says as
-/// much with less. At a steady torque a torque gain of 10.6 % scales the moments as a gain and
-/// offset of both channels does (four parameters, the gains within their plausible 10 %): the
-/// torque calibration, its slope at 0.050 just past its plausible 5 %, is named (power table seed
-/// 20261270, draw 0; a compliance at 0.50 of eq 5, below its plausible 0.6, likewise).
+/// apart, the simpler model, plausible or not.
+/// - An assembly misalignment (two parameters) and a thermal misalignment (more) fit a recording at
+///   a nearly steady oil temperature alike; the simpler says as much with less.
+/// - At a steady torque a torque gain of 10.6 % scales the moments as a gain and offset of both
+///   channels does (four parameters, the gains within their plausible 10 %): the torque
+///   calibration, its slope at 0.050 just past its plausible 5 %, is named (power table seed
+///   20261270, draw 0; a compliance at 0.50 of eq 5, below its plausible 0.6, likewise).
+/// - A parameter held at the model's value (the data could not determine it) is not fitted: a
+///   refined friction with its reference torque and misalignment share held fits two, against a
+///   gain and offset's four (power table seed 20261278, draw 5).
 void put_simplest_alike_first(std::vector<CandidateScore>& ranking, const Eigen::MatrixX2d& base, const Folds& folds,
                               double base_ms, double noise_ms, const DiagnosisSettings& settings);
 
