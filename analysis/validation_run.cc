@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <future>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <span>
 
@@ -22,18 +23,19 @@ struct Outcome {
   std::string message;
 };
 
-// Samples [begin, end) of `samples`, each predicted from all of `samples` (predict_at), into
-// outcomes[0, end - begin).
+// Samples [begin, end) of `samples`, each predicted from all of `samples` (as predict_at, the
+// slice at once: CouplingModel::moments_at), into outcomes[0, end - begin).
 void predict_range(const CouplingModel& model, std::span<const RecordedSample> samples,
                    std::size_t begin, std::size_t end, std::size_t first, std::vector<Outcome>& outcomes) {
-  for (std::size_t i = begin; i < end; ++i) {
-    Outcome& outcome = outcomes[i - first];
-    try {
-      outcome.moments = model.predict_at(samples, i).moments;
-    } catch (const InvalidInput& error) {
-      outcome = {std::nullopt, error.field(), error.what()};
-    } catch (const ModelError& error) {
-      outcome = {std::nullopt, "model", error.what()};
+  std::vector<std::size_t> rows(end - begin);
+  std::iota(rows.begin(), rows.end(), begin);
+  const CouplingModel::MomentsAtRows m = model.moments_at(samples, rows);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    Outcome& outcome = outcomes[rows[k] - first];
+    if (m.errors[k].empty()) {
+      outcome.moments = m.moments[k];
+    } else {
+      outcome = {std::nullopt, m.fields[k].empty() ? "model" : m.fields[k], m.errors[k]};
     }
   }
 }

@@ -64,16 +64,50 @@ ModelPrediction CouplingModel::with_history(ModelPrediction prediction, const In
   return prediction;
 }
 
-ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
-  if (!times_inputs_) return with_history(predict(recording[i].input), {recording, i});
+ModelPrediction CouplingModel::predict_timed(std::span<const RecordedSample> recording, std::size_t i) const {
+  if (!times_inputs_) return predict(recording[i].input);
   const InputTiming timing = input_timing(recording[i].input);
-  return with_history(predict(timing.none() ? recording[i].input : timed_input(recording, i, timing)), {recording, i});
+  return predict(timing.none() ? recording[i].input : timed_input(recording, i, timing));
+}
+
+ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
+  return with_history(predict_timed(recording, i), {recording, i});
 }
 
 ModelPrediction CouplingModel::predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const {
   if (!times_inputs_) return with_history(predict(sequence[i]), {sequence, i});
   const InputTiming timing = input_timing(sequence[i]);
   return with_history(predict(timing.none() ? sequence[i] : timed_input(sequence, i, timing)), {sequence, i});
+}
+
+CouplingModel::MomentsAtRows CouplingModel::moments_at(std::span<const RecordedSample> recording,
+                                                      std::span<const std::size_t> rows) const {
+  MomentsAtRows out;
+  out.moments.resize(rows.size());
+  out.errors.resize(rows.size());
+  out.fields.resize(rows.size());
+  std::vector<std::size_t> predicted;  // positions k of rows the model took
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    try {
+      out.moments[k] = predict_timed(recording, rows[k]).moments;
+      predicted.push_back(k);
+    } catch (const InvalidInput& e) {
+      out.errors[k] = e.what();
+      out.fields[k] = e.field();
+    } catch (const ModelError& e) {
+      out.errors[k] = e.what();
+    }
+  }
+  if (!reads_history_ || predicted.empty()) return out;
+  std::vector<std::size_t> at(predicted.size());
+  std::vector<SensorMoments> moments(predicted.size());
+  for (std::size_t j = 0; j < predicted.size(); ++j) {
+    at[j] = rows[predicted[j]];
+    moments[j] = out.moments[predicted[j]];
+  }
+  for (const auto& effect : effects_) effect->adjust_outputs_in_history_at(recording, at, moments);
+  for (std::size_t j = 0; j < predicted.size(); ++j) out.moments[predicted[j]] = moments[j];
+  return out;
 }
 
 bool CouplingModel::has_effect(const std::string& name) const {

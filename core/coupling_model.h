@@ -62,6 +62,15 @@ class CouplingModel {
   /// predict(sequence[i]) for a model without such effects.
   ModelPrediction predict_at(std::span<const RecordedSample> recording, std::size_t i) const;
   ModelPrediction predict_at(std::span<const MeasurementSample> sequence, std::size_t i) const;
+  /// predict_at's moments at each of `rows` of a recording (any order; in time order they share
+  /// the effects' passes over the history, Effect::adjust_outputs_in_history_at): the same numbers,
+  /// to the bit. A row the model refuses (ModelError) has its message and no moments.
+  struct MomentsAtRows {
+    std::vector<SensorMoments> moments;  ///< M_sy', M_sz' at rows[k] [N·m]; zero where errors[k] is set
+    std::vector<std::string> errors;     ///< why the model refused rows[k]; empty where it was predicted
+    std::vector<std::string> fields;     ///< the input it refused (InvalidInput::field); empty for others
+  };
+  MomentsAtRows moments_at(std::span<const RecordedSample> recording, std::span<const std::size_t> rows) const;
   /// The sum of the effects' input timings at this sample.
   InputTiming input_timing(const MeasurementSample& sample) const;
   /// Whether predict_at(recording, i) reads samples other than i (an effect times the inputs or
@@ -82,6 +91,8 @@ class CouplingModel {
   bool times_inputs_ = false;  ///< some effect times the inputs (predict_at looks them up)
   bool reads_history_ = false;  ///< some effect's outputs depend on the inputs before the sample
 
+  /// predict() on sample i's inputs as the moment channels see them (the effects' input timing).
+  ModelPrediction predict_timed(std::span<const RecordedSample> recording, std::size_t i) const;
   /// The effects' adjust_outputs_in_history on `prediction`.
   ModelPrediction with_history(ModelPrediction prediction, const InputHistory& history) const;
 };

@@ -4,7 +4,6 @@
 #include <mutex>
 #include <numeric>
 
-#include "core/model_error.h"
 
 namespace gc {
 
@@ -15,16 +14,18 @@ ModelResiduals model_residuals(const CouplingModel& model, std::span<const Recor
   std::mutex mutex;
   std::vector<std::pair<std::size_t, std::string>> failures;
   parallel(rows.size(), [&](std::size_t begin, std::size_t end) {
+    // The rows of a chunk at once: a model that reads the history shares its passes between them
+    // (CouplingModel::moments_at), with the numbers of predict_at row by row, whatever the chunks.
+    const CouplingModel::MomentsAtRows m = model.moments_at(observations, rows.subspan(begin, end - begin));
     for (std::size_t k = begin; k < end; ++k) {
-      const RecordedSample& o = observations[rows[k]];
-      try {
-        const SensorMoments m = model.predict_at(observations, rows[k]).moments;
-        out.residual(static_cast<Eigen::Index>(k), 0) = o.measured.y_nm - m.y_nm;
-        out.residual(static_cast<Eigen::Index>(k), 1) = o.measured.z_nm - m.z_nm;
-      } catch (const ModelError& e) {
+      if (!m.errors[k - begin].empty()) {
         const std::lock_guard<std::mutex> lock(mutex);
-        failures.emplace_back(rows[k], e.what());
+        failures.emplace_back(rows[k], m.errors[k - begin]);
+        continue;
       }
+      const RecordedSample& o = observations[rows[k]];
+      out.residual(static_cast<Eigen::Index>(k), 0) = o.measured.y_nm - m.moments[k - begin].y_nm;
+      out.residual(static_cast<Eigen::Index>(k), 1) = o.measured.z_nm - m.moments[k - begin].z_nm;
     }
   });
   // Sorted, so the report does not depend on which thread met a failure first.

@@ -1,8 +1,8 @@
 #include "clients/python/predictions.h"
 
 #include <algorithm>
-#include <exception>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -36,18 +36,17 @@ CaseTableObject predict_recording(const Model& model, const Recording& recording
     py::gil_scoped_release release;
     thread_parallel_for(threads)(samples.size(), [&](std::size_t begin, std::size_t end) {
       constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      // The slice at once, as validate predicts it (CouplingModel::moments_at).
+      std::vector<std::size_t> rows(end - begin);
+      std::iota(rows.begin(), rows.end(), begin);
+      const CouplingModel::MomentsAtRows m = coupling_model.moments_at(samples, rows);
       for (std::size_t i = begin; i < end; ++i) {
         const RecordedSample& s = samples[i];
-        double predicted[2] = {kNaN, kNaN};
-        try {
-          const ModelPrediction p = coupling_model.predict_at(samples, i);
-          predicted[0] = p.moments.y_nm;
-          predicted[1] = p.moments.z_nm;
-          ok_data[i] = true;
-        } catch (const std::exception& error) {
-          ok_data[i] = false;
-          errors[i] = error.what();
-        }
+        const bool predicted_ok = m.errors[i - begin].empty();
+        ok_data[i] = predicted_ok;
+        if (!predicted_ok) errors[i] = m.errors[i - begin];
+        const double predicted[2] = {predicted_ok ? m.moments[i - begin].y_nm : kNaN,
+                                     predicted_ok ? m.moments[i - begin].z_nm : kNaN};
         const double row[kColumns] = {s.input.time_s, s.input.torque_nm, s.input.misalignment_rad,
                                       s.input.direction_rad, s.measured.y_nm, s.measured.z_nm,
                                       predicted[0], predicted[1], predicted[0] - s.measured.y_nm,

@@ -26,6 +26,11 @@ Effect::Effect(const EffectInfo& info, const ParameterValues& values) : info_(in
   }
 }
 
+void Effect::adjust_outputs_in_history_at(std::span<const RecordedSample> recording, std::span<const std::size_t> rows,
+                                          std::span<SensorMoments> moments) const {
+  for (std::size_t k = 0; k < rows.size(); ++k) adjust_outputs_in_history(InputHistory(recording, rows[k]), moments[k]);
+}
+
 bool has_input(const MeasurementSample& sample, OptionalInput input) {
   switch (input) {
     case OptionalInput::speed: return sample.speed_rpm.has_value();

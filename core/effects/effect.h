@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "core/input_timing.h"
 #include "core/measurement_sample.h"
 #include "core/operating_point.h"
+#include "core/recorded_sample.h"
 #include "core/tooth_contact.h"
 
 namespace gc {
@@ -127,6 +129,12 @@ class Effect {
   /// for an output that depends on the inputs before the sample (a mode of the rig ringing after a
   /// change of the load): predict_at calls it, predict() of a sample alone (at steady state) does not.
   virtual void adjust_outputs_in_history(const InputHistory& /*history*/, SensorMoments& /*moments*/) const {}
+  /// adjust_outputs_in_history at each of `rows` of `recording` (time order), on moments[k] for
+  /// rows[k]: the same numbers, to the bit, with work shared between rows where the effect can (a
+  /// ringing's pass over a block of time). This default asks row by row.
+  virtual void adjust_outputs_in_history_at(std::span<const RecordedSample> recording,
+                                            std::span<const std::size_t> rows,
+                                            std::span<SensorMoments> moments) const;
   /// True when adjust_outputs_in_history can change the moments.
   virtual bool reads_history() const { return false; }
   /// How far before a sample's time adjust_outputs_in_history reads the inputs [s] (and the one

@@ -100,6 +100,21 @@ class Expression final : private OwnedTerms, public Effect {
     }
   }
 
+  // The same, term by term over the rows: each row's sum takes the terms in the same order.
+  void adjust_outputs_in_history_at(std::span<const RecordedSample> recording, std::span<const std::size_t> rows,
+                                    std::span<SensorMoments> moments) const override {
+    for (std::size_t k = 0; k < terms_.size(); ++k) {
+      if (!terms_[k]->reads_history()) continue;
+      const std::vector<double> r = terms_[k]->history_values_at(recording, rows);
+      const Eigen::Vector2d channel = terms_[k]->history_channel();
+      for (std::size_t j = 0; j < rows.size(); ++j) {
+        const Eigen::Vector2d v = r[j] * channel;
+        moments[j].y_nm += values()[k] * v.x();
+        moments[j].z_nm += values()[k] * v.y();
+      }
+    }
+  }
+
   bool reads_history() const override {
     return std::any_of(terms_.begin(), terms_.end(), [](const ExpressionTerm* t) { return t->reads_history(); });
   }

@@ -468,6 +468,12 @@ Eigen::Vector2d ExpressionTerm::history_value(const InputHistory& history) const
   return torque_ringing_at(history, ringing) * history_channel();
 }
 
+std::vector<double> ExpressionTerm::history_values_at(std::span<const RecordedSample> recording,
+                                                     std::span<const std::size_t> rows) const {
+  if (!reads_history()) return std::vector<double>(rows.size(), 0.0);
+  return torque_ringing_at_rows(recording, rows, ringing);
+}
+
 Eigen::Vector2d ExpressionTerm::history_channel() const {
   if (!reads_history()) return Eigen::Vector2d::Zero();
   return frame == kSinY ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0);

@@ -41,8 +41,12 @@ struct ExpressionTerm {
   bool reads_history() const { return ringing.natural_frequency_hz > 0.0; }
   /// Its value at the history's sample [N·m per coefficient unit]; zero for the others.
   Eigen::Vector2d history_value(const InputHistory& history) const;
-  /// How far back history_value reads [s] (ringing_memory_s); 0 for the others.
-  double history_s() const { return reads_history() ? ringing_memory_s(ringing) : 0.0; }
+  /// history_value at each of `rows` of `recording` (time order), in one pass a block of time
+  /// (torque_ringing_at_rows): the same numbers, to the bit [N·m per coefficient unit].
+  std::vector<double> history_values_at(std::span<const RecordedSample> recording,
+                                        std::span<const std::size_t> rows) const;
+  /// How far back history_value reads [s] (ringing_history_s); 0 for the others.
+  double history_s() const { return reads_history() ? ringing_history_s(ringing) : 0.0; }
   /// The channel it acts on: (1, 0) on M_sy', (0, 1) on M_sz'; zero for the others.
   Eigen::Vector2d history_channel() const;
   /// The frequency the term oscillates at, at this sample [Hz]: k n / 60 for shaft order k, 1 / P

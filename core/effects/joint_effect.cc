@@ -73,6 +73,12 @@ void JointEffect::adjust_outputs_in_history(const InputHistory& history, SensorM
   for (const auto& m : members_) m->adjust_outputs_in_history(history, moments);
 }
 
+void JointEffect::adjust_outputs_in_history_at(std::span<const RecordedSample> recording,
+                                               std::span<const std::size_t> rows,
+                                               std::span<SensorMoments> moments) const {
+  for (const auto& m : members_) m->adjust_outputs_in_history_at(recording, rows, moments);
+}
+
 bool JointEffect::reads_history() const {
   return std::any_of(members_.begin(), members_.end(), [](const auto& m) { return m->reads_history(); });
 }

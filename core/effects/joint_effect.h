@@ -31,6 +31,8 @@ class JointEffect final : public Effect {
   void adjust_outputs(const MeasurementSample& sample, const ModelContext& context, const ModelState& state,
                       SensorMoments& moments) const override;
   void adjust_outputs_in_history(const InputHistory& history, SensorMoments& moments) const override;
+  void adjust_outputs_in_history_at(std::span<const RecordedSample> recording, std::span<const std::size_t> rows,
+                                    std::span<SensorMoments> moments) const override;
   bool reads_history() const override;
   double history_s() const override;
   /// The members' timings summed (summed_input_timing.h).

@@ -67,9 +67,23 @@ std::vector<double> ringing_sequence(std::span<const double> times_s, std::span<
 /// How long a change of the input rings: e^{-zeta w_n tau} < 1e-6 after it [s].
 double ringing_memory_s(const RingingMode& mode);
 
-/// r of the torque at the history's sample alone, summed over the changes before it back to
-/// ringing_memory_s (and the one change into that stretch): what a model that holds no state
-/// computes for one sample [N·m].
+/// How far before a sample torque_ringing_at reads the torque [s] (and the one sample before that
+/// stretch): the memory and one block (below), twice the memory.
+double ringing_history_s(const RingingMode& mode);
+
+/// r of the torque at the history's sample alone: what a model that holds no state computes for one
+/// sample [N·m]. Time falls in blocks of the memory's length, floor(t / memory); every
+/// sample of a block sums the changes from one anchor, the last sample at least a memory before
+/// the block's start (or the first sample), stepping S forward to the sample. Each sample then sees
+/// every change of its own memory and older ones forgotten below 1e-6, and the samples of a block
+/// share one pass: torque_ringing_at_rows gives the same numbers, to the bit, in O(memory) a block
+/// where summing back from each sample costs O(memory) a sample (a 1.06 Hz mode with a damping
+/// ratio of 0.2 remembers 10.4 s, 4,150 samples at 399 Hz: a diagnosis took 358 s).
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode);
+
+/// torque_ringing_at at each of `rows` of `recording` (time order), in the order of `rows`: one
+/// pass a block for rows that come in time order, to the bit the numbers of torque_ringing_at.
+std::vector<double> torque_ringing_at_rows(std::span<const RecordedSample> recording,
+                                           std::span<const std::size_t> rows, const RingingMode& mode);
 
 }  // namespace gc
