@@ -161,24 +161,41 @@ InputShrinks fit_input_shrinks(const CouplingModel& model, std::span<const Recor
   return best;
 }
 
-std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::span<const RecordedSample> observations,
-                                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
-                                               const ParallelFor& parallel) {
+namespace {
+
+/// `model`'s residual at `at` (a subset of rows, ascending) of the recording read back by `shrinks`.
+std::optional<ReadBackInputs> read_back_with(const CouplingModel& model, std::span<const RecordedSample> observations,
+                                             std::span<const std::size_t> rows, const InputShrinks& shrinks,
+                                             std::span<const std::size_t> at, const ParallelFor& parallel) {
   ReadBackInputs out;
-  out.shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
-  if (out.shrinks.none()) return std::nullopt;
-  out.recording = with_shrunk_inputs(observations, rows, out.shrinks,
-                                     model.reads_other_samples() ? std::span<const std::size_t>{} : search);
-  ModelResiduals r = model_residuals(model, out.recording, search, parallel);
+  out.shrinks = shrinks;
+  out.recording = with_shrunk_inputs(observations, rows, shrinks,
+                                     model.reads_other_samples() ? std::span<const std::size_t>{} : at);
+  ModelResiduals r = model_residuals(model, out.recording, at, parallel);
   if (!r.failed_rows.empty()) return std::nullopt;
   out.residual = std::move(r.residual);
   return out;
+}
+
+}  // namespace
+
+std::optional<ReadBackInputs> read_back_inputs(const CouplingModel& model, std::span<const RecordedSample> observations,
+                                               std::span<const std::size_t> rows, std::span<const std::size_t> search,
+                                               const ParallelFor& parallel) {
+  const InputShrinks shrinks = fit_input_shrinks(model, observations, rows, search, parallel);
+  if (shrinks.none()) return std::nullopt;
+  return read_back_with(model, observations, rows, shrinks, search, parallel);
 }
 
 const std::optional<ReadBackInputs>& ReadBackOnce::get() {
   if (!made_) read_back_ = read_back_inputs(model_, observations_, rows_, search_, parallel_);
   made_ = true;
   return read_back_;
+}
+
+std::optional<ReadBackInputs> ReadBackOnce::at(std::span<const std::size_t> other) {
+  if (!get()) return std::nullopt;
+  return read_back_with(model_, observations_, rows_, read_back_->shrinks, other, parallel_);
 }
 
 std::optional<InputShrinks> demote_what_noisy_inputs_explain(
@@ -220,24 +237,23 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
   return shrinks;
 }
 
-void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, ReadBackOnce& read_back,
+void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, const ReadBackInputs& cleaner,
                                               std::span<const RecordedSample> observations,
-                                              std::span<const std::size_t> search, const Folds& folds,
+                                              std::span<const std::size_t> rows, const Folds& folds,
                                               const FormulaSettings& settings, double least_t,
                                               const std::function<bool(const CandidateScore&)>& claimable) {
-  if (!formula.failure.empty() || !claimable(formula) || !read_back.get()) return;
-  const Eigen::MatrixX2d& cleaner = read_back.get()->residual;
-  double t = paired_block_test(cleaner, formula.held_out_residual, folds.block_of, folds.blocks).t;
+  if (!formula.failure.empty() || !claimable(formula)) return;
+  double t = paired_block_test(cleaner.residual, formula.held_out_residual, folds.block_of, folds.blocks).t;
   if (t < least_t) {
     // Physics on clean inputs is still there once the model's inputs are read back, and a formula
     // searched on what that model leaves finds it again.
-    if (const std::optional<CandidateScore> again = formula_candidate(observations, search, cleaner, folds, settings)) {
-      t = std::max(t, paired_block_test(cleaner, again->held_out_residual, folds.block_of, folds.blocks).t);
+    if (const std::optional<CandidateScore> again = formula_candidate(observations, rows, cleaner.residual, folds, settings)) {
+      t = std::max(t, paired_block_test(cleaner.residual, again->held_out_residual, folds.block_of, folds.blocks).t);
     }
   }
   if (t >= least_t) return;
   formula.failure =
-      read_back_failure(read_back.get()->shrinks, "as fitted or searched again on what that model leaves", t, least_t);
+      read_back_failure(cleaner.shrinks, "as fitted or searched again on what that model leaves", t, least_t);
 }
 
 }  // namespace gc

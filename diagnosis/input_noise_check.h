@@ -70,6 +70,10 @@ class ReadBackOnce {
                std::span<const std::size_t> rows, std::span<const std::size_t> search, const ParallelFor& parallel)
       : model_(model), observations_(observations), rows_(rows), search_(search), parallel_(parallel) {}
   const std::optional<ReadBackInputs>& get();
+  /// The same read-back model (get()'s shrinks, fitted on the search rows) at `other` rows (a subset
+  /// of rows, ascending): a formula found on a long recording's dense rows is judged there. nullopt
+  /// when get() is, or the model cannot predict one of them.
+  std::optional<ReadBackInputs> at(std::span<const std::size_t> other);
 
  private:
   const CouplingModel& model_;
@@ -95,14 +99,17 @@ std::optional<InputShrinks> demote_what_noisy_inputs_explain(
     const std::function<std::optional<EffectRegistration>(const Effect&)>& registration_for);
 
 /// The same for a formula (formula_search.h): marks `formula` failed when `claimable` holds and it
-/// beats the model fed its inputs read back by a block-paired t under `least_t`, neither as fitted
-/// nor as the formula searched afresh on the read-back model's residual. A formula's terms reach
-/// what no effect does: the model's own moments. On noisy proximity probes at a small misalignment
-/// the model's M_sz' carried the direction's noise, and a gain of -0.9 on it took 56 % of the
-/// held-out error (a noise zoo draw, seed 20261211, draw 74); the read-back model has none of it.
-void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, ReadBackOnce& read_back,
+/// beats the model fed its inputs read back (`cleaner`, on the formula's rows) by a block-paired t
+/// under `least_t`, neither as fitted nor as the formula searched afresh on the read-back model's
+/// residual. A formula's terms reach what no effect does: the model's own moments. On noisy
+/// proximity probes at a small misalignment the model's M_sz' carried the direction's noise, and a
+/// gain of -0.9 on it took 56 % of the held-out error (a noise zoo draw, seed 20261211, draw 74);
+/// the read-back model has none of it. A ringing of the torque (h * T - T, a low-pass less the
+/// input) is a smoother of a noisy torque channel: on a 399 Hz recording with a transducer's white
+/// noise, a 1.06 Hz mode took 15 % of the dense rows' held-out error (seed 20261281, draw 445).
+void demote_formula_that_noisy_inputs_explain(CandidateScore& formula, const ReadBackInputs& cleaner,
                                               std::span<const RecordedSample> observations,
-                                              std::span<const std::size_t> search, const Folds& folds,
+                                              std::span<const std::size_t> rows, const Folds& folds,
                                               const FormulaSettings& settings, double least_t,
                                               const std::function<bool(const CandidateScore&)>& claimable);
 

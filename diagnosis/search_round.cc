@@ -235,9 +235,11 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
   bool formula_ok = round.formula && claimable(*round.formula, base_ms, noise_ms, settings);
   if (formula_ok && (!effect_ok || formula_over_effect() || formula_simpler_and_better())) {
     // Only where the formula could be the claim: the check may search the formula again.
-    demote_formula_that_noisy_inputs_explain(*round.formula, read_back, observations, search, folds,
-                                             formula_settings(round, settings), settings.claim_t,
-                                             [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+    if (const std::optional<ReadBackInputs>& cleaner = read_back.get()) {
+      demote_formula_that_noisy_inputs_explain(
+          *round.formula, *cleaner, observations, search, folds, formula_settings(round, settings), settings.claim_t,
+          [&](const CandidateScore& c) { return claimable(c, base_ms, noise_ms, settings); });
+    }
     formula_ok = claimable(*round.formula, base_ms, noise_ms, settings);
   }
   if (formula_ok && effect_ok) {
@@ -277,6 +279,16 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     bool dense_ok = formula && dense_claimable(*formula) &&
                     formula_carries(*formula, observations, signature_rows, dense,
                                     whole_fifths(signature_rows.size(), test_rows_per_block(dense_folds)));
+    if (dense_ok) {
+      // It must add to the model fed its inputs read back, as on the search rows: the read-back
+      // model's residual at the dense rows, less its levels as the dense residual is.
+      if (std::optional<ReadBackInputs> cleaner = read_back.at(signature_rows)) {
+        cleaner->residual = without_levels(cleaner->residual);
+        demote_formula_that_noisy_inputs_explain(*formula, *cleaner, observations, signature_rows, dense_folds, fast,
+                                                 settings.claim_t, dense_claimable);
+        dense_ok = formula->failure.empty();
+      }
+    }
     if (dense_ok) {
       // The same third test as on the search rows, in the same family: every candidate of the
       // round was tried before this one.
