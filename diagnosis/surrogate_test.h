@@ -14,7 +14,8 @@
 // residual (the search's selection is part of the null). The surrogates are of what the candidate
 // leaves (the null: the residual is noise like that), end-matched, with a rise from first to last
 // row drawn from the residual's own fifths, and with their lines (a cycle, a programme that
-// repeats) brought down to the continuum about them. Surrogates of the residual itself took a
+// repeats) brought down to the continuum about them; a resonance of the noise, as broad as its
+// neighbouring bins, is no line and is kept. Surrogates of the residual itself took a
 // real effect's own spectrum for the noise's (a cross-talk of the model's moments, a drag on a
 // speed programme); circular surrogates cannot rise as a walk does (a level and a staircase fitted
 // 198 of 300 random walks better than all of them); a line kept in a random phase is explained as
