@@ -129,9 +129,10 @@ class Effect {
   /// for an output that depends on the inputs before the sample (a mode of the rig ringing after a
   /// change of the load): predict_at calls it, predict() of a sample alone (at steady state) does not.
   virtual void adjust_outputs_in_history(const InputHistory& /*history*/, SensorMoments& /*moments*/) const {}
-  /// adjust_outputs_in_history at each of `rows` of `recording` (time order), on moments[k] for
-  /// rows[k]: the same numbers, to the bit, with work shared between rows where the effect can (a
-  /// ringing's pass over a block of time). This default asks row by row.
+  /// adjust_outputs_in_history at each of `rows` (any order) of `recording` (in time order), on
+  /// moments[k] for rows[k]: the same numbers, to the bit, with work shared between rows that come
+  /// in time order where the effect can (a ringing's pass over a block of time). This default asks
+  /// row by row.
   virtual void adjust_outputs_in_history_at(std::span<const RecordedSample> recording,
                                             std::span<const std::size_t> rows,
                                             std::span<SensorMoments> moments) const;

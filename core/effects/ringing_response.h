@@ -81,8 +81,9 @@ double ringing_history_s(const RingingMode& mode);
 /// ratio of 0.2 remembers 10.4 s, 4,150 samples at 399 Hz: a diagnosis took 358 s).
 double torque_ringing_at(const InputHistory& history, const RingingMode& mode);
 
-/// torque_ringing_at at each of `rows` of `recording` (time order), in the order of `rows`: one
-/// pass a block for rows that come in time order, to the bit the numbers of torque_ringing_at.
+/// torque_ringing_at at each of `rows` (any order) of `recording` (in time order), in the order of
+/// `rows`: one pass a block for rows that come in time order, to the bit the numbers of
+/// torque_ringing_at.
 std::vector<double> torque_ringing_at_rows(std::span<const RecordedSample> recording,
                                            std::span<const std::size_t> rows, const RingingMode& mode);
 
