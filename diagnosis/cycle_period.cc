@@ -1,5 +1,6 @@
 #include "diagnosis/cycle_period.h"
 
+#include "diagnosis/median.h"
 #include "diagnosis/time_step.h"
 
 #include <algorithm>
@@ -125,9 +126,7 @@ double local_level(const std::vector<double>& power, std::size_t j, std::size_t 
   const std::size_t from = j > first + kLocalBins ? j - kLocalBins : first;
   const std::size_t to = std::min(last, j + kLocalBins);
   for (std::size_t k = from; k <= to; ++k) if (k + 2 < j || k > j + 2) around.push_back(power[k]);
-  if (around.empty()) return 0.0;
-  std::nth_element(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2), around.end());
-  return around[around.size() / 2];
+  return median(std::move(around));
 }
 
 /// A peak stands out of the noise when its power over the local level exceeds what the largest of

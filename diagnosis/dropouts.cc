@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "diagnosis/median.h"
+
 namespace gc {
 namespace {
 
@@ -17,10 +19,7 @@ double level_around(const std::vector<double>& v, std::size_t start, std::size_t
   for (std::size_t i = end, k = 0; i < v.size() && k < kNeighbours; ++i) {
     if (v[i] != 0.0) { around.push_back(v[i]); ++k; }
   }
-  if (around.empty()) return 0.0;
-  const auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
-  std::nth_element(around.begin(), middle, around.end());
-  return *middle;
+  return median(std::move(around));
 }
 
 }  // namespace

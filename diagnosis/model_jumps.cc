@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "diagnosis/input_shrinkage.h"
+#include "diagnosis/median.h"
 #include "diagnosis/row_selection.h"
 #include "diagnosis/verdict_text.h"
 
@@ -21,12 +22,6 @@ constexpr double kLeastWindowRows = 9.0;
 constexpr std::size_t kLeastRows = 31;
 constexpr double kNoiseDeviations = 2.0;   ///< how far either side of the logged input is tested
 constexpr double kJumpShareOfNoise = 0.25;  ///< a second difference beyond this share of the moments' noise is a jump
-
-double median_of(std::vector<double>& v) {
-  const auto middle = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), middle, v.end());
-  return *middle;
-}
 
 /// The largest second difference of the two moment channels across +-step about `s`, along the
 /// input `value` points at; 0 where the model refuses a side (beyond the jam angle, a negative
@@ -57,7 +52,7 @@ double noise_at(std::span<const RecordedSample> observations, const std::vector<
         centred_medians(observations, rows, std::max(window_s, kLeastWindowRows * interval), tested, value);
     std::vector<double> departures(tested.size());
     for (std::size_t j = 0; j < tested.size(); ++j) departures[j] = std::abs(value(observations[tested[j]].input) - centre[j]);
-    sigma = std::min(sigma, 1.4826 * median_of(departures));
+    sigma = std::min(sigma, 1.4826 * median(std::move(departures)));
   }
   return sigma;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "diagnosis/median.h"
+
 namespace gc {
 namespace {
 
@@ -11,13 +13,6 @@ constexpr double kTailCap = 20.0;  ///< t(2)-like tails: beyond this the mean sq
 constexpr int kMedianHalf = 3;  ///< running median over 7 samples
 constexpr std::size_t kLongestSpike = 2;  ///< samples in a spike at most, and the rows that keep spikes apart
 constexpr double kNeighbourShare = 0.5;  ///< of the threshold: a neighbour this far out makes a flagged sample part of structure
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 /// Robust half mean square of the lag-h differences: (1.4826 MAD)^2 / 2, centred on zero.
 double robust_semivariance(const Eigen::VectorXd& r, int h) {

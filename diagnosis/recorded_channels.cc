@@ -5,6 +5,8 @@
 #include <functional>
 #include <optional>
 
+#include "diagnosis/median.h"
+
 namespace gc {
 namespace {
 
@@ -29,13 +31,6 @@ const std::vector<ChannelSpec>& channel_specs() {
       {"hub_motion", "m", true, [](const RecordedSample& s) { return s.hub_motion_m; }},
   };
   return specs;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
 }
 
 bool inputs_hold(const RecordedSample& a, const RecordedSample& b) {

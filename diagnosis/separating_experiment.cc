@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/model_error.h"
+#include "diagnosis/median.h"
 
 namespace gc {
 namespace {
@@ -17,8 +18,7 @@ double median_of(std::span<const RecordedSample> observations, std::span<const s
                  double (*read)(const MeasurementSample&)) {
   std::vector<double> v;
   for (std::size_t r : rows) v.push_back(read(observations[r].input));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
+  return median(std::move(v));
 }
 
 /// a - b at one sample, or nullopt when either model cannot predict it.

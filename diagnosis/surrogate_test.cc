@@ -11,6 +11,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "diagnosis/beta_tail.h"
+#include "diagnosis/median.h"
 #include "diagnosis/stacked_channels.h"
 
 namespace gc {
@@ -176,12 +177,6 @@ constexpr double kLineRatio = 10.0;
 /// noise-only recording's held-out error at surrogate p = 0 (zoo seed 20261284, draw 495).
 constexpr std::size_t kNearFrom = 3, kNearTo = 10;
 
-/// The median of `values` (taken by copy: nth_element reorders).
-double median_of(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
-  return values[values.size() / 2];
-}
-
 /// The power of the bins kNearFrom..kNearTo away from k on either side (within 1..half).
 std::vector<double> near_bins(const std::vector<double>& power, std::size_t k, std::size_t half) {
   std::vector<double> near;
@@ -206,11 +201,11 @@ std::vector<double> without_lines(const std::vector<std::complex<double>>& spect
     std::vector<double> about(power.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(1, k / 2)),
                               power.begin() + static_cast<std::ptrdiff_t>(std::min(half, 2 * k) + 1));
     if (about.size() < 5) continue;
-    const double median = median_of(std::move(about));
-    if (!(power[k] > kLineRatio * median)) continue;
+    const double continuum = median(std::move(about));
+    if (!(power[k] > kLineRatio * continuum)) continue;
     const std::vector<double> near = near_bins(power, k, half);
-    if (near.size() >= 4 && !(power[k] > kLineRatio * median_of(near))) continue;  // broad: a resonance
-    amplitude[k] = std::sqrt(median);
+    if (near.size() >= 4 && !(power[k] > kLineRatio * median(near))) continue;  // broad: a resonance
+    amplitude[k] = std::sqrt(continuum);
   }
   return amplitude;
 }

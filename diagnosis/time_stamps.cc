@@ -3,18 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "diagnosis/median.h"
 #include "diagnosis/verdict_text.h"
 #include "core/engineering_text.h"
 
 namespace gc {
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 double time_of(std::span<const RecordedSample> observations, std::size_t row) { return observations[row].input.time_s; }
 
