@@ -63,6 +63,7 @@ struct FitSettings {
   int probe_points = 8;  ///< Halton points whose cost picks the starts
   int starts = 2;        ///< Levenberg-Marquardt runs from the best probes, and the best near neutral
   int scan_points = 101;  ///< a lone free parameter's grid over its box (effect_fit.cc, scanned_start)
+  int profile_points = 9;  ///< a profiled parameter's grid over its box (ParameterSpec::profiled)
 };
 
 /// The base model with `registration`'s effect at `values`.

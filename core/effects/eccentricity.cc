@@ -20,7 +20,7 @@ const EffectInfo kInfo{
     {{"eccentric_misalignment_rad", "rad", "zeta_e, the misalignment at zero torque", 0.0, 0.01,
       0.0, 0.00105, {0.0, 0.3, RangeScale::jam_angle}},
      {"threshold_scale", "-", "s, the torque that centres the hub as a multiple of eqs 49-53's T_m",
-      0.2, 3.0, 1.0, 1.0, {0.5, 2.0}},
+      0.2, 3.0, 1.0, 1.0, {0.5, 2.0}, false, 0.0, {}, true},
      {"gravity_direction_rad", "rad", "direction of the sag, as beta", -2.0 * M_PI, 2.0 * M_PI, M_PI / 2,
       M_PI / 2, {-M_PI, M_PI}, false, 2.0 * M_PI},
      {"fade_sharpness", "-", "k, how abruptly the hub lifts off: 1 - (T / (s T_m))^k", 1.0, 20.0, 1.0, 1.0, {1.0, 10.0},

@@ -59,6 +59,11 @@ struct ParameterSpec {
   /// What to check on the rig when a fitted value is outside the plausible range, e.g. "the
   /// alignment of the rig": plausibility is advice, never a veto (docs/diagnosis.md).
   std::string check = {};
+  /// Where the effect's size crosses zero along an input (a temperature of alignment, a torque that
+  /// centres the hub): the effect is an amplitude times (input - this), so its cost's valley is a
+  /// hyperbola in the two (their product nearly fixed), along which Levenberg-Marquardt's straight
+  /// steps crawl. Diagnose fits the others at a grid of its values and starts from the best.
+  bool profiled = false;
 };
 
 /// `value` wrapped into (-period/2, period/2] (unchanged for period <= 0).

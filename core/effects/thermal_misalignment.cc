@@ -19,7 +19,7 @@ const EffectInfo kInfo{
     {{"growth_rad_per_c", "rad/degC", "g, the misalignment added per deg C of oil temperature", -2e-3, 2e-3, 0.0,
       0.0, {-2e-4, 2e-4}, false, 0.0, "the gearbox supports' thermal growth (a housing that rises as it warms)"},
      {"reference_temperature_c", "degC", "theta_0, the temperature at which the rig was aligned", -40.0, 150.0,
-      40.0, 40.0, {0.0, 80.0}, false, 0.0, "the temperature of the alignment"},
+      40.0, 40.0, {0.0, 80.0}, false, 0.0, "the temperature of the alignment", true},
      {"direction_rad", "rad", "beta_t, the direction of the growth, as beta", -2.0 * M_PI, 2.0 * M_PI, 0.0, 0.0,
       {-M_PI, M_PI}, false, 2.0 * M_PI}},
     {OptionalInput::temperature}};

@@ -400,6 +400,19 @@ TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
   EXPECT_LT(first_value_of(p.json, "growth_rad_per_c"), -150e-6) << p.json.substr(0, 3000);
 }
 
+// A thermal growth of 7.4 urad/degC from 34.0 degC at 1.83 rad under torque-heteroscedastic noise
+// and proximity-probe noise carried through the model, 14,304 rows at 10.5 Hz while the oil warms
+// 41-50 degC (power table seed 20261287, draw 1). The fit's every start stopped at a reference
+// inside the recorded span (1,088 N·m rms against 872 at the truth) and an assembly misalignment
+// was named first. The reference is profiled (ParameterSpec::profiled, effect_fit.cc): the growth
+// is named, its reference below the recorded temperatures.
+TEST(NoiseZooPower, AThermalGrowthFromBelowTheRecordedTemperaturesIsNamedFirst) {
+  const PowerDraw p = diagnosed_power_draw(20261287, 1, "thermal_misalignment");
+  ASSERT_NE(p.draw.description.find("growth 7.39e-06 rad/degC from 34.0 degC"), std::string::npos) << p.draw.description;
+  EXPECT_TRUE(named_first(p, "thermal_misalignment"));
+  EXPECT_LT(first_value_of(p.json, "reference_temperature_c"), 41.0) << p.json.substr(0, 3000);
+}
+
 // A spacing error at the library's physical bound, 100 um, scaled x1.40 to reach SNR 1.5, on the
 // same recording (seed 20261241, draw 2). Inside the plausible 0-50 um the fit found a valley at
 // 42 um, and a torque calibration with a curvature four times its plausible range was named
