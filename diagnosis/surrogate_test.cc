@@ -243,6 +243,7 @@ class Projector {
         normalised_.col(j).setZero();
       }
     }
+    gram_ = normalised_.transpose() * normalised_;
   }
 
   /// The share of what varies about each channel's level that the design explains beyond it.
@@ -250,17 +251,47 @@ class Projector {
     const double level = (levels_.transpose() * y).squaredNorm();
     const double total = y.squaredNorm() - level;
     if (!(total > 0.0)) return 0.0;
-    const double fit = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() : greedy_fit(y).squaredNorm();
-    return std::clamp((fit - level) / total, 0.0, 1.0);
+    const double beyond = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() - level : greedy_share_of(y);
+    return std::clamp(beyond / total, 0.0, 1.0);
   }
 
   /// Orthonormal columns spanning the levels and the design (the columns chosen for `y`).
   Eigen::MatrixXd span(const Eigen::VectorXd& y) const { return choose_ <= 0 ? basis_ : greedy_basis(y); }
 
  private:
-  Eigen::VectorXd greedy_fit(const Eigen::VectorXd& y) const {
-    const Eigen::MatrixXd basis = greedy_basis(y);
-    return basis * (basis.transpose() * y);
+  /// What greedy_basis's chosen columns explain of `y` beyond the levels, |P_S y|^2, found from
+  /// c = N'y and the Gram matrix G = N'N of the unit columns N (which are clear of the levels): a
+  /// step's correlations with what the chosen S leave are c - G_{.S} G_SS^-1 c_S, and the fit is
+  /// c_S' G_SS^-1 c_S. One pass over the rows, where greedy_basis takes one a step: a formula's
+  /// catalogue of 150 terms on 20,000 dense rows, tested on 6,400 surrogates, took a minute.
+  double greedy_share_of(const Eigen::VectorXd& y) const {
+    const Eigen::VectorXd c = normalised_.transpose() * y;
+    const Eigen::Index steps = std::min<Eigen::Index>(choose_, normalised_.cols());
+    std::vector<Eigen::Index> chosen;
+    std::vector<bool> taken(static_cast<std::size_t>(c.size()), false);
+    Eigen::LLT<Eigen::MatrixXd> chosen_gram;
+    Eigen::VectorXd coefficients;
+    for (Eigen::Index step = 0; step < steps; ++step) {
+      Eigen::VectorXd scores = c;
+      if (!chosen.empty()) scores -= gram_(Eigen::placeholders::all, chosen) * coefficients;
+      Eigen::Index best = -1;
+      for (Eigen::Index j = 0; j < scores.size(); ++j) {
+        if (!taken[static_cast<std::size_t>(j)] && (best < 0 || std::abs(scores(j)) > std::abs(scores(best)))) best = j;
+      }
+      if (best < 0) break;
+      taken[static_cast<std::size_t>(best)] = true;
+      // The column's part clear of the chosen ones, squared (greedy_basis's q).
+      double clear = gram_(best, best);
+      if (!chosen.empty()) {
+        const Eigen::VectorXd g = gram_(chosen, best);
+        clear -= g.dot(chosen_gram.solve(g));
+      }
+      if (!(clear > 1e-18)) continue;
+      chosen.push_back(best);
+      chosen_gram.compute(gram_(chosen, chosen));
+      coefficients = chosen_gram.solve(c(chosen));
+    }
+    return chosen.empty() ? 0.0 : c(chosen).dot(coefficients);
   }
 
   /// Orthogonal matching pursuit: `choose_` steps, each taking the column most correlated with
@@ -318,6 +349,7 @@ class Projector {
   Eigen::MatrixXd levels_;      ///< each channel's level, orthonormal
   Eigen::MatrixXd basis_;       ///< orthonormal columns spanning the levels and the design (choose_ 0)
   Eigen::MatrixXd normalised_;  ///< unit columns, less the levels (choose_ > 0)
+  Eigen::MatrixXd gram_;        ///< normalised_' normalised_ (choose_ > 0)
 };
 
 }  // namespace
@@ -499,6 +531,15 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
     p = std::min(p, student_two_sided_p(t, static_cast<int>(parts - 1)));
   }
   return std::min(1.0, 2.0 * p);  // either channel
+}
+
+double explained_share(const Eigen::MatrixX2d& residual, const SurrogateDesign& design) {
+  const Eigen::VectorXd y = stacked(residual);
+  double best = Projector(design, residual.rows()).share(y);
+  for (const Eigen::MatrixXd& columns : design.elsewhere) {
+    best = std::max(best, Projector(SurrogateDesign{columns, 0, false, {}}, residual.rows()).share(y));
+  }
+  return best;
 }
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,

@@ -132,6 +132,12 @@ double level_standard_error(const Eigen::VectorXd& means);
 /// degrees of freedom, the smaller of the two channels' doubled.
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander);
 
+/// The test's statistic: the share of what varies about each channel's level of `residual` (rows
+/// in time order, one column per moment channel) that `design` explains beyond the levels, its
+/// `choose` columns selected forward on this residual where choose > 0; the largest of it and of
+/// its designs `elsewhere`.
+double explained_share(const Eigen::MatrixX2d& residual, const SurrogateDesign& design);
+
 /// Per design, the p-value that noise with the residual's spectrum is explained as well, times the
 /// family's size and by 2 (Bonferroni over the family and a design's two parts: what it explains
 /// of the variation about the levels, by the surrogates, and a level it moves, by level_p_value): (1 + surrogates

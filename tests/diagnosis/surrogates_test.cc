@@ -368,5 +368,66 @@ TEST(Surrogates, ALevelIsJudgedOnItsStandardErrorWhereTheBlockMeansAreIndependen
   EXPECT_LE(walk_out, draws * 4 / 100);               // as before (2.5 %), with room for scatter
 }
 
+/// Forward selection as its definition reads (orthogonal matching pursuit): `choose` steps, each
+/// taking the unit column, clear of the levels, most correlated with what the levels and the
+/// chosen leave; the share of what varies about the levels that the chosen explain.
+double selected_share_by_definition(const Eigen::VectorXd& y, const Eigen::MatrixXd& columns, int choose) {
+  const Eigen::Index n2 = y.size(), n = n2 / 2;
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n2, 2);
+  basis.col(0).head(n).setConstant(1.0 / std::sqrt(static_cast<double>(n)));
+  basis.col(1).tail(n).setConstant(1.0 / std::sqrt(static_cast<double>(n)));
+  const auto project = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(basis);
+    const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(n2, basis.cols());
+    return q * (q.transpose() * v);
+  };
+  Eigen::MatrixXd unit = columns;
+  for (Eigen::Index j = 0; j < unit.cols(); ++j) {
+    unit.col(j).head(n).array() -= unit.col(j).head(n).mean();
+    unit.col(j).tail(n).array() -= unit.col(j).tail(n).mean();
+    unit.col(j).normalize();
+  }
+  const double level = project(y).squaredNorm();
+  std::vector<bool> taken(static_cast<std::size_t>(unit.cols()), false);
+  for (int step = 0; step < choose; ++step) {
+    const Eigen::VectorXd left = y - project(y);
+    Eigen::Index best = -1;
+    for (Eigen::Index j = 0; j < unit.cols(); ++j) {
+      if (!taken[static_cast<std::size_t>(j)] && (best < 0 || std::abs(unit.col(j).dot(left)) > std::abs(unit.col(best).dot(left)))) best = j;
+    }
+    taken[static_cast<std::size_t>(best)] = true;
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = unit.col(best);
+  }
+  return (project(y).squaredNorm() - level) / (y.squaredNorm() - level);
+}
+
+// The statistic of a formula's design (choose > 0) is found from the columns' Gram matrix and one
+// pass over the rows per residual, not one a step: the same columns chosen, the same share, as the
+// selection reads by its definition, on noise (where the choice is a near thing between columns)
+// and on two planted terms among correlated ones.
+TEST(Surrogates, AFormulasShareIsItsForwardSelectionsProjection) {
+  std::mt19937_64 random(20261201);
+  std::normal_distribution<double> normal;
+  const Eigen::Index n = 300, p = 40;
+  Eigen::MatrixXd columns(2 * n, p);
+  for (Eigen::Index j = 0; j < p; ++j) {
+    for (Eigen::Index i = 0; i < 2 * n; ++i) columns(i, j) = normal(random) + 0.5 * static_cast<double>(j % 3);
+  }
+  columns.col(p - 1) = columns.col(0) + 0.3 * columns.col(1);  // correlated with the planted ones
+  for (const int choose : {1, 2, 5}) {
+    for (int draw = 0; draw < 4; ++draw) {
+      Eigen::VectorXd y(2 * n);
+      for (Eigen::Index i = 0; i < 2 * n; ++i) y(i) = normal(random) + 3.0;
+      if (draw % 2 == 1) y += 0.4 * columns.col(0) - 0.3 * columns.col(7);
+      Eigen::MatrixX2d residual(n, 2);
+      residual.col(0) = y.head(n);
+      residual.col(1) = y.tail(n);
+      const double share = explained_share(residual, SurrogateDesign{columns, choose, false, {}});
+      EXPECT_NEAR(share, selected_share_by_definition(y, columns, choose), 1e-10) << "choose " << choose << ", draw " << draw;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gc
