@@ -273,7 +273,7 @@ class Projector {
     Eigen::VectorXd coefficients;
     for (Eigen::Index step = 0; step < steps; ++step) {
       Eigen::VectorXd scores = c;
-      if (!chosen.empty()) scores -= gram_(Eigen::placeholders::all, chosen) * coefficients;
+      if (!chosen.empty()) scores -= gram_(Eigen::all, chosen) * coefficients;
       Eigen::Index best = -1;
       for (Eigen::Index j = 0; j < scores.size(); ++j) {
         if (!taken[static_cast<std::size_t>(j)] && (best < 0 || std::abs(scores(j)) > std::abs(scores(best)))) best = j;

@@ -5,26 +5,14 @@
 // eleven (a power draw of the noise zoo, seed 20261129, draw 2).
 #include <gtest/gtest.h>
 
-#include "core/effects/effect_registry.h"
-#include "diagnosis/effect_fit.h"
 #include "diagnosis/model_residuals.h"
 #include "diagnosis/synthesis/synthesize.h"
 #include "tests/core/nrel_couplings.h"
+#include "tests/diagnosis/fitted_effects.h"
 #include "tests/diagnosis/hidden_effect_scenarios.h"
 
 namespace gc {
 namespace {
-
-const EffectRegistration& registration(const std::string& name) {
-  static const std::vector<EffectRegistration> registry = effect_registry();
-  for (const EffectRegistration& r : registry) if (r.info->name == name) return r;
-  throw std::logic_error("no " + name + " in the registry");
-}
-
-double parameter(const EffectFit& fit, const std::string& name) {
-  for (const ParameterEstimate& p : fit.parameters) if (p.name == name) return p.value;
-  throw std::logic_error("no " + name + " in the fit");
-}
 
 TEST(WeakEffectStarts, AnAssemblyMisalignmentOfAHundredthOfTheJamAngleIsFoundInItsDirection) {
   const CouplingModel paper(testing::nrel_upwind(), testing::paper_effects());
@@ -43,7 +31,7 @@ TEST(WeakEffectStarts, AnAssemblyMisalignmentOfAHundredthOfTheJamAngleIsFoundInI
     std::vector<std::size_t> rows(recording.samples.size());
     for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
     const std::optional<EffectFit> fit =
-        fit_effect(paper, registration("assembly_misalignment"), recording.samples, rows, serial_for(), FitSettings{});
+        fit_effect(paper, testing::registration("assembly_misalignment"), recording.samples, rows, serial_for(), FitSettings{});
     ASSERT_TRUE(fit.has_value());
     // Three quarters of the way from none to the truth at least, and an amplitude: stuck at none
     // (main before the starts near neutral, beta0 = 1.2 here), the fit keeps the effect's whole
@@ -52,8 +40,8 @@ TEST(WeakEffectStarts, AnAssemblyMisalignmentOfAHundredthOfTheJamAngleIsFoundInI
     const double truth_cost = model_residuals(truth, recording.samples, rows, serial_for()).residual.squaredNorm();
     const double none_cost = model_residuals(paper, recording.samples, rows, serial_for()).residual.squaredNorm();
     EXPECT_LT(fit->sum_of_squares, truth_cost + 0.25 * (none_cost - truth_cost))
-        << "beta0 " << beta0 << ": zeta0 " << parameter(*fit, "zeta0_rad") << " at " << parameter(*fit, "beta0_rad") << ", none " << none_cost;
-    EXPECT_GT(parameter(*fit, "zeta0_rad"), 0.5 * zeta0) << "beta0 " << beta0;
+        << "beta0 " << beta0 << ": zeta0 " << testing::fitted_value(*fit, "zeta0_rad") << " at " << testing::fitted_value(*fit, "beta0_rad") << ", none " << none_cost;
+    EXPECT_GT(testing::fitted_value(*fit, "zeta0_rad"), 0.5 * zeta0) << "beta0 " << beta0;
   }
 }
 
