@@ -138,7 +138,7 @@ std::optional<Eigen::VectorXd> scanned_start(const EffectProblem& problem, const
 /// growth's direction stopped at 0.49 rad of a true 1.22 at every reference temperature.
 constexpr int kProfileStarts = 2;
 /// Parabolas through the profile's best and its neighbours, each a descent from the best so far:
-/// the grid's step (a tenth of the box) is wider than a valley that lies near the recorded inputs.
+/// the grid's step (an eighth of the box) is wider than a valley that lies near the recorded inputs.
 constexpr int kProfileRefinements = 3;
 
 /// The free parameter flagged `profiled` (ParameterSpec), where another is free beside it.
