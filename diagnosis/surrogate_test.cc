@@ -263,7 +263,7 @@ class Projector {
   /// c = N'y and the Gram matrix G = N'N of the unit columns N (which are clear of the levels): a
   /// step's correlations with what the chosen S leave are c - G_{.S} G_SS^-1 c_S, and the fit is
   /// c_S' G_SS^-1 c_S. One pass over the rows, where greedy_basis takes one a step: a formula's
-  /// catalogue of 150 terms on 20,000 dense rows, tested on 6,400 surrogates, took a minute.
+  /// catalogue of 112 fast terms on 20,000 dense rows, tested on 6,400 surrogates, took a minute.
   double greedy_share_of(const Eigen::VectorXd& y) const {
     const Eigen::VectorXd c = normalised_.transpose() * y;
     const Eigen::Index steps = std::min<Eigen::Index>(choose_, normalised_.cols());
