@@ -402,9 +402,9 @@ TEST(NoiseZooPower, AThermalGrowthIsFollowedAlongItsCurvedValley) {
 
 // A thermal growth of 7.4 urad/degC from 34.0 degC at 1.83 rad under torque-heteroscedastic noise
 // and proximity-probe noise carried through the model, 14,304 rows at 10.5 Hz while the oil warms
-// 41-50 degC (power table seed 20261287, draw 1). The fit's every start stopped at a reference
-// inside the recorded span (1,088 N·m rms against 872 at the truth) and an assembly misalignment
-// was named first. The reference is profiled (ParameterSpec::profiled, effect_fit.cc): the growth
+// 41-50 degC (power table seed 20261287, draw 1). The fit stopped at a reference inside the
+// recorded span, 44 degC (1,088 N·m rms on all rows against 872 at the truth), and an assembly
+// misalignment was named first. The reference is profiled (ParameterSpec::profiled, effect_fit.cc): the growth
 // is named, its reference below the recorded temperatures.
 TEST(NoiseZooPower, AThermalGrowthFromBelowTheRecordedTemperaturesIsNamedFirst) {
   const PowerDraw p = diagnosed_power_draw(20261287, 1, "thermal_misalignment");
