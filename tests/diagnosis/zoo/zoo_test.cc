@@ -314,6 +314,25 @@ TEST(NoiseZooPower, ACompliancePastItsPlausibleRangeIsScannedWhereTheBoxWidens) 
   EXPECT_NEAR(first_value_of(p.json, "stiffness_factor"), 0.121, 0.2 * 0.121) << p.json.substr(0, 3000);
 }
 
+// Torque gains past the plausible range of a torque calibration's slope (+-5 %), -12.0 % and
+// -30.1 % (drawn -1.4 % and -2.1 %, scaled to reach SNR 1.5), under a sample-and-hold beside noise
+// correlated across channels, and under a hidden AR(1) beside a telegraph with jittered stamps
+// (power table seed 20261295, draws 4 and 8: 9,251 rows at 10.5 Hz, 16,798 at 2.47 Hz). The box
+// widened and its descent from the edge, ten steps at the fine derivative, stopped in the long
+// valley of slope and curvature (the teeth summed step with the torque): 5,459 and 17,145 N·m held
+// out against a gain and offset of both channels' 5,403 and 16,634, which was named first. The
+// widened box's descent goes on at coarser derivatives (effect_fit.cc, widen_where_on_edge): 5,364
+// and 16,518, the torque calibration named, the larger gain's slope within a tenth of the truth.
+TEST(NoiseZooPower, ATorqueGainPastItsPlausibleRangeIsFollowedAtCoarserDerivatives) {
+  const PowerDraw small = diagnosed_power_draw(20261295, 4, "torque_gain");
+  ASSERT_NE(small.draw.description.find("gain -12.03 %"), std::string::npos) << small.draw.description;
+  EXPECT_TRUE(named_first(small, "torque_calibration"));
+  const PowerDraw large = diagnosed_power_draw(20261295, 8, "torque_gain");
+  ASSERT_NE(large.draw.description.find("gain -30.10 %"), std::string::npos) << large.draw.description;
+  EXPECT_TRUE(named_first(large, "torque_calibration"));
+  EXPECT_NEAR(first_value_of(large.json, "slope_error"), -0.301, 0.1 * 0.301) << large.json.substr(0, 3000);
+}
+
 // One turn of the misalignment's direction at a steady torque, under demodulated and spiky noise,
 // 7,128 rows at 80.9 Hz (power table seed 20261270, draw 0). There anything that scales the
 // moments fits alike: a mesh at 0.451 of eq 5's stiffness (touch-up x0.92) is fitted at 0.50, a
