@@ -1,6 +1,7 @@
 #include "core/coupling_model.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/coupling_frame.h"
 #include "core/effects/summed_input_timing.h"
@@ -64,10 +65,37 @@ ModelPrediction CouplingModel::with_history(ModelPrediction prediction, const In
   return prediction;
 }
 
-ModelPrediction CouplingModel::predict_timed(std::span<const RecordedSample> recording, std::size_t i) const {
+ModelPrediction CouplingModel::predict_timed(std::span<const RecordedSample> recording, std::size_t i,
+                                             const WindowColumns* columns) const {
   if (!times_inputs_) return predict(recording[i].input);
   const InputTiming timing = input_timing(recording[i].input);
-  return predict(timing.none() ? recording[i].input : timed_input(recording, i, timing));
+  return predict(timing.none() ? recording[i].input : timed_input(recording, i, timing, columns));
+}
+
+std::optional<WindowColumns> CouplingModel::window_columns(std::span<const RecordedSample> recording,
+                                                                 std::span<const std::size_t> rows) const {
+  if (!times_inputs_ || rows.empty() || recording.size() < 2) return std::nullopt;
+  const double duration = recording.back().input.time_s - recording.front().input.time_s;
+  if (!(duration > 0.0)) return std::nullopt;
+  const double per_second = static_cast<double>(recording.size() - 1) / duration;  // samples [1/s]
+  double from = std::numeric_limits<double>::infinity(), to = -from, in_windows = 0.0;
+  for (const std::size_t i : rows) {
+    const InputTiming timing = input_timing(recording[i].input);
+    if (!(timing.average_s > 0.0)) continue;
+    const double end = recording[i].input.time_s - timing.delay_s;
+    from = std::min(from, end - timing.average_s);
+    to = std::max(to, end);
+    in_windows += timing.average_s * per_second;
+  }
+  if (!(to >= from)) return std::nullopt;
+  // The samples in time order (as timed_input reads them); a recording out of order only finds a
+  // smaller table, and its windows compute what the table lacks.
+  const auto before = [](const RecordedSample& s, double t) { return s.input.time_s < t; };
+  const auto first = static_cast<std::size_t>(std::lower_bound(recording.begin(), recording.end(), from, before) - recording.begin());
+  const auto last = static_cast<std::size_t>(std::lower_bound(recording.begin(), recording.end(), to, before) - recording.begin());
+  const std::size_t span = std::min(last, recording.size() - 1) - std::min(first, last) + 1;
+  if (in_windows <= 2.0 * static_cast<double>(span)) return std::nullopt;
+  return WindowColumns(recording, std::min(first, last), std::min(last, recording.size() - 1));
 }
 
 ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
@@ -87,9 +115,10 @@ CouplingModel::MomentsAtRows CouplingModel::moments_at(std::span<const RecordedS
   out.errors.resize(rows.size());
   out.fields.resize(rows.size());
   std::vector<std::size_t> predicted;  // positions k of rows the model took
+  const std::optional<WindowColumns> columns = window_columns(recording, rows);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     try {
-      out.moments[k] = predict_timed(recording, rows[k]).moments;
+      out.moments[k] = predict_timed(recording, rows[k], columns ? &*columns : nullptr).moments;
       predicted.push_back(k);
     } catch (const InvalidInput& e) {
       out.errors[k] = e.what();

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -71,6 +72,11 @@ class CouplingModel {
     std::vector<std::string> fields;     ///< the input it refused (InvalidInput::field); empty for others
   };
   MomentsAtRows moments_at(std::span<const RecordedSample> recording, std::span<const std::size_t> rows) const;
+  /// What moments_at reads the averaging windows of `rows` from (core/input_timing.h): the columns
+  /// of the samples they span, when those windows hold more than twice as many samples in all (the
+  /// columns then cost less than a sine and a cosine of each sample of each window); none otherwise.
+  std::optional<WindowColumns> window_columns(std::span<const RecordedSample> recording,
+                                              std::span<const std::size_t> rows) const;
   /// The sum of the effects' input timings at this sample.
   InputTiming input_timing(const MeasurementSample& sample) const;
   /// Whether predict_at(recording, i) reads samples other than i (an effect times the inputs or
@@ -91,8 +97,10 @@ class CouplingModel {
   bool times_inputs_ = false;  ///< some effect times the inputs (predict_at looks them up)
   bool reads_history_ = false;  ///< some effect's outputs depend on the inputs before the sample
 
-  /// predict() on sample i's inputs as the moment channels see them (the effects' input timing).
-  ModelPrediction predict_timed(std::span<const RecordedSample> recording, std::size_t i) const;
+  /// predict() on sample i's inputs as the moment channels see them (the effects' input timing),
+  /// its averaging window read from `columns` where they hold it.
+  ModelPrediction predict_timed(std::span<const RecordedSample> recording, std::size_t i,
+                                const WindowColumns* columns = nullptr) const;
   /// The effects' adjust_outputs_in_history on `prediction`.
   ModelPrediction with_history(ModelPrediction prediction, const InputHistory& history) const;
 };

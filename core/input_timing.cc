@@ -33,11 +33,14 @@ const MeasurementSample& input_of(const Sequence& s, std::size_t k) {
 /// The inputs at time `t`: the neighbours found by walking from `from`, which is near it (a
 /// delay is a few samples), so neither sorting nor a search of the whole sequence is needed.
 template <typename Sequence>
-MeasurementSample input_at(const Sequence& s, std::size_t from, double t) {
+MeasurementSample input_at(const Sequence& s, std::size_t from, double t, const WindowColumns* columns) {
   const std::size_t n = s.size();
+  const auto time_of = [&](std::size_t k) {
+    return columns && columns->holds(k) ? columns->time_s[k - columns->first] : input_of(s, k).time_s;
+  };
   std::size_t j = from;
-  while (j > 0 && input_of(s, j).time_s > t) --j;
-  while (j + 1 < n && input_of(s, j + 1).time_s <= t) ++j;
+  while (j > 0 && time_of(j) > t) --j;
+  while (j + 1 < n && time_of(j + 1) <= t) ++j;
   const MeasurementSample& a = input_of(s, j);
   if (j + 1 >= n || t <= a.time_s) return a;
   const MeasurementSample& b = input_of(s, j + 1);
@@ -61,11 +64,18 @@ MeasurementSample input_at(const Sequence& s, std::size_t from, double t) {
 struct InputMean {
   double count = 0.0, torque = 0.0, zeta = 0.0, cos_beta = 0.0, sin_beta = 0.0;
   void add(const MeasurementSample& s) {
+    add(s.torque_nm, s.misalignment_rad, std::cos(s.direction_rad), std::sin(s.direction_rad));
+  }
+  void add(const WindowColumns& c, std::size_t k) {
+    const std::size_t j = k - c.first;
+    add(c.torque_nm[j], c.misalignment_rad[j], c.cos_beta[j], c.sin_beta[j]);
+  }
+  void add(double torque_nm, double misalignment_rad, double cos_direction, double sin_direction) {
     count += 1.0;
-    torque += s.torque_nm;
-    zeta += s.misalignment_rad;
-    cos_beta += std::cos(s.direction_rad);
-    sin_beta += std::sin(s.direction_rad);
+    torque += torque_nm;
+    zeta += misalignment_rad;
+    cos_beta += cos_direction;
+    sin_beta += sin_direction;
   }
   /// `at` with the window's mean torque, misalignment and direction.
   MeasurementSample applied_to(MeasurementSample at) const {
@@ -77,20 +87,30 @@ struct InputMean {
 };
 
 template <typename Sequence>
-MeasurementSample timed(const Sequence& s, std::size_t i, const InputTiming& timing) {
+MeasurementSample timed(const Sequence& s, std::size_t i, const InputTiming& timing,
+                        const WindowColumns* columns = nullptr) {
   const double t_i = input_of(s, i).time_s;
   const double end = t_i - timing.delay_s;
-  MeasurementSample out = input_at(s, i, end);
+  MeasurementSample out = input_at(s, i, end, columns);
   if (timing.average_s > 0.0) {
     InputMean mean;
     mean.add(out);
     // The samples inside (end - average_s, end], walking back from the last at or before `end`:
     // found from i in either direction, since a negative delay puts `end` after t_i.
+    const auto time_of = [&](std::size_t k) {
+      return columns && columns->holds(k) ? columns->time_s[k - columns->first] : input_of(s, k).time_s;
+    };
     std::size_t k = i;
-    while (k > 0 && input_of(s, k).time_s > end) --k;
-    while (k + 1 < s.size() && input_of(s, k + 1).time_s <= end) ++k;
-    for (; input_of(s, k).time_s > end - timing.average_s; --k) {
-      if (input_of(s, k).time_s <= end) mean.add(input_of(s, k));
+    while (k > 0 && time_of(k) > end) --k;
+    while (k + 1 < s.size() && time_of(k + 1) <= end) ++k;
+    for (; time_of(k) > end - timing.average_s; --k) {
+      if (time_of(k) <= end) {
+        if (columns && columns->holds(k)) {
+          mean.add(*columns, k);
+        } else {
+          mean.add(input_of(s, k));
+        }
+      }
       if (k == 0) break;
     }
     out = mean.applied_to(out);
@@ -106,8 +126,21 @@ MeasurementSample timed_input(std::span<const MeasurementSample> sequence, std::
   return timed(sequence, i, timing);
 }
 
-MeasurementSample timed_input(std::span<const RecordedSample> recording, std::size_t i, const InputTiming& timing) {
-  return timed(recording, i, timing);
+MeasurementSample timed_input(std::span<const RecordedSample> recording, std::size_t i, const InputTiming& timing,
+                              const WindowColumns* columns) {
+  return timed(recording, i, timing, columns);
+}
+
+WindowColumns::WindowColumns(std::span<const RecordedSample> recording, std::size_t first_sample, std::size_t last_sample)
+    : first(first_sample) {
+  for (std::size_t k = first_sample; k <= last_sample && k < recording.size(); ++k) {
+    const MeasurementSample& s = recording[k].input;
+    time_s.push_back(s.time_s);
+    torque_nm.push_back(s.torque_nm);
+    misalignment_rad.push_back(s.misalignment_rad);
+    cos_beta.push_back(std::cos(s.direction_rad));
+    sin_beta.push_back(std::sin(s.direction_rad));
+  }
 }
 
 }  // namespace gc
