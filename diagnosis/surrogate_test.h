@@ -70,11 +70,31 @@ class SurrogateSource {
   ~SurrogateSource();
   Eigen::MatrixX2d next();
 
+  /// The random numbers of the next surrogate, drawn in order: next() is made(draw()), and
+  /// surrogates drawn one after the other can be made on several threads, the same numbers.
+  struct Draw {
+    std::vector<double> phases;      ///< per frequency k = 1..m/2 [rad]
+    std::array<double, 2> rises{};   ///< per channel, standard normal
+  };
+  Draw draw();
+  /// What made() transforms with: one a thread.
+  class Workspace {
+   public:
+    Workspace();
+    ~Workspace();
+    Workspace(Workspace&&) noexcept;
+
+   private:
+    friend class SurrogateSource;
+    struct Transform;  // Eigen's FFT, kept out of the installed header (its module is unsupported/)
+    std::unique_ptr<Transform> fft_;
+  };
+  Eigen::MatrixX2d made(const Draw& draw, Workspace& workspace) const;
+
  private:
-  struct Transform;  // Eigen's FFT, kept out of the installed header (its module is unsupported/)
   Eigen::Index n_, m_;  ///< rows; the FFT's length (the last m_ rows, wrapped to n_)
   std::mt19937_64 random_;
-  std::unique_ptr<Transform> fft_;
+  Workspace workspace_;  ///< next()'s
   std::array<std::vector<double>, 2> amplitudes_;  ///< per channel, k = 0..m_/2
   std::array<double, 2> rise_sigma_{};             ///< per channel [N·m]
 };

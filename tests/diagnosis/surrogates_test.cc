@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -192,6 +193,30 @@ TEST(Surrogates, PValuesDoNotDependOnHowTheSharesAreShared) {
   EXPECT_GT(serial[1], 0.01);
   EXPECT_EQ(shared[0], serial[0]);
   EXPECT_EQ(shared[1], serial[1]);
+}
+
+// A surrogate made from its random numbers (SurrogateSource::draw, made) is next()'s to the bit,
+// whichever thread makes it with whichever workspace, and in whatever order: the p-values' batches
+// are made on two threads from numbers drawn in order.
+TEST(Surrogates, MadeFromTheirNumbersAreNextsToTheBit) {
+  std::mt19937_64 random(17);
+  std::normal_distribution<double> white;
+  Eigen::MatrixX2d y(kRows, 2);
+  double walk = 0.0;
+  for (int i = 0; i < kRows; ++i) y.row(i) << (walk += white(random)), white(random) + 0.3 * walk;
+  SurrogateSource one_by_one(y, 23), by_numbers(y, 23);
+  std::vector<Eigen::MatrixX2d> expected;
+  std::vector<SurrogateSource::Draw> numbers;
+  for (int k = 0; k < 5; ++k) {
+    expected.push_back(one_by_one.next());
+    numbers.push_back(by_numbers.draw());
+  }
+  std::array<SurrogateSource::Workspace, 2> workspaces;
+  for (int k = 4; k >= 0; --k) {
+    const Eigen::MatrixX2d made = by_numbers.made(numbers[static_cast<std::size_t>(k)], workspaces[static_cast<std::size_t>(k % 2)]);
+    EXPECT_EQ((made - expected[static_cast<std::size_t>(k)]).cwiseAbs().maxCoeff(), 0.0) << "surrogate " << k;
+  }
+  EXPECT_GT((expected[0] - expected[1]).cwiseAbs().maxCoeff(), 0.0);
 }
 
 /// A bump on channel y centred at `at` of the rows, 3 % of them wide: a correction that one
