@@ -258,7 +258,7 @@ class Projector {
 
   /// share() of each column of `ys`, their products with the design's columns found together: one
   /// pass over the design's rows for all of them, where each alone streamed it from memory (a
-  /// formula's 148 terms on 19,098 dense rows are 45 MB, and 6,400 surrogates took 13 s).
+  /// formula's 148 terms on 19,098 dense rows are 45 MB, read for each of 6,400 surrogates).
   Eigen::VectorXd shares(const Eigen::MatrixXd& ys) const {
     const Eigen::MatrixXd level = levels_.transpose() * ys;
     const Eigen::MatrixXd products = choose_ <= 0 ? basis_.transpose() * ys : normalised_.transpose() * ys;
@@ -382,7 +382,6 @@ std::vector<double> SurrogateSpectrum::leverage(const Eigen::MatrixXd& basis, Ei
   }
   return out;
 }
-
 
 struct SurrogateSource::Workspace::Transform {
   Eigen::FFT<double> fft;
@@ -628,11 +627,11 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       double sum = 0.0, sum_of_squares = 0.0;
       double beyond_doubt = -1.0;  // the tail's bound once it settles the test; negative before
       // A few surrogates drawn in order, their shares found side by side, then taken in order as
-      // one at a time would take them: a stop leaves the rest of the batch unused. The batches
-      // grow while no stop comes (most stop within the first few, where noise is explained as
-      // well), each thread taking its columns of the batch together (Projector::shares).
-      // Their random numbers are drawn in order, and each half of a batch is made and judged on
-      // a thread of its own (the phases' sines and the inverse FFTs were a quarter of the time).
+      // one at a time would take them: a stop leaves the rest of the batch unused. Their random
+      // numbers are drawn in order; each half of a batch is made and judged on a thread of its own
+      // (making them was a quarter of the time), its shares found together (Projector::shares).
+      // The batches grow while no stop comes: most stop within the first few, where noise is
+      // explained as well.
       std::vector<SurrogateSource::Draw> numbers;
       std::array<SurrogateSource::Workspace, 2> workspaces;
       Eigen::MatrixXd batch;

@@ -170,8 +170,8 @@ TEST(Surrogates, AFamilyOfDesignsIsAdjustedForItsSize) {
 }
 
 // The surrogates' shares are found side by side and taken in order: however the work is shared,
-// each p-value is the same to the bit. Here one surrogate a call, last first; a weak design draws
-// every surrogate, a strong one stops after the first 199 on their tail.
+// each p-value is the same to the bit. Here one half of a batch a call, last first; a weak design
+// draws every surrogate, a strong one stops after the first 199 on their tail.
 TEST(Surrogates, PValuesDoNotDependOnHowTheSharesAreShared) {
   std::mt19937_64 random(11);
   std::normal_distribution<double> white;
