@@ -30,14 +30,18 @@ const MeasurementSample& input_of(const Sequence& s, std::size_t k) {
   }
 }
 
+/// Sample k's time, from `columns` where they hold it (the same number, nearer in memory).
+template <typename Sequence>
+double time_at(const Sequence& s, std::size_t k, const WindowColumns* columns) {
+  return columns && columns->holds(k) ? columns->time_s[k - columns->first] : input_of(s, k).time_s;
+}
+
 /// The inputs at time `t`: the neighbours found by walking from `from`, which is near it (a
 /// delay is a few samples), so neither sorting nor a search of the whole sequence is needed.
 template <typename Sequence>
 MeasurementSample input_at(const Sequence& s, std::size_t from, double t, const WindowColumns* columns) {
   const std::size_t n = s.size();
-  const auto time_of = [&](std::size_t k) {
-    return columns && columns->holds(k) ? columns->time_s[k - columns->first] : input_of(s, k).time_s;
-  };
+  const auto time_of = [&](std::size_t k) { return time_at(s, k, columns); };
   std::size_t j = from;
   while (j > 0 && time_of(j) > t) --j;
   while (j + 1 < n && time_of(j + 1) <= t) ++j;
@@ -97,9 +101,7 @@ MeasurementSample timed(const Sequence& s, std::size_t i, const InputTiming& tim
     mean.add(out);
     // The samples inside (end - average_s, end], walking back from the last at or before `end`:
     // found from i in either direction, since a negative delay puts `end` after t_i.
-    const auto time_of = [&](std::size_t k) {
-      return columns && columns->holds(k) ? columns->time_s[k - columns->first] : input_of(s, k).time_s;
-    };
+    const auto time_of = [&](std::size_t k) { return time_at(s, k, columns); };
     std::size_t k = i;
     while (k > 0 && time_of(k) > end) --k;
     while (k + 1 < s.size() && time_of(k + 1) <= end) ++k;
