@@ -87,15 +87,15 @@ std::optional<WindowColumns> CouplingModel::window_columns(std::span<const Recor
     to = std::max(to, end);
     in_windows += timing.average_s * per_second;
   }
-  if (!(to >= from)) return std::nullopt;
-  // The samples in time order (as timed_input reads them); a recording out of order only finds a
-  // smaller table, and its windows compute what the table lacks.
-  const auto before = [](const RecordedSample& s, double t) { return s.input.time_s < t; };
-  const auto first = static_cast<std::size_t>(std::lower_bound(recording.begin(), recording.end(), from, before) - recording.begin());
-  const auto last = static_cast<std::size_t>(std::lower_bound(recording.begin(), recording.end(), to, before) - recording.begin());
-  const std::size_t span = std::min(last, recording.size() - 1) - std::min(first, last) + 1;
-  if (in_windows <= 2.0 * static_cast<double>(span)) return std::nullopt;
-  return WindowColumns(recording, std::min(first, last), std::min(last, recording.size() - 1));
+  if (!(to >= from) || in_windows <= 2.0 * ((to - from) * per_second + 1.0)) return std::nullopt;
+  // The samples from the first at or after `from` to the last at or before `to`, in time order as
+  // timed_input reads them (a recording out of order only finds a smaller table, and its windows
+  // compute what the table lacks).
+  std::size_t first = 0;
+  while (first + 1 < recording.size() && recording[first].input.time_s < from) ++first;
+  std::size_t last = first;
+  while (last + 1 < recording.size() && recording[last + 1].input.time_s <= to) ++last;
+  return WindowColumns(recording, first, last);
 }
 
 ModelPrediction CouplingModel::predict_at(std::span<const RecordedSample> recording, std::size_t i) const {
