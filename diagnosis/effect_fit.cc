@@ -409,6 +409,14 @@ void descend_with_coarser_derivative(const EffectProblem& problem, std::optional
   }
 }
 
+/// problem.polish on `best`, its evaluations counted once.
+void polish(const EffectProblem& problem, std::optional<LeastSquaresResult>& best, int& evaluations,
+            const FitSettings& settings) {
+  const int before = best->evaluations;
+  best = problem.polish(*best, settings.least_squares);
+  evaluations += best->evaluations - before;
+}
+
 /// `problem` in `box`: the same values, in its unit coordinates.
 void move_to(EffectProblem& problem, const ParameterBox& box) {
   const ParameterValues values = problem.box.to_values(problem.full);
@@ -501,9 +509,7 @@ void widen_where_on_edge(EffectProblem& problem, std::optional<LeastSquaresResul
       best = problem.solve(problem.full, settings.least_squares);
       evaluations += best->evaluations;
       descend_with_coarser_derivative(problem, best, evaluations, settings, {4.0, 16.0});
-      const int before_polish = best->evaluations;
-      best = problem.polish(*best, settings.least_squares);
-      evaluations += best->evaluations - before_polish;
+      polish(problem, best, evaluations, settings);
     } catch (const std::invalid_argument&) {  // the point cannot be evaluated in the wider box
       problem.box = narrower;
       problem.full = there;
@@ -588,9 +594,7 @@ std::optional<EffectFit> fit_effect(const CouplingModel& base, const EffectRegis
     descend_with_coarser_derivative(problem, second, evaluations, settings);
     if (second->cost < best->cost) best = std::move(second);
   }
-  const int before_polish = best->evaluations;
-  best = problem.polish(*best, settings.least_squares);  // the best start only
-  evaluations += best->evaluations - before_polish;
+  polish(problem, best, evaluations, settings);  // the best start only
   problem.full = problem.expand(best->x);
   widen_where_on_edge(problem, best, evaluations, settings);
   // Hold what the data cannot determine, one parameter at a time, refitting the rest.

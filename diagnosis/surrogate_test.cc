@@ -247,14 +247,7 @@ class Projector {
   }
 
   /// The share of what varies about each channel's level that the design explains beyond it.
-  double share(const Eigen::VectorXd& y) const {
-    const double level = (levels_.transpose() * y).squaredNorm();
-    const double total = y.squaredNorm() - level;
-    if (!(total > 0.0)) return 0.0;
-    const double beyond = choose_ <= 0 ? (basis_.transpose() * y).squaredNorm() - level
-                                       : greedy_share_of(normalised_.transpose() * y);
-    return std::clamp(beyond / total, 0.0, 1.0);
-  }
+  double share(const Eigen::VectorXd& y) const { return shares(y)(0); }
 
   /// share() of each column of `ys`, their products with the design's columns found together: one
   /// pass over the design's rows for all of them, where each alone streamed it from memory (a
@@ -597,11 +590,6 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
     std::vector<Projector> scan;
     for (const Eigen::MatrixXd& columns : designs[d].elsewhere) scan.emplace_back(SurrogateDesign{columns, 0, false, {}}, residual.rows());
     // The largest share the design, or any of its others in the box, explains (Davies' statistic).
-    const auto largest_share = [&](const Eigen::VectorXd& x) {
-      double best = projector.share(x);
-      for (const Projector& other : scan) best = std::max(best, other.share(x));
-      return best;
-    };
     const auto largest_shares = [&](const Eigen::MatrixXd& xs) {
       Eigen::VectorXd best = projector.shares(xs);
       for (const Projector& other : scan) best = best.cwiseMax(other.shares(xs));
@@ -613,7 +601,7 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
     const Eigen::MatrixX2d left = unstacked(y - span * (span.transpose() * y));
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
-      const double observed = largest_share(y);
+      const double observed = largest_shares(y)(0);
       // The null is noise like what the candidate leaves, with the rise it leaves given back
       // (rise_of_the_noise): a real effect's own spectrum (a drag that follows a speed programme, a
       // cross-talk of the model's moments) is not noise against it. Least squares took from the leftover the share of each frequency
