@@ -136,6 +136,25 @@ double extrapolated_rise_variance(const Eigen::VectorXd& x, int channel, const C
   return 1.25 * 1.25 * (std::max(white, 0.0) * rise(0) + walk * rise(1));
 }
 
+/// How many distinct time profiles the chosen columns of `span` (past its two levels, 2n rows
+/// stacked as the channels) follow: the rank of their channels' parts as series of n rows, each
+/// part at unit scale (a speed term on M_sy' and one on M_sz' follow one profile), eigenvalues of
+/// their Gram matrix under a hundredth of the largest taken as none.
+int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
+  Eigen::MatrixXd parts(n, 2 * std::max<Eigen::Index>(span.cols() - 2, 0));
+  Eigen::Index m = 0;
+  for (Eigen::Index j = 2; j < span.cols(); ++j) {
+    for (int c = 0; c < 2; ++c) {
+      const auto part = span.col(j).segment(c * n, n);
+      if (part.squaredNorm() > 1e-6) parts.col(m++) = part.normalized();
+    }
+  }
+  if (m == 0) return 0;
+  const Eigen::MatrixXd gram = parts.leftCols(m).transpose() * parts.leftCols(m);
+  const Eigen::VectorXd eigen = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gram).eigenvalues();
+  return static_cast<int>((eigen.array() > 0.01 * eigen.maxCoeff()).count());
+}
+
 /// The rise variance of the noise a candidate leaves, per channel: the larger of the leftover's
 /// own rise, given back the share the design's `span` (orthonormal) took of the rise's direction
 /// (as the spectrum is, SurrogateSpectrum::removed), and the rise its blocks extrapolate to
@@ -145,28 +164,31 @@ double extrapolated_rise_variance(const Eigen::VectorXd& x, int channel, const C
 /// against surrogates with rises of 25 kN·m and lost its claim; a thermal misalignment as the oil
 /// warmed, 1.8 kN·m in 1.1 kN·m of white noise, the same).
 ///
-/// A design `chosen` for this residual among many columns (a formula's terms, this many beyond the
-/// levels) is chosen again on every surrogate. One chosen term takes one direction of the
-/// leftover's block contrasts and leaves its wander in the rest, so the leftover's rise serves as
-/// for a fixed design; with the residual's own rise, which is the term's too, a term following a
-/// speed ramp in white noise was found less often the stronger it was (6 and 3 of 100 at 0.5 and
-/// 0.8 noise sigma; 100 and 100 with the leftover's) and a zoo speed drag of 45 % of the held-out
-/// error was no claim (power seed 20261299, draw 7). Several chosen terms take the slow subspace
-/// together, the wander from the blocks with it: the larger of the leftover's rise and the
-/// residual's own (five slow terms took a brown noise's rise of 17 kN·m, its leftover's blocks said
-/// 0.9). On wandering zeros, one, two and three slow terms chosen were claimed in 5, 10 and 17 of
-/// 300 draws with the residual's rise, 2, 1 and 5 so (with the leftover's alone, two and three in
-/// about 19 and 30): `Surrogates.OnWanderingZerosChosenSlowTermsAreClaimedAtMostAtTheLevel`.
+/// A design `chosen` for this residual among many columns (a formula's terms) is chosen again on
+/// every surrogate. Terms that follow one time profile (a speed term, or one on each channel, as a
+/// drag in a direction between them is) take one direction of each channel's block contrasts and
+/// leave the wander in the rest, so the leftover's rise serves as for a fixed design; with the
+/// residual's own rise, which is the terms' too, a term following a speed ramp in white noise was
+/// found less often the stronger it was (6 and 3 of 100 at 0.5 and 0.8 noise sigma; 100 and 100 with
+/// the leftover's; a drag between the channels, two terms, 8 and 12: 100 and 100), and a zoo speed
+/// drag of 45 % of the held-out error was no claim (power seed 20261299, draw 7). Terms of several
+/// profiles (distinct_profiles) take the slow subspace together, the wander from the blocks with it:
+/// the larger of the leftover's rise and the residual's own (five slow terms took a brown noise's
+/// rise of 17 kN·m, its leftover's blocks said 0.9). On wandering zeros, one to four slow terms
+/// chosen were claimed in 2, 3, 5 and 4 of 300 draws; with the residual's rise alone, as before,
+/// 5, 10 and 17 of one to three, and with the leftover's alone, about 19 and 30 of two and three
+/// (`Surrogates.OnWanderingZerosChosenSlowTermsAreClaimedAtMostAtTheLevel`).
 Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left,
-                                 const Eigen::MatrixXd& span, int chosen) {
+                                 const Eigen::MatrixXd& span, bool chosen) {
   const Eigen::Index n = left.rows();
   const ContrastVariances projected(span, n), own(Eigen::MatrixXd(2 * n, 0), n);
+  const bool several = chosen && distinct_profiles(span, n) > 1;
   Eigen::Array2d out;
   for (int c = 0; c < 2; ++c) {
     const double taken = (span.transpose() * rise_direction(n, c)).squaredNorm();
     const double blocks = extrapolated_rise_variance(left.col(c), c, projected, own);
     out(c) = taken > 0.5 ? blocks : std::max(rise_variance(left.col(c)) / (1.0 - taken), blocks);
-    if (chosen > 1) out(c) = std::max(out(c), rise_variance(residual.col(c)));
+    if (several) out(c) = std::max(out(c), rise_variance(residual.col(c)));
   }
   return out;
 }
@@ -528,7 +550,7 @@ namespace {
 /// the share of each frequency its columns (`span`, orthonormal) took.
 SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left, const Eigen::MatrixXd& span,
                              const SurrogateDesign& design) {
-  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose), {}};
+  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose > 0), {}};
   for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
   return shape;
 }
