@@ -172,12 +172,13 @@ int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
 /// found less often the stronger it was (6 and 3 of 100 at 0.5 and 0.8 noise sigma; 100 and 100 with
 /// the leftover's; a drag between the channels, two terms, 8 and 12: 100 and 100), and a zoo speed
 /// drag of 45 % of the held-out error was no claim (power seed 20261299, draw 7). Terms of several
-/// profiles (distinct_profiles) take the slow subspace together, the wander from the blocks with it:
-/// the larger of the leftover's rise and the residual's own (five slow terms took a brown noise's
-/// rise of 17 kN·m, its leftover's blocks said 0.9). On wandering zeros, one to four slow terms
-/// chosen were claimed in 2, 3, 5 and 4 of 300 draws; with the residual's rise alone, as before,
-/// 5, 10 and 17 of one to three, and with the leftover's alone, about 19 and 30 of two and three
-/// (`Surrogates.OnWanderingZerosChosenSlowTermsAreClaimedAtMostAtTheLevel`).
+/// profiles (distinct_profiles) take the slow subspace together, the wander from the blocks with it,
+/// and keep the residual's own rise (five slow terms took a brown noise's rise of 17 kN·m, its
+/// leftover's blocks said 0.9). On wandering zeros one slow term chosen was claimed in 2 of 300
+/// draws (5 with the residual's rise); two and three in 10 and 17 with the residual's rise, about 19
+/// and 30 with the leftover's, and 3 and 5 with the larger of the two, which lost 3 of 30 zoo
+/// twice-per-revolution draws under brown and hidden AR(1) noise, a forward order's cosine and sine
+/// (power seeds 20261299 draws 0 and 4, 20261303 draw 0), so it is not used.
 Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left,
                                  const Eigen::MatrixXd& span, bool chosen) {
   const Eigen::Index n = left.rows();
@@ -185,10 +186,13 @@ Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::
   const bool several = chosen && distinct_profiles(span, n) > 1;
   Eigen::Array2d out;
   for (int c = 0; c < 2; ++c) {
+    if (several) {
+      out(c) = rise_variance(residual.col(c));
+      continue;
+    }
     const double taken = (span.transpose() * rise_direction(n, c)).squaredNorm();
     const double blocks = extrapolated_rise_variance(left.col(c), c, projected, own);
     out(c) = taken > 0.5 ? blocks : std::max(rise_variance(left.col(c)) / (1.0 - taken), blocks);
-    if (several) out(c) = std::max(out(c), rise_variance(residual.col(c)));
   }
   return out;
 }
