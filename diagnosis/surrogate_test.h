@@ -13,9 +13,9 @@
 // the catalogue, of which the same number of terms is chosen greedily on each surrogate as on the
 // residual (the search's selection is part of the null). The surrogates are of what the candidate
 // leaves (the null: the residual is noise like that), end-matched, with a rise from first to last
-// row that the noise would have (the leftover's, or where terms of several time profiles were
-// chosen for the residual, the larger of it and the residual's own), and with their lines (a cycle, a programme that
-// repeats) brought down to the continuum about them; a resonance of the noise, as broad as its
+// row that the noise would have (the leftover's; the residual's own where formula terms of several
+// time profiles were chosen for it), and with their lines (a cycle, a programme that repeats)
+// brought down to the continuum about them; a resonance of the noise, as broad as its
 // neighbouring bins, is no line and is kept. Surrogates of the residual itself took a
 // real effect's own spectrum for the noise's (a cross-talk of the model's moments, a drag on a
 // speed programme); circular surrogates cannot rise as a walk does (a level and a staircase fitted

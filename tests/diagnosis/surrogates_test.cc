@@ -381,7 +381,7 @@ TEST(Surrogates, OnWanderingZerosOneChosenSlowTermIsClaimedAtMostAtTheLevel) {
 
 // The power where terms of one profile are chosen: a term following a programme that ends
 // elsewhere than it began (a drag on a speed ramp) in white noise, found in at least 95 of 100 draws
-// at half the noise's sigma, on one channel (one term chosen) and between the two (a term on each,
+// at 0.5 and at 0.8 of the noise's sigma, on one channel (one term chosen) and between the two (a term on each,
 // two chosen). The surrogates' rise is the leftover's, not the residual's, which holds the terms'
 // own rise: with it the term on one channel was found in 6 and 3 of 100 at 0.5 and 0.8 sigma, less
 // often the stronger it was, and the one between the channels in 8 and 12.
