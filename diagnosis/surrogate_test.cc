@@ -545,7 +545,7 @@ double tail_bound(double observed, double mean, double variance) {
   return k2 >= kFarOut * kFarOut ? std::min(cantelli, 10.0 * beta_upper_tail(observed, mean, variance)) : cantelli;
 }
 
-/// The level test's blocks: 21 contiguous ones, at most 20 degrees of freedom.
+/// The level test's blocks: 21 contiguous ones, 20 degrees of freedom.
 constexpr Eigen::Index kLevelBlocks = 21;
 
 namespace {
@@ -559,39 +559,23 @@ SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::Matr
   return shape;
 }
 
-/// Adjacent block means' lag-1 correlation about their mean; zero where the means do not vary.
-double lag_one_correlation(const Eigen::VectorXd& means) {
-  const Eigen::ArrayXd about = means.array() - means.mean();
-  const double sum_squares = about.square().sum();
-  if (!(sum_squares > 0.0)) return 0.0;
-  return (about.head(means.size() - 1) * about.tail(means.size() - 1)).sum() / sum_squares;
-}
-
-/// Its bias on m means (Marriott and Pope 1954: -(1 + 3 rho) / m), to be added back.
-double lag_one_bias(double r1, double m) { return (1.0 + 3.0 * std::max(r1, 0.0)) / m; }
-
 }  // namespace
 
 double level_standard_error(const Eigen::VectorXd& means) {
   const double m = static_cast<double>(means.size());
-  const double spread = std::sqrt((means.array() - means.mean()).square().sum() / (m - 1.0));
-  if (!(spread > 0.0)) return spread;
-  // The adjacent means' correlation, its bias added back, and 2.33 of its standard errors above
-  // that: a one-sided 1 % bound.
-  const double r1 = lag_one_correlation(means);
-  const double rho = std::min(0.999, r1 + lag_one_bias(r1, m) + 2.326 * std::sqrt(std::max(1.0 - r1 * r1, 0.05) / m));
+  const Eigen::ArrayXd about = means.array() - means.mean();
+  const double sum_squares = about.square().sum();
+  const double spread = std::sqrt(sum_squares / (m - 1.0));
+  if (!(sum_squares > 0.0)) return spread;
+  // Adjacent means' correlation, its bias on m means added back (Marriott and Pope 1954:
+  // -(1 + 3 rho) / m), and 2.33 of its standard errors above that: a one-sided 1 % bound.
+  const double r1 = (about.head(means.size() - 1) * about.tail(means.size() - 1)).sum() / sum_squares;
+  const double bias = (1.0 + 3.0 * std::max(r1, 0.0)) / m;
+  const double rho = std::min(0.999, r1 + bias + 2.326 * std::sqrt(std::max(1.0 - r1 * r1, 0.05) / m));
   // The mean's standard error with means correlated as an AR(1) of rho: (1 + rho) / (1 - rho)
   // times the independent one; never beyond the spread itself.
   const double inflation = std::sqrt(std::max(1.0 + rho, 0.0) / (1.0 - rho));
   return spread * std::min(1.0, inflation / std::sqrt(m));
-}
-
-int level_degrees_of_freedom(const Eigen::VectorXd& means) {
-  const double m = static_cast<double>(means.size());
-  const double r1 = lag_one_correlation(means);
-  const double rho = std::clamp(r1 + lag_one_bias(r1, m), 0.0, 0.999);
-  const double independent = m * (1.0 - rho) / (1.0 + rho);
-  return std::clamp(static_cast<int>(std::floor(independent - 1.0)), 1, static_cast<int>(means.size()) - 1);
 }
 
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander) {
@@ -605,7 +589,7 @@ double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& w
     for (Eigen::Index k = 0; k < parts; ++k) means(k) = x.segment(k * n / parts, (k + 1) * n / parts - k * n / parts).mean();
     const double error = level_standard_error(means);
     const double t = error > 0.0 ? std::abs(level) / error : (level != 0.0 ? 1e300 : 0.0);
-    p = std::min(p, student_two_sided_p(t, level_degrees_of_freedom(means)));
+    p = std::min(p, student_two_sided_p(t, static_cast<int>(parts - 1)));
   }
   return std::min(1.0, 2.0 * p);  // either channel
 }

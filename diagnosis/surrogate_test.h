@@ -147,23 +147,10 @@ struct SurrogateDesign {
 /// no claim with the spread (p = 0.033 in the family; zoo power seed 20261263, draw 7).
 double level_standard_error(const Eigen::VectorXd& means);
 
-/// The degrees of freedom of level_standard_error: how many independent means the blocks hold,
-/// m (1 - rho) / (1 + rho) for means correlated as an AR(1) of rho (the adjacent means' correlation,
-/// its bias added back), less one; from 1 to m - 1. Means of a noise whose correlation spans a
-/// fifth of the recording are about two independent levels, and their spread is known to about
-/// one degree of freedom: judged as twenty, a chosen slow term's level was claimed on 22 of 600
-/// wandering zeros (tau 0.02-0.5 of the rows) and 8 of 600 random walks; with these, 12 and 0
-/// (an offset under a noise of 12 rows' correlation, found in 21 of 100 at 0.5 sigma, in 17). The
-/// levels of 1,000 wandering zeros stand out at 1 % in 7, against 26; white noise's offset of 0.3
-/// sigma on 600 rows in 707 against 755, where the estimate scatters above zero
-/// (`Surrogates.ALevelOfSlowNoiseIsJudgedOnTheIndependentMeansItHolds`).
-int level_degrees_of_freedom(const Eigen::VectorXd& means);
-
 /// The p-value that a channel's level (the mean of `residual`) is no more than its wander: against
 /// level_standard_error of the means of 21 contiguous blocks of `wander` (what a design that moves
-/// the level leaves, so that structure it explains is not taken for wander), as Student's t with
-/// level_degrees_of_freedom (20 where the means are independent), the smaller of the two channels'
-/// doubled.
+/// the level leaves, so that structure it explains is not taken for wander), as Student's t with 20
+/// degrees of freedom, the smaller of the two channels' doubled.
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander);
 
 /// The test's statistic: the share of what varies about each channel's level of `residual` (rows
