@@ -170,7 +170,7 @@ int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
 /// leave the wander in the rest, so the leftover's rise serves as for a fixed design; with the
 /// residual's own rise, which is the terms' too, a term following a speed ramp in white noise was
 /// found less often the stronger it was (6 and 3 of 100 at 0.5 and 0.8 noise sigma; 100 and 100 with
-/// the leftover's; a drag between the channels, two terms, 8 and 12: 100 and 100), and a zoo speed
+/// the leftover's; a drag between the channels, two terms, 15 and 12: 100 and 100), and a zoo speed
 /// drag of 45 % of the held-out error was no claim (power seed 20261299, draw 7). Terms of several
 /// profiles (distinct_profiles) take the slow subspace together, the wander from the blocks with it,
 /// and keep the residual's own rise (five slow terms took a brown noise's rise of 17 kN·m, its
@@ -182,14 +182,10 @@ int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
 Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left,
                                  const Eigen::MatrixXd& span, bool chosen) {
   const Eigen::Index n = left.rows();
+  if (chosen && distinct_profiles(span, n) > 1) return {rise_variance(residual.col(0)), rise_variance(residual.col(1))};
   const ContrastVariances projected(span, n), own(Eigen::MatrixXd(2 * n, 0), n);
-  const bool several = chosen && distinct_profiles(span, n) > 1;
   Eigen::Array2d out;
   for (int c = 0; c < 2; ++c) {
-    if (several) {
-      out(c) = rise_variance(residual.col(c));
-      continue;
-    }
     const double taken = (span.transpose() * rise_direction(n, c)).squaredNorm();
     const double blocks = extrapolated_rise_variance(left.col(c), c, projected, own);
     out(c) = taken > 0.5 ? blocks : std::max(rise_variance(left.col(c)) / (1.0 - taken), blocks);

@@ -384,7 +384,7 @@ TEST(Surrogates, OnWanderingZerosOneChosenSlowTermIsClaimedAtMostAtTheLevel) {
 // at 0.5 and at 0.8 of the noise's sigma, on one channel (one term chosen) and between the two (a term on each,
 // two chosen). The surrogates' rise is the leftover's, not the residual's, which holds the terms'
 // own rise: with it the term on one channel was found in 6 and 3 of 100 at 0.5 and 0.8 sigma, less
-// often the stronger it was, and the one between the channels in 8 and 12.
+// often the stronger it was, and the one between the channels in 15 and 12.
 TEST(Surrogates, TermsOfOneProfileThatFollowASlowInputAreFoundInWhiteNoise) {
   std::mt19937_64 random(20261301);
   std::normal_distribution<double> normal;
