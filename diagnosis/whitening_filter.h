@@ -1,15 +1,15 @@
 // An autoregressive whitening filter of each moment channel, for the surrogate test's statistic
 // (surrogate_test.h): the share a design explains is measured on the residual, the design and every
 // surrogate after one and the same filter, e_t = x_t - sum_k a_k x_{t-k}, fitted to the noise the
-// null is drawn from. On white noise the filter is the identity and nothing changes. On slow noise
-// (a random walk, a zero wandering with a long time constant) the share of the raw rows is mostly
-// the noise's slow power, which a few slow terms of a formula's catalogue explain in any surrogate
-// as well as in the residual: a forward order of 45 % of the held-out error under brown noise had a
-// surrogate p of 1 (zoo power seed 20261308, draw 0). Whitened, the walk is its steps and the
-// order stands out of them: least squares after the filter is generalised least squares, the
-// most powerful test when the filter is the noise's (its detectability is the zoo oracle's d).
-// The surrogates carry the null's spectrum, the statistic is the same function of the residual
-// and of each, so the test keeps its level whatever the filter.
+// null is drawn from. On a walk (brown noise: adjacent rows correlated beyond 0.9) the share of the
+// raw rows is mostly the walk's slow power, which a few slow terms of a formula's catalogue explain
+// in any surrogate walk as well as in the residual: a forward order of 45 % of the held-out error
+// under brown noise had a surrogate p of 1 (zoo power seed 20261308, draw 0). Whitened, the walk is
+// its steps and the order stands out of them: least squares after the filter is generalised least
+// squares. Faster noise is left as it is: a few autoregressive lags misjudge the low-frequency
+// level a slow term stands on, and cost it power (whitening_filter.cc). The surrogates carry the
+// null's spectrum and the statistic is the same function of the residual and of each, so the test
+// keeps its level whatever the filter.
 #pragma once
 
 #include <array>
