@@ -7,14 +7,12 @@
 #include <optional>
 #include <random>
 #include <array>
-#include <utility>
 
 #include <unsupported/Eigen/FFT>
 
 #include "diagnosis/beta_tail.h"
 #include "diagnosis/median.h"
 #include "diagnosis/stacked_channels.h"
-#include "diagnosis/whitening_filter.h"
 
 namespace gc {
 namespace {
@@ -390,44 +388,6 @@ class Projector {
   Eigen::MatrixXd gram_;        ///< normalised_' normalised_ (choose_ > 0)
 };
 
-/// The test's statistic on right-hand sides stacked as the residual: the largest share the design,
-/// or any of its others in the box, explains (Davies' statistic), after `whitening`
-/// (whitening_filter.h); the projectors of the rows as they are where it is the identity.
-class ExplainedShares {
- public:
-  ExplainedShares(const SurrogateDesign& design, const Projector& raw, WhiteningFilter whitening, Eigen::Index rows)
-      : whitening_(std::move(whitening)) {
-    if (whitening_.identity()) {
-      raw_ = &raw;
-      for (const Eigen::MatrixXd& columns : design.elsewhere) scan_.emplace_back(SurrogateDesign{columns, 0, false, {}}, rows);
-      return;
-    }
-    const Eigen::Index kept = rows - whitening_.order();
-    own_.emplace(SurrogateDesign{whitening_.applied(design.columns), design.choose, false, {}}, kept);
-    for (const Eigen::MatrixXd& columns : design.elsewhere) {
-      scan_.emplace_back(SurrogateDesign{whitening_.applied(columns), 0, false, {}}, kept);
-    }
-  }
-
-  Eigen::VectorXd operator()(const Eigen::MatrixXd& xs) const {
-    const Projector& design = raw_ != nullptr ? *raw_ : *own_;
-    if (whitening_.identity()) return largest(design, xs);
-    return largest(design, whitening_.applied(xs));
-  }
-
- private:
-  Eigen::VectorXd largest(const Projector& design, const Eigen::MatrixXd& xs) const {
-    Eigen::VectorXd best = design.shares(xs);
-    for (const Projector& other : scan_) best = best.cwiseMax(other.shares(xs));
-    return best;
-  }
-
-  WhiteningFilter whitening_;
-  const Projector* raw_ = nullptr;
-  std::optional<Projector> own_;
-  std::vector<Projector> scan_;
-};
-
 }  // namespace
 
 std::vector<double> SurrogateSpectrum::leverage(const Eigen::MatrixXd& basis, Eigen::Index n, int channel) {
@@ -482,26 +442,6 @@ SurrogateSource::SurrogateSource(const Eigen::MatrixX2d& residual, std::uint64_t
     rise_sigma_[static_cast<std::size_t>(c)] =
         std::sqrt(shape.rise_variance ? (*shape.rise_variance)(c) : rise_variance(residual.col(c)));
   }
-}
-
-WhiteningFilter SurrogateSource::whitening(int most_order) const {
-  std::array<Eigen::VectorXd, 2> covariances;
-  if (n_ < 8) return WhiteningFilter::of_autocovariances(covariances, n_, most_order);
-  // The surrogates' autocovariances, circular: the inverse transform of their power.
-  Workspace workspace;
-  std::vector<std::complex<double>> power(static_cast<std::size_t>(m_), 0.0);
-  std::vector<double> back;
-  for (int c = 0; c < 2; ++c) {
-    const std::vector<double>& x = amplitudes_[static_cast<std::size_t>(c)];
-    for (Eigen::Index k = 1; k <= m_ / 2; ++k) {
-      power[static_cast<std::size_t>(k)] = x[static_cast<std::size_t>(k)] * x[static_cast<std::size_t>(k)];
-      power[static_cast<std::size_t>(m_ - k)] = power[static_cast<std::size_t>(k)];
-    }
-    workspace.fft_->fft.inv(back, power);
-    const Eigen::Index lags = std::min<Eigen::Index>(most_order, m_ - 1);
-    covariances[static_cast<std::size_t>(c)] = Eigen::Map<const Eigen::VectorXd>(back.data(), lags + 1);
-  }
-  return WhiteningFilter::of_autocovariances(covariances, m_, most_order);
 }
 
 SurrogateSource::Draw SurrogateSource::draw() {
@@ -674,24 +614,30 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
   const Eigen::VectorXd y = stacked(residual);
   for (std::size_t d = 0; d < designs.size(); ++d) {
     const Projector projector(designs[d], residual.rows());
+    std::vector<Projector> scan;
+    for (const Eigen::MatrixXd& columns : designs[d].elsewhere) scan.emplace_back(SurrogateDesign{columns, 0, false, {}}, residual.rows());
+    // The largest share the design, or any of its others in the box, explains (Davies' statistic).
+    const auto largest_shares = [&](const Eigen::MatrixXd& xs) {
+      Eigen::VectorXd best = projector.shares(xs);
+      for (const Projector& other : scan) best = best.cwiseMax(other.shares(xs));
+      return best;
+    };
     // The levels and the design's columns (those chosen for the residual), once: the leftover
     // and the leverage the surrogates give back both come from them.
     const Eigen::MatrixXd span = projector.span(y);
     const Eigen::MatrixX2d left = unstacked(y - span * (span.transpose() * y));
     double p = 1.0;
     if (designs[d].columns.cols() > 0) {
-      const bool of_the_residual = designs[d].null_of_the_residual;
+      const double observed = largest_shares(y)(0);
       // The null is noise like what the candidate leaves, with the rise it leaves given back
       // (rise_of_the_noise): a real effect's own spectrum (a drag that follows a speed programme, a
       // cross-talk of the model's moments) is not noise against it. Least squares took from the leftover the share of each frequency
       // that the design spans (its leverage there): the surrogates give it back, or a slow design
       // fitted to a slow noise would leave a null with less of the slow power than it took (ter
       // Braak's scheme is liberal by that much where a design has few degrees of freedom to spare).
+      const bool of_the_residual = designs[d].null_of_the_residual;
       const SurrogateSpectrum shape = of_the_residual ? SurrogateSpectrum{} : left_shape(residual, left, span, designs[d]);
       SurrogateSource surrogates(of_the_residual ? residual : left, seed + d, shape);
-      // The statistic, after the filter that whitens the null's spectrum.
-      const ExplainedShares largest_shares(designs[d], projector, surrogates.whitening(), residual.rows());
-      const double observed = largest_shares(y)(0);
       int as_well = 0, drawn = 0;
       double sum = 0.0, sum_of_squares = 0.0;
       double beyond_doubt = -1.0;  // the tail's bound once it settles the test; negative before

@@ -11,11 +11,7 @@
 // each channel's level that least squares on the candidate's design removes. An effect's design is
 // its correction at the fit and its Jacobian there (the directions it can move in); a formula's is
 // the catalogue, of which the same number of terms is chosen greedily on each surrogate as on the
-// residual (the search's selection is part of the null). Where the null is slow (a walk: adjacent
-// rows correlated beyond 0.9), the share is measured after the filter that whitens the null, on the
-// residual, the design and every surrogate alike (whitening_filter.h): on the rows as they are, a
-// walk's slow power is most of the share, and slow terms explain it in any surrogate walk as well
-// as a cycle of the residual. The surrogates are of what the candidate
+// residual (the search's selection is part of the null). The surrogates are of what the candidate
 // leaves (the null: the residual is noise like that), end-matched, with a rise from first to last
 // row that the noise would have (the leftover's; the residual's own where formula terms of several
 // time profiles were chosen for it), and with their lines (a cycle, a programme that repeats)
@@ -40,7 +36,6 @@
 #include <Eigen/Dense>
 
 #include "diagnosis/parallel_for.h"
-#include "diagnosis/whitening_filter.h"
 
 namespace gc {
 
@@ -96,10 +91,6 @@ class SurrogateSource {
     std::unique_ptr<Transform> fft_;
   };
   Eigen::MatrixX2d made(const Draw& draw, Workspace& workspace) const;
-
-  /// The autoregressive filter (up to `most_order`) that whitens these surrogates' spectrum,
-  /// fitted to their autocovariances (whitening_filter.h).
-  WhiteningFilter whitening(int most_order = 8) const;
 
  private:
   Eigen::Index n_, m_;  ///< rows; the FFT's length (the last m_ rows, wrapped to n_)
@@ -162,8 +153,7 @@ double level_standard_error(const Eigen::VectorXd& means);
 /// degrees of freedom, the smaller of the two channels' doubled.
 double level_p_value(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& wander);
 
-/// The test's statistic on the rows as they are (surrogate_p_values whitens them where the null is
-/// slow): the share of what varies about each channel's level of `residual` (rows
+/// The test's statistic: the share of what varies about each channel's level of `residual` (rows
 /// in time order, one column per moment channel) that `design` explains beyond the levels, its
 /// `choose` columns selected forward on this residual where choose > 0; the largest of it and of
 /// its designs `elsewhere`.

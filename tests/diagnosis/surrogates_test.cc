@@ -347,41 +347,6 @@ TEST(Surrogates, OnRandomWalksChosenSlowTermsAreClaimedAtMostAtTheLevel) {
   EXPECT_LE(claimed, std::max(2, draws * 2 / 100)) << claimed << " of " << draws;
 }
 
-// The power under brown noise (a random walk a row, the moments' drift): a formula of two terms,
-// the cosine and sine of a cycle of 37 rows (a forward order), chosen from a catalogue that holds
-// the slow terms too, at 1.5 times the walk's rms. On the rows as they are, the walk's slow power
-// is most of the share, and two slow terms explain as much of a surrogate walk: found in 3 of 100
-// (2026-12-02). The statistic after the null's whitening filter (differenced: whitening_filter.h)
-// compares the cycle with the walk's steps: found in every draw. The zoo's draw (power seed
-// 20261308, draw 0: a twice per revolution under brown noise, surrogate p = 1) is this.
-TEST(Surrogates, UnderBrownNoiseAFastTermIsJudgedAgainstTheWalksSteps) {
-  std::mt19937_64 random(20261202);
-  std::uniform_real_distribution<double> uniform;
-  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(2 * kRows, 2 * 7);
-  const Eigen::VectorXd programme = programme_ending_elsewhere();
-  for (int i = 0; i < kRows; ++i) {
-    const double t = static_cast<double>(i) / kRows, angle = 2.0 * std::numbers::pi * i / 37.0;
-    const double terms[] = {programme(i), std::cos(3.0 * std::numbers::pi * t), std::cos(2.0 * std::numbers::pi * t),
-                            t, std::floor(4.0 * t), std::cos(angle), std::sin(angle)};
-    for (int c = 0; c < 2; ++c) {
-      for (int j = 0; j < 7; ++j) columns(c * kRows + i, 7 * c + j) = terms[j];
-    }
-  }
-  const SurrogateDesign catalogue{columns, 2, false, {}};
-  int found = 0;
-  const int draws = 100 / kScale;
-  for (int d = 0; d < draws; ++d) {
-    const Eigen::MatrixX2d walk = random_walk(random);
-    const double rms = std::sqrt((walk.rowwise() - walk.colwise().mean()).squaredNorm() / (2.0 * kRows));
-    const double phase = 2.0 * std::numbers::pi * uniform(random);
-    Eigen::MatrixX2d y = walk;
-    for (int i = 0; i < kRows; ++i) y(i, 0) += 1.5 * std::sqrt(2.0) * rms * std::cos(2.0 * std::numbers::pi * i / 37.0 + phase);
-    if (surrogate_p_values(y, {catalogue}, 0.01, random())[0] <= 0.01) ++found;
-  }
-  std::printf("a cycle of 37 rows at 1.5 times a random walk's rms, chosen among slow terms: found in %d of %d\n", found, draws);
-  EXPECT_GE(found, draws * 95 / 100) << found << " of " << draws;
-}
-
 /// Both channels a wandering zero: an AR(1) whose time constant is `tau` rows, under white noise
 /// of `white` times its own RMS [unit RMS before the white].
 Eigen::MatrixX2d wandering_zero(std::mt19937_64& random, double tau, double white) {
