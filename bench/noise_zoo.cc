@@ -19,7 +19,10 @@
 // Power table (--power): every hidden effect (or --effects) at every SNR (--snrs, default
 // 0.75,1.5,3), draws 0..N-1 of the master seed each (the same noise draws for every effect), in
 // the order draw, SNR, effect, so a run stopped by --deadline-min (no task started after M minutes)
-// keeps its counts even; a markdown table of the share named first with a 95 % Wilson interval.
+// keeps its counts even; a markdown table of the share named first with a 95 % Wilson interval,
+// and the same share among the draws where a detection oracle reaches 90 % (zoo/oracle.h) and
+// where the truth is also identifiable, told apart from every rival effect's nearest member with
+// identity and detection d >= 3.61 (zoo/identity_oracle.h).
 //
 // A draw's seed is derived from the master seed and its index (gc::zoo::draw_seed), so
 // `--seed S --only K` reruns draw K alone. The default master seed comes from the clock, printed.
@@ -180,9 +183,14 @@ int power_table(const Options& o) {
     std::size_t rows = 0;
     double touch_up = 1.0;  // the generator's linear scaling past the effect's physical bounds (1: none)
     double oracle_power = std::numeric_limits<double>::quiet_NaN();  // zoo/oracle.h
+    double oracle_d = std::numeric_limits<double>::quiet_NaN();
+    double identity_d = std::numeric_limits<double>::quiet_NaN();    // zoo/identity_oracle.h
   };
   // Draws where a test that knew the effect and the noise's spectrum reaches 90 % at 1 % (d >= 3.61).
   const auto oracle_can = [](const Task& t) { return t.oracle_power >= 0.9; };
+  // Draws where the truth can be told apart from every rival effect too (zoo/identity_oracle.h):
+  // identity and detection d >= 3.61.
+  const auto identifiable = [](const Task& t) { return t.identity_d >= 3.61 && t.oracle_d >= 3.61; };
   // Within the library: the generator reached the SNR with the effect's own parameters, its linear
   // touch-up within 25 % (past a physical bound, a touch-up of x2 is a truth no fit can express).
   const auto within_library = [](const Task& t) { return t.touch_up >= 0.8 && t.touch_up <= 1.25; };
@@ -233,15 +241,18 @@ int power_table(const Options& o) {
       t.wall_s = out.wall_s;
       t.rows = d.rows;
       t.oracle_power = d.oracle_power;
+      t.oracle_d = d.oracle_d;
+      t.identity_d = d.identity_d;
       std::smatch touch;
       if (std::regex_search(d.description, touch, std::regex("touch-up x([0-9.]+)"))) t.touch_up = std::stod(touch[1]);
       t.done = true;
       std::string names;
       for (const auto& c : out.first_claim) names += (names.empty() ? "" : ",") + c;
       std::lock_guard lock(print);
-      std::printf("[k=%zu snr=%.2f %s] %s first=%s outcomes=%s (%zu rows, diagnose %.1f s; oracle d %.1f, power %.0f %%)%s\n  %s\n",
+      std::printf("[k=%zu snr=%.2f %s] %s first=%s outcomes=%s (%zu rows, diagnose %.1f s; oracle d %.1f, power %.0f %%; identity d %.1f vs %s)%s\n  %s\n",
                   t.k, t.snr, t.effect.c_str(), t.error ? "ERROR" : t.hit ? "HIT" : "miss", names.empty() ? "-" : names.c_str(),
-                  out.outcomes.c_str(), d.rows, out.wall_s, d.oracle_d, 100 * d.oracle_power,
+                  out.outcomes.c_str(), d.rows, out.wall_s, d.oracle_d, 100 * d.oracle_power, d.identity_d,
+                  d.identity_rival.empty() ? "-" : d.identity_rival.c_str(),
                   t.error ? (" " + out.stderr_tail).c_str() : "", d.description.c_str());
       std::fflush(stdout);
     }
@@ -253,14 +264,14 @@ int power_table(const Options& o) {
 
   std::printf("\n## Power table: master seed %llu (gc_noise_zoo --power --seed %llu --max-rows %zu --min-rows %zu)\n\n",
               static_cast<unsigned long long>(o.seed), static_cast<unsigned long long>(o.seed), o.max_rows, o.min_rows);
-  std::printf("| hidden effect | names that count | SNR | draws | named first | share | 95 %% Wilson | any claim | errors | within the library: named first | where an oracle reaches 90 %%: named first | first claim when missed |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::size_t all_n = 0, all_hits = 0, in_n = 0, in_hits = 0, can_n = 0, can_hits = 0;
+  std::printf("| hidden effect | names that count | SNR | draws | named first | share | 95 %% Wilson | any claim | errors | within the library: named first | where an oracle reaches 90 %%: named first | where the truth is identifiable (identity and detection d >= 3.61): named first | first claim when missed |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::size_t all_n = 0, all_hits = 0, in_n = 0, in_hits = 0, can_n = 0, can_hits = 0, id_n = 0, id_hits = 0;
   for (const auto& e : o.effects) {
     std::string counts;
     for (const auto& info : hidden_effect_table()) if (info.name == e) counts = info.counts;
     for (double snr : o.snrs) {
-      std::size_t n = 0, hits = 0, claims = 0, errors = 0, n_in = 0, hits_in = 0, n_can = 0, hits_can = 0;
+      std::size_t n = 0, hits = 0, claims = 0, errors = 0, n_in = 0, hits_in = 0, n_can = 0, hits_can = 0, n_id = 0, hits_id = 0;
       std::map<std::string, int> instead;
       for (const auto& t : tasks) {
         if (!t.done || t.effect != e || t.snr != snr) continue;
@@ -268,23 +279,28 @@ int power_table(const Options& o) {
         ++n, hits += t.hit, claims += t.claim;
         if (within_library(t)) ++n_in, hits_in += t.hit;
         if (oracle_can(t)) ++n_can, hits_can += t.hit;
+        if (identifiable(t)) ++n_id, hits_id += t.hit;
         if (!t.hit) ++instead[t.first];
       }
       all_n += n, all_hits += hits, in_n += n_in, in_hits += hits_in, can_n += n_can, can_hits += hits_can;
+      id_n += n_id, id_hits += hits_id;
       std::vector<std::pair<int, std::string>> v;
       for (const auto& [name, c] : instead) v.push_back({-c, name});
       std::sort(v.begin(), v.end());
       std::string miss;
       for (const auto& [c, name] : v) miss += (miss.empty() ? "" : ", ") + name + " " + std::to_string(-c);
       const auto [lo, hi] = wilson(hits, n);
-      std::printf("| %s | %s | %.2f | %zu | %zu | %.0f %% | %.0f-%.0f %% | %zu | %zu | %zu of %zu | %zu of %zu | %s |\n", e.c_str(),
+      std::printf("| %s | %s | %.2f | %zu | %zu | %.0f %% | %.0f-%.0f %% | %zu | %zu | %zu of %zu | %zu of %zu | %zu of %zu | %s |\n", e.c_str(),
                   counts.c_str(), snr, n, hits, n ? 100.0 * hits / n : 0.0, 100 * lo, 100 * hi, claims, errors, hits_in, n_in,
-                  hits_can, n_can, miss.empty() ? "-" : miss.c_str());
+                  hits_can, n_can, hits_id, n_id, miss.empty() ? "-" : miss.c_str());
     }
   }
   std::printf("\nnamed first: %zu of %zu; within the library (the generator's touch-up x0.8-1.25): %zu of %zu; where a test "
               "that knew the effect and the noise's spectrum reaches 90 %% at 1 %% (zoo/oracle.h, d >= 3.61): %zu of %zu\n",
               all_hits, all_n, in_hits, in_n, can_hits, can_n);
+  std::printf("where the truth can also be told apart from every rival effect's nearest member (zoo/identity_oracle.h, identity "
+              "and detection d >= 3.61): %zu of %zu\n",
+              id_hits, id_n);
   std::vector<double> wall;
   for (const auto& t : tasks) if (t.done) wall.push_back(t.wall_s);
   std::printf("\ndiagnose wall time: median %.1f s, max %.1f s over %zu runs; %.1f min in all\n", quantile(wall, 0.5),

@@ -20,6 +20,7 @@
 // signals, linear by construction: their unit shape is scaled.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,43 @@ struct ProgrammeNeeds {
   bool vary_speed = false;  ///< every block ends at another speed
 };
 ProgrammeNeeds hidden_effect_programme(const std::string& name);
+
+/// One parameter of a truth's family of signals.
+struct EffectParameter {
+  std::string name;
+  double lo = 0.0, hi = 0.0;  ///< the range a fit searches (lo == hi: held at that value; infinite: free)
+  double scale = 1.0;         ///< a typical size: finite differences and start points where a bound is infinite
+};
+
+/// A truth's signal as a function of its parameters: the generator draws one member (its shape
+/// parameters, then its size lambda solved for the SNR); a fit (identity_oracle.h) searches them
+/// all. `parameters` are the generator's own (its drawn shape parameters, then lambda) with the
+/// ranges of every member the generator can reach: the drawn ranges times lambda within its
+/// physical bounds, the redundant lambda held at 1 where the drawn amplitudes already carry the
+/// size, angles free, a size of either sign where its sign is physical. `moments(theta, i)` is the
+/// rig's moments at row i of the effect-free truth `clean` with the effect at theta; it throws where
+/// the model refuses the row (the generator then leaves the row unchanged). The family holds
+/// references to the model and `clean`: they must outlive it.
+struct HiddenEffectFamily {
+  std::string name;
+  std::vector<EffectParameter> parameters;
+  std::vector<double> none;  ///< a member without any effect (every family has one)
+  int size_parameter = -1;   ///< the parameter the change is about proportional to (its size), or -1
+  /// With size_parameter: the direction of a vector whose length (either sign) is the size (an
+  /// offset's direction, a phase), or -1. A fit reads the pair as the vector's two components.
+  int polar_angle = -1;
+  std::function<SensorMoments(const std::vector<double>& theta, std::size_t i)> moments;
+  /// Brings theta back into the physical set where that is not a box (e.g. a size bound that
+  /// depends on a shape parameter); empty where the box is the set.
+  std::function<void(std::vector<double>& theta)> project;
+};
+
+/// The family of truth `name` (hidden_effect_table()) on the effect-free truth `clean`.
+/// remember_rows: keep per-row work that does not depend on theta (the base prediction of a
+/// contact change; a switch's change), for a fit evaluating the same rows many times.
+/// Throws std::invalid_argument for an unknown name.
+HiddenEffectFamily hidden_effect_family(const std::string& name, const CouplingModel& model, double jam_rad,
+                                        const Channels& clean, bool remember_rows = false);
 
 /// Adds the effect to truth's moments (RMS of the change over both channels = snr * level_nm);
 /// returns its parameters as text. Throws std::invalid_argument for an unknown name.

@@ -8,6 +8,7 @@
 #include "core/coupling_geometry.h"
 #include "tests/diagnosis/zoo/families.h"
 #include "tests/diagnosis/zoo/hidden_effects.h"
+#include "tests/diagnosis/zoo/identity_oracle.h"
 #include "tests/diagnosis/zoo/oracle.h"
 #include "tests/diagnosis/zoo/programme.h"
 #include "tests/diagnosis/zoo/text.h"
@@ -41,16 +42,49 @@ double spread(const std::vector<double>& v) {
   return *hi - *lo;
 }
 
+// The identity bound (identity_oracle.h) beside the detection bound: the effect's signal against
+// every rival family's nearest member, on at most kIdentityRows of the rows the oracle read (every
+// k-th), each family evaluated on the effect-free truth at those rows, the distance scaled to all
+// rows by the detection d. `kept`: the rows the oracle read (indices into truth).
+constexpr std::size_t kIdentityRows = 2000;
+
+void set_identity_bound(const std::string& effect, const CouplingModel& model, double jam, const Channels& truth,
+                        const std::vector<double>& clean_y, const std::vector<double>& clean_z, const std::vector<std::size_t>& kept,
+                        const std::vector<double>& sy, const std::vector<double>& sz, const std::vector<double>& ny,
+                        const std::vector<double>& nz, ZooDraw& d) {
+  if (!std::isfinite(d.oracle_d)) return;
+  Channels clean = truth;
+  clean.msy_nm = clean_y;
+  clean.msz_nm = clean_z;
+  const std::vector<std::size_t> at = thinned_rows(kept.size(), kIdentityRows);
+  std::vector<std::size_t> rows;
+  std::vector<double> ty, tz, my, mz;
+  for (std::size_t k : at) {
+    rows.push_back(kept[k]);
+    ty.push_back(sy[k]), tz.push_back(sz[k]), my.push_back(ny[k]), mz.push_back(nz[k]);
+  }
+  if (rows.size() < 64) return;
+  std::vector<SignalFamily> rivals;
+  for (const std::string& name : identity_rivals(effect)) rivals.push_back(signal_family(name, model, jam, clean, rows));
+  IdentityOptions options;
+  options.seed = derive_seed(d.seed, "identity");
+  const IdentityBound bound = identity_bound(ty, tz, my, mz, d.oracle_d, rivals, options);
+  d.identity_d = bound.d;
+  d.identity_power = bound.power;
+  d.identity_rival = bound.rival;
+}
+
 // The oracle's bound (oracle.h): the effect's signal is what it added to the true moments; the
 // noise is the rest of what diagnose's residual holds, the logged moments less the model fed the
-// logged inputs, less that signal.
-void set_oracle_bound(const CouplingModel& model, const Channels& truth, const Channels& logged,
-                      const std::vector<double>& clean_y, const std::vector<double>& clean_z, ZooDraw& d) {
+// logged inputs, less that signal. Then the identity bound on the same rows.
+void set_oracle_bound(const std::string& effect, const CouplingModel& model, double jam, const Channels& truth,
+                      const Channels& logged, const std::vector<double>& clean_y, const std::vector<double>& clean_z, ZooDraw& d) {
   const std::size_t n = truth.rows();
   if (logged.rows() != n || n < 64) return;
   // A row whose logged inputs the model refuses is left out, as diagnose leaves it out; beyond
   // 5 % of the rows there is no bound.
   std::vector<double> sy, sz, ny, nz;
+  std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < n; ++i) {
     SensorMoments read;
     try {
@@ -58,6 +92,7 @@ void set_oracle_bound(const CouplingModel& model, const Channels& truth, const C
     } catch (const std::exception&) {
       continue;
     }
+    kept.push_back(i);
     sy.push_back(truth.msy_nm[i] - clean_y[i]);
     sz.push_back(truth.msz_nm[i] - clean_z[i]);
     ny.push_back(logged.msy_nm[i] - read.y_nm - sy.back());
@@ -68,6 +103,7 @@ void set_oracle_bound(const CouplingModel& model, const Channels& truth, const C
     const OracleBound bound = oracle_bound(sy, sz, ny, nz);
     d.oracle_d = bound.d;
     d.oracle_power = bound.power;
+    set_identity_bound(effect, model, jam, truth, clean_y, clean_z, kept, sy, sz, ny, nz, d);
   } catch (const std::invalid_argument&) {
     // a value not finite (a dropout written as NaN): no bound for this draw
   }
@@ -165,7 +201,7 @@ ZooDraw draw(std::uint64_t seed, const DrawLimits& lim) {
     fams += (fams.empty() ? "" : "; ") + std::string(chosen[j]->name) + "(" + params + ")";
   }
 
-  if (!lim.effect_truth.empty()) set_oracle_bound(*model, truth, logged, clean_y, clean_z, d);
+  if (!lim.effect_truth.empty()) set_oracle_bound(lim.effect_truth, *model, jam, truth, logged, clean_y, clean_z, d);
 
   Rng style_rng(derive_seed(seed, "style"));
   const CsvStyle style = style_rng.chance(lim.style_share) ? draw_style(style_rng) : CsvStyle{};

@@ -47,6 +47,13 @@ struct ZooDraw {
   /// is not finite.
   double oracle_d = std::numeric_limits<double>::quiet_NaN();
   double oracle_power = std::numeric_limits<double>::quiet_NaN();
+  /// Power mode: whether the effect can be told apart from every other effect at all
+  /// (identity_oracle.h): d_identity, the whitened distance of its signal from the nearest member
+  /// of the nearest rival family (>= 3.61: a 1 % test tells them apart 90 % of the time), its
+  /// power, and that rival. NaN and empty without an effect or a detection bound.
+  double identity_d = std::numeric_limits<double>::quiet_NaN();
+  double identity_power = std::numeric_limits<double>::quiet_NaN();
+  std::string identity_rival;
 };
 
 ZooDraw draw(std::uint64_t seed, const DrawLimits& limits = {});
