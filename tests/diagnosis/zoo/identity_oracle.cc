@@ -16,85 +16,6 @@
 namespace gc::zoo {
 namespace {
 
-constexpr double kZ01 = 2.3263478740408408;  // Phi^-1(0.99)
-
-double power_at(double d) { return 0.5 * std::erfc(-(d - kZ01) / std::sqrt(2.0)); }
-
-// Burg's autoregression of the noise with its order by AIC (at most 64 or n/10), as oracle.cc
-// chooses it: the first order of least n log(e_m) + 2 m.
-Autoregression by_aic(const std::vector<double>& noise) {
-  const int most = static_cast<int>(std::min<std::size_t>(64, noise.size() / 10));
-  const double n = static_cast<double>(noise.size());
-  Autoregression best;
-  double best_aic = INFINITY;
-  for (int m = 0; m <= most; ++m) {
-    const Autoregression fit = burg(noise, m);
-    if (static_cast<int>(fit.a.size()) != m) break;  // the recursion stopped (a noise without more to fit)
-    const double aic = n * std::log(std::max(fit.innovation_variance, 1e-300)) + 2.0 * m;
-    if (aic < best_aic) best_aic = aic, best = fit;
-  }
-  return best;
-}
-
-// x filtered by x_t + sum_j a_j x_{t-j}, for t >= from, into out (appended).
-void whiten_into(const std::vector<double>& x, const std::vector<double>& a, std::size_t from, double* out) {
-  for (std::size_t t = from; t < x.size(); ++t) {
-    double v = x[t];
-    for (std::size_t j = 0; j < a.size(); ++j) v += a[j] * x[t - 1 - j];
-    *out++ = v;
-  }
-}
-
-// oracle.h's whitening as a linear map of (y, z) to a vector whose sum of squares is s' Sigma^-1 s:
-// each channel through its autoregression, then the two innovations decorrelated at lag 0 (the
-// Cholesky factor of their covariance).
-class Whitening {
- public:
-  Whitening(const std::vector<double>& noise_y, const std::vector<double>& noise_z)
-      : ar_y_(by_aic(noise_y)), ar_z_(by_aic(noise_z)), from_(std::max(ar_y_.a.size(), ar_z_.a.size())), n_(noise_y.size()) {
-    auto demeaned = [](const std::vector<double>& x) {
-      const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
-      std::vector<double> y(x.size());
-      std::transform(x.begin(), x.end(), y.begin(), [mean](double v) { return v - mean; });
-      return y;
-    };
-    const std::size_t m = n_ - from_;
-    std::vector<double> ey(m), ez(m);
-    whiten_into(demeaned(noise_y), ar_y_.a, from_, ey.data());
-    whiten_into(demeaned(noise_z), ar_z_.a, from_, ez.data());
-    const double mm = static_cast<double>(m);
-    const double cyy = std::inner_product(ey.begin(), ey.end(), ey.begin(), 0.0) / mm;
-    const double czz = std::inner_product(ez.begin(), ez.end(), ez.begin(), 0.0) / mm;
-    double cyz = std::inner_product(ey.begin(), ey.end(), ez.begin(), 0.0) / mm;
-    if (!(cyy > 0.0 && czz > 0.0)) return;
-    if (cyz * cyz > 0.999 * cyy * czz) cyz = std::copysign(std::sqrt(0.999 * cyy * czz), cyz);
-    // u1 = e_y / sqrt(cyy), u2 = (e_z - cyz/cyy e_y) / sqrt(det / cyy): u1^2 + u2^2 = e' C^-1 e.
-    sy_ = 1.0 / std::sqrt(cyy);
-    rho_ = cyz / cyy;
-    sz_ = 1.0 / std::sqrt((cyy * czz - cyz * cyz) / cyy);
-    ok_ = true;
-  }
-  bool ok() const { return ok_; }
-  std::size_t size() const { return 2 * (n_ - from_); }
-  void apply(const std::vector<double>& y, const std::vector<double>& z, std::vector<double>& out) const {
-    const std::size_t m = n_ - from_;
-    out.resize(2 * m);
-    whiten_into(y, ar_y_.a, from_, out.data());
-    whiten_into(z, ar_z_.a, from_, out.data() + m);
-    for (std::size_t t = 0; t < m; ++t) {
-      const double ey = out[t], ez = out[m + t];
-      out[t] = sy_ * ey;
-      out[m + t] = sz_ * (ez - rho_ * ey);
-    }
-  }
-
- private:
-  Autoregression ar_y_, ar_z_;
-  std::size_t from_, n_;
-  double sy_ = 0.0, rho_ = 0.0, sz_ = 0.0;
-  bool ok_ = false;
-};
-
 double squared(const std::vector<double>& v) { return std::inner_product(v.begin(), v.end(), v.begin(), 0.0); }
 
 // The nearest member of one family to the whitened target (identity_oracle.h): start points ranked
@@ -405,7 +326,7 @@ IdentityBound identity_bound(const std::vector<double>& signal_y, const std::vec
   }
   if (!rivals.empty()) {
     bound.d = nearest;
-    bound.power = power_at(nearest);
+    bound.power = power_at_one_percent(nearest);
   }
   return bound;
 }

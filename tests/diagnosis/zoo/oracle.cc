@@ -59,16 +59,13 @@ Autoregression burg_by_aic(const std::vector<double>& x, int max_order) {
   return best;
 }
 
-// x filtered by x_t + sum_j a_j x_{t-j}, for t >= from (from >= a.size()).
-std::vector<double> whitened(const std::vector<double>& x, const std::vector<double>& a, std::size_t from) {
-  std::vector<double> e;
-  e.reserve(x.size() - from);
+// x filtered by x_t + sum_j a_j x_{t-j}, for t >= from (from >= a.size()), into out.
+void whitened_into(const std::vector<double>& x, const std::vector<double>& a, std::size_t from, double* out) {
   for (std::size_t t = from; t < x.size(); ++t) {
     double v = x[t];
     for (std::size_t j = 0; j < a.size(); ++j) v += a[j] * x[t - 1 - j];
-    e.push_back(v);
+    *out++ = v;
   }
-  return e;
 }
 
 Autoregression fitted(const std::vector<double>& noise) {
@@ -84,6 +81,44 @@ Autoregression burg(const std::vector<double>& x, int order) {
   return fit;
 }
 
+Whitening::Whitening(const std::vector<double>& noise_y, const std::vector<double>& noise_z)
+    : ar_y_(fitted(noise_y)), ar_z_(fitted(noise_z)), from_(std::max(ar_y_.a.size(), ar_z_.a.size())), n_(noise_y.size()) {
+  if (noise_z.size() != n_ || n_ <= from_) return;
+  const std::size_t m = n_ - from_;
+  std::vector<double> ey(m), ez(m);
+  whitened_into(demeaned(noise_y), ar_y_.a, from_, ey.data());
+  whitened_into(demeaned(noise_z), ar_z_.a, from_, ez.data());
+  // The innovations' covariance between the channels at lag 0 (a common-mode noise): the signal
+  // that parts the channels where their noises move together is told apart better.
+  const double mm = static_cast<double>(m);
+  const double cyy = std::inner_product(ey.begin(), ey.end(), ey.begin(), 0.0) / mm;
+  const double czz = std::inner_product(ez.begin(), ez.end(), ez.begin(), 0.0) / mm;
+  double cyz = std::inner_product(ey.begin(), ey.end(), ez.begin(), 0.0) / mm;
+  if (!(cyy > 0.0 && czz > 0.0)) return;  // a channel without noise
+  if (cyz * cyz > 0.999 * cyy * czz) cyz = std::copysign(std::sqrt(0.999 * cyy * czz), cyz);
+  sy_ = 1.0 / std::sqrt(cyy);
+  rho_ = cyz / cyy;
+  sz_ = 1.0 / std::sqrt((cyy * czz - cyz * cyz) / cyy);
+  ok_ = true;
+}
+
+void Whitening::apply(const std::vector<double>& y, const std::vector<double>& z, std::vector<double>& out) const {
+  const std::size_t m = n_ - from_;
+  out.resize(2 * m);
+  whitened_into(y, ar_y_.a, from_, out.data());
+  whitened_into(z, ar_z_.a, from_, out.data() + m);
+  for (std::size_t t = 0; t < m; ++t) {
+    const double ey = out[t], ez = out[m + t];
+    out[t] = sy_ * ey;
+    out[m + t] = sz_ * (ez - rho_ * ey);
+  }
+}
+
+double power_at_one_percent(double d) {
+  constexpr double z_01 = 2.3263478740408408;  // Phi^-1(0.99)
+  return 0.5 * std::erfc(-(d - z_01) / std::sqrt(2.0));
+}
+
 OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
                          const std::vector<double>& noise_y, const std::vector<double>& noise_z) {
   const std::size_t n = signal_y.size();
@@ -93,29 +128,17 @@ OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<
     if (!std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }))
       throw std::invalid_argument("oracle_bound: a value not finite");
   OracleBound bound;
-  const Autoregression ar_y = fitted(noise_y), ar_z = fitted(noise_z);
-  bound.order_y = static_cast<int>(ar_y.a.size());
-  bound.order_z = static_cast<int>(ar_z.a.size());
-  const std::size_t from = std::max(ar_y.a.size(), ar_z.a.size());
-  const std::vector<double> ey = whitened(demeaned(noise_y), ar_y.a, from), ez = whitened(demeaned(noise_z), ar_z.a, from);
-  const std::vector<double> wy = whitened(signal_y, ar_y.a, from), wz = whitened(signal_z, ar_z.a, from);
-  // The innovations' covariance between the channels at lag 0 (a common-mode noise): the signal
-  // that parts the channels where their noises move together is told apart better.
-  const double m = static_cast<double>(ey.size());
-  const double cyy = std::inner_product(ey.begin(), ey.end(), ey.begin(), 0.0) / m;
-  const double czz = std::inner_product(ez.begin(), ez.end(), ez.begin(), 0.0) / m;
-  double cyz = std::inner_product(ey.begin(), ey.end(), ez.begin(), 0.0) / m;
-  if (!(cyy > 0.0 && czz > 0.0)) {   // a channel without noise: no bound
+  const Whitening whitening(noise_y, noise_z);
+  bound.order_y = whitening.order_y();
+  bound.order_z = whitening.order_z();
+  if (!whitening.ok()) {  // a channel without noise: no bound
     bound.d = bound.power = std::numeric_limits<double>::quiet_NaN();
     return bound;
   }
-  if (cyz * cyz > 0.999 * cyy * czz) cyz = std::copysign(std::sqrt(0.999 * cyy * czz), cyz);
-  const double det = cyy * czz - cyz * cyz;
-  double d2 = 0.0;
-  for (std::size_t t = 0; t < wy.size(); ++t) d2 += (czz * wy[t] * wy[t] - 2 * cyz * wy[t] * wz[t] + cyy * wz[t] * wz[t]) / det;
-  bound.d = std::sqrt(d2);
-  constexpr double z_01 = 2.3263478740408408;   // Phi^-1(0.99)
-  bound.power = 0.5 * std::erfc(-(bound.d - z_01) / std::sqrt(2.0));
+  std::vector<double> w;
+  whitening.apply(signal_y, signal_z, w);
+  bound.d = std::sqrt(std::inner_product(w.begin(), w.end(), w.begin(), 0.0));
+  bound.power = power_at_one_percent(bound.d);
   return bound;
 }
 

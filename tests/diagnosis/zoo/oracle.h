@@ -33,12 +33,42 @@ struct OracleBound {
 OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
                          const std::vector<double>& noise_y, const std::vector<double>& noise_z);
 
-/// Burg's autoregression of x (mean removed): coefficients a_1..a_p with
-/// x_t + a_1 x_{t-1} + ... + a_p x_{t-p} = e_t, and the innovations' variance.
+/// An autoregression x_t + a_1 x_{t-1} + ... + a_p x_{t-p} = e_t and its innovations' variance.
 struct Autoregression {
   std::vector<double> a;
   double innovation_variance = 0.0;
 };
+
+/// The whitening above as a linear map: each channel through the autoregression fitted to its
+/// noise (Burg, order by AIC, at most 64 or n/10), then the two innovations decorrelated at lag 0
+/// (u1 = e_y / sqrt(c_yy), u2 = (e_z - c_yz / c_yy e_y) / sqrt(det / c_yy), so u1^2 + u2^2 =
+/// e' C^-1 e). apply(s) has s' Sigma^-1 s as its sum of squares. The identity oracle
+/// (identity_oracle.h) measures its distances in it too.
+class Whitening {
+ public:
+  /// noise_*: one length, mean removed here.
+  Whitening(const std::vector<double>& noise_y, const std::vector<double>& noise_z);
+  /// False where a channel has no noise (no bound).
+  bool ok() const { return ok_; }
+  /// The whitened vector's length: both channels, less the autoregressions' start-up rows.
+  std::size_t size() const { return 2 * (n_ - from_); }
+  /// y, z of the noise's length, whitened into out (resized to size()).
+  void apply(const std::vector<double>& y, const std::vector<double>& z, std::vector<double>& out) const;
+  int order_y() const { return static_cast<int>(ar_y_.a.size()); }
+  int order_z() const { return static_cast<int>(ar_z_.a.size()); }
+
+ private:
+  Autoregression ar_y_, ar_z_;
+  std::size_t from_ = 0, n_ = 0;
+  double sy_ = 0.0, rho_ = 0.0, sz_ = 0.0;
+  bool ok_ = false;
+};
+
+/// Phi(d - z_0.01): the power of a one-sided 1 % test whose statistic moves by d.
+double power_at_one_percent(double d);
+
+/// Burg's autoregression of x (mean removed): coefficients a_1..a_p with
+/// x_t + a_1 x_{t-1} + ... + a_p x_{t-p} = e_t, and the innovations' variance.
 Autoregression burg(const std::vector<double>& x, int order);
 
 }  // namespace gc::zoo
