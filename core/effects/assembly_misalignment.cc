@@ -15,8 +15,10 @@ const EffectInfo kInfo{
     "Section 6.3.1",
     {{"zeta0_rad", "rad", "amplitude of the initial misalignment", 0.0, 0.05, 0.0, 0.0, {0.0, 0.3, RangeScale::jam_angle},
       false, 0.0, "the alignment of the rig (a poor alignment, a settled foundation, a worn bearing)"},
+     // Profiled: the cost has valleys in the direction too (the steps of eqs 42-43), and a small
+     // offset's descent from its probes ended in another one (docs/effects.md).
      {"beta0_rad", "rad", "its direction, as beta", -2.0 * M_PI, 2.0 * M_PI, 0.0, 0.0, {-M_PI, M_PI}, false,
-      2.0 * M_PI}}};
+      2.0 * M_PI, {}, true}}};
 
 class AssemblyMisalignment final : public Effect {
  public:
