@@ -62,7 +62,8 @@ struct ParameterSpec {
   /// Where the effect's size crosses zero along an input (a temperature of alignment, a torque that
   /// centres the hub): the effect is an amplitude times (input - this), so its cost's valley is a
   /// hyperbola in the two (their product nearly fixed), along which Levenberg-Marquardt's straight
-  /// steps crawl. Diagnose fits the others at a grid of its values and starts from the best.
+  /// steps crawl. Or a direction whose cost has valleys of its own (an assembly misalignment's: the
+  /// steps of eqs 42-43). Diagnose fits the others at a grid of its values and starts from the best.
   bool profiled = false;
 };
 
