@@ -6,7 +6,6 @@
 #include <numeric>
 #include <regex>
 #include <stdexcept>
-#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -297,12 +296,8 @@ class Fit {
 IdentityBound identity_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
                              const std::vector<double>& noise_y, const std::vector<double>& noise_z, double full_detection_d,
                              const std::vector<SignalFamily>& rivals, const IdentityOptions& options) {
+  check_signal_and_noise("identity_bound", signal_y, signal_z, noise_y, noise_z);
   const std::size_t n = signal_y.size();
-  if (n < 64 || signal_z.size() != n || noise_y.size() != n || noise_z.size() != n)
-    throw std::invalid_argument("identity_bound: four series of one length >= 64");
-  for (const auto* v : {&signal_y, &signal_z, &noise_y, &noise_z})
-    if (!std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }))
-      throw std::invalid_argument("identity_bound: a value not finite");
   IdentityBound bound;
   const Whitening whitening(noise_y, noise_z);
   if (!whitening.ok()) return bound;  // a channel without noise: no bound

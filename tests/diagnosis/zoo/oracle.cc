@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 namespace gc::zoo {
 namespace {
@@ -119,14 +120,19 @@ double power_at_one_percent(double d) {
   return 0.5 * std::erfc(-(d - z_01) / std::sqrt(2.0));
 }
 
-OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
-                         const std::vector<double>& noise_y, const std::vector<double>& noise_z) {
+void check_signal_and_noise(const std::string& who, const std::vector<double>& signal_y, const std::vector<double>& signal_z,
+                            const std::vector<double>& noise_y, const std::vector<double>& noise_z) {
   const std::size_t n = signal_y.size();
   if (n < 64 || signal_z.size() != n || noise_y.size() != n || noise_z.size() != n)
-    throw std::invalid_argument("oracle_bound: four series of one length >= 64");
+    throw std::invalid_argument(who + ": four series of one length >= 64");
   for (const auto* v : {&signal_y, &signal_z, &noise_y, &noise_z})
     if (!std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }))
-      throw std::invalid_argument("oracle_bound: a value not finite");
+      throw std::invalid_argument(who + ": a value not finite");
+}
+
+OracleBound oracle_bound(const std::vector<double>& signal_y, const std::vector<double>& signal_z,
+                         const std::vector<double>& noise_y, const std::vector<double>& noise_z) {
+  check_signal_and_noise("oracle_bound", signal_y, signal_z, noise_y, noise_z);
   OracleBound bound;
   const Whitening whitening(noise_y, noise_z);
   bound.order_y = whitening.order_y();

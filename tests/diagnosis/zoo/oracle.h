@@ -18,6 +18,7 @@
 // same spectrum, an indication, not a proof.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace gc::zoo {
@@ -63,6 +64,11 @@ class Whitening {
   double sy_ = 0.0, rho_ = 0.0, sz_ = 0.0;
   bool ok_ = false;
 };
+
+/// The bounds' inputs: std::invalid_argument, naming `who`, unless the four series have one
+/// length >= 64 and are finite.
+void check_signal_and_noise(const std::string& who, const std::vector<double>& signal_y, const std::vector<double>& signal_z,
+                            const std::vector<double>& noise_y, const std::vector<double>& noise_z);
 
 /// Phi(d - z_0.01): the power of a one-sided 1 % test whose statistic moves by d.
 double power_at_one_percent(double d);
