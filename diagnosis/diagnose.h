@@ -48,6 +48,9 @@ struct DiagnosisSettings {
   /// is no rival: the claim rule's least fall sets it aside.
   double formula_over_effect_t = 3.0;
   double formula_over_effect_gain = 1.5;
+  /// A formula of fewer fitted terms than the effect has parameters needs a block-paired t of only
+  /// this over it to stand first (search_round.cc, simpler_and_better): better and simpler.
+  double fewer_terms_over_effect_t = 2.0;
   /// The data-quality stage before the physics (data_quality.h).
   DataQualitySettings data_quality;
   /// Samples more than this many robust deviations from their running median are outliers,

@@ -92,7 +92,7 @@ std::optional<Eigen::MatrixX2d> formula_held_out(std::span<const RecordedSample>
                                                  const std::vector<std::string>& terms, const Folds& folds);
 
 /// The formula over `terms` fitted by least squares on `rows` (e.g. the refit rows), with standard
-/// errors; nullopt when a coefficient leaves its bound.
+/// errors; nullopt when a coefficient leaves its bound, or `terms` is empty.
 std::optional<EffectFit> fit_formula(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
                                      const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
                                      double variance_inflation);

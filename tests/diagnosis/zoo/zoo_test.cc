@@ -274,6 +274,24 @@ TEST(NoiseZooPower, TwoSpeedTermsBetterThanAGainAndOffsetStandFirst) {
       << p.json.substr(0, 3000);
 }
 
+// A speed drag of 1.38 kN·m/rpm at -0.20 rad (1.35 on M_sy', -0.27 on M_sz') under an AR(1) of
+// 0.035 s at SNR 1.5, 17,295 rows at 174 Hz over two wanders and a ramp (power table seed 20261310,
+// draw 3). The formula found the speed on M_sy' (t = 22) and a speed-dependent turn of the moment,
+// but also a misalignment rate (t = 1.2) and twice per revolution (t = 0.9 and 0.4): five terms,
+// 5.19 kN·m held out at t = 3.4 against a gain and offset of both channels (four parameters, 5.29),
+// which was claimed first, physics first, and the next round found only noise. A formula keeps only
+// terms that stand out of their errors, and two terms better than four by t = 2.99 stand first.
+TEST(NoiseZooPower, ASpeedDragsTwoTermsStandFirstOnceTheTermsWithinTheirErrorsAreDropped) {
+  const PowerDraw p = diagnosed_power_draw(20261310, 3, "speed_drag");
+  ASSERT_NE(p.draw.description.find("1.381 kN·m per rpm at -0.20 rad"), std::string::npos) << p.draw.description;
+  ASSERT_TRUE(named_first(p, "expression"));
+  for (const std::string& name : p.out.first_claim) {
+    if (name == "expression") continue;  // the claim, and its record beside the verdict
+    EXPECT_NE(name.find("speed"), std::string::npos) << name << ": " << p.out.numbers;
+  }
+  EXPECT_NEAR(first_value_of(p.json, "speed_on_y"), 1353.0, 0.1 * 1353.0) << p.json.substr(0, 3000);
+}
+
 // A speed drag of 0.58 kN·m/rpm on a speed that ramps from 4 to 9 rpm, under Laplace and GARCH
 // noise (white, heavy-tailed), 4,027 rows at 2.22 Hz exported in other units (power table seed
 // 20261299, draw 7). One speed term, 591 N·m/rpm on M_sz', cut the held-out error 45 % (t = 28.6),
@@ -448,15 +466,16 @@ TEST(NoiseZooPower, AThermalGrowthFromBelowTheRecordedTemperaturesIsNamedFirst) 
 // same recording (seed 20261241, draw 2). Inside the plausible 0-50 um the fit found a valley at
 // 42 um, and a torque calibration with a curvature four times its plausible range was named
 // first. Scanned beyond the plausible box (scan_beyond_plausible), the spacing error sits on its
-// bound; a formula does a little better, but the effect takes most of what it finds, so it is
-// claimed as partly explaining (physics first), with the formula shown as the next round's lead.
+// bound, so it is claimed as partly explaining, with the formula shown beside it. (The formula
+// did a little better, t = 3.1, with T on M_sy' at t = 5.2 beside T zeta on M_sy' at t = 1.7 by
+// its long-run error; once a formula keeps only terms that stand out of their errors, it does as
+// well.)
 TEST(NoiseZooPower, ASpacingErrorAtItsBoundIsNamedAsPartlyExplaining) {
   const PowerDraw p = diagnosed_power_draw(20261241, 2, "spacing_errors");
   ASSERT_NE(p.draw.description.find("spacing error 100 um"), std::string::npos) << p.draw.description;
   EXPECT_TRUE(named_first(p, "spacing_errors"));
   EXPECT_NE(p.out.outcomes.find("partly_explained"), std::string::npos) << p.out.outcomes;
-  EXPECT_NE(p.json.find("A formula of physical terms does better on held-out data"), std::string::npos)
-      << p.json.substr(0, 4000);
+  EXPECT_NE(p.json.find("A formula of physical terms does"), std::string::npos) << p.json.substr(0, 4000);
   EXPECT_EQ(p.json.find("no formula did better"), std::string::npos) << p.json.substr(0, 4000);
 }
 
