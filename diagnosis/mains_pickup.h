@@ -19,7 +19,8 @@ namespace gc {
 
 /// The mains frequency (50 or 60 Hz, or its 2nd or 3rd harmonic) that a cycle of `frequency_hz`
 /// seen at `sample_rate_hz` is, directly or aliased, within `resolution_hz` (about 1 / the
-/// recording's duration) plus 0.5 % [Hz]; nullopt when none.
+/// recording's duration) plus 0.5 % of that mains frequency (the grid's deviation, which aliasing
+/// keeps in hertz) [Hz]; nullopt when none.
 std::optional<double> mains_frequency(double frequency_hz, double sample_rate_hz, double resolution_hz);
 
 /// "a cycle at 50.0 Hz (mains pickup ...)" for the verdict.
