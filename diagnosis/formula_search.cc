@@ -333,15 +333,39 @@ void drop_levels_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Matrix
 /// and 0.4), and as five terms lost to a channel gain and offset of four, which the next round left
 /// with a speed drag unclaimed (noise zoo power seed 20261310, draw 3). The channels' levels keep
 /// their own rule (drop_levels_within_the_wander).
+///
+/// A term that others stand in for is not judged alone: where its variance inflation factor among
+/// the kept columns of `z` exceeds 10, its error is the collinearity's, not the data's silence, and
+/// which of the alike terms to keep is not the t's to say. T zeta along the moment, on a sweep at
+/// one torque, shared its error with zeta on M_sy' and zeta times the moment; dropped as the
+/// weakest, it left them to be claimed in its place (`outside_torque_times_misalignment`).
 void drop_terms_within_their_errors(std::span<const RecordedSample> observations, std::span<const std::size_t> rows,
-                                    const Eigen::MatrixX2d& residual, const std::vector<std::string>& terms,
-                                    const std::vector<bool>& levels, double variance_inflation,
-                                    std::vector<bool>& support) {
+                                    const Eigen::MatrixX2d& residual, const Eigen::MatrixXd& z,
+                                    const std::vector<std::string>& terms, const std::vector<bool>& levels,
+                                    double variance_inflation, std::vector<bool>& support) {
   constexpr double kLeastSquaredT[] = {0.0, 4.0, 6.0};  // by the number of terms judged together
+  constexpr double kMostInflation = 10.0;
   while (true) {
     std::vector<std::string> kept;
-    for (std::size_t j = 0; j < support.size(); ++j) if (support[j]) kept.push_back(terms[j]);
+    std::vector<Eigen::Index> at;
+    for (std::size_t j = 0; j < support.size(); ++j) {
+      if (support[j]) kept.push_back(terms[j]), at.push_back(static_cast<Eigen::Index>(j));
+    }
     if (kept.empty()) return;
+    // Each kept column's variance inflation factor: the diagonal of the inverse Gram matrix of the
+    // columns at unit norm (a column that others span exactly has an enormous one).
+    Eigen::MatrixXd unit(z.rows(), static_cast<Eigen::Index>(at.size()));
+    for (std::size_t k = 0; k < at.size(); ++k) {
+      unit.col(static_cast<Eigen::Index>(k)) = z.col(at[k]) / std::max(z.col(at[k]).norm(), 1e-300);
+    }
+    Eigen::MatrixXd gram = unit.transpose() * unit;
+    gram.diagonal().array() += 1e-12;
+    const Eigen::VectorXd inflation =
+        gram.ldlt().solve(Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).diagonal();
+    const auto collinear = [&](std::size_t j) {
+      const auto k = std::find(at.begin(), at.end(), static_cast<Eigen::Index>(j)) - at.begin();
+      return !(inflation(k) <= kMostInflation);
+    };
     const std::optional<EffectFit> fit = fit_formula(observations, rows, residual, kept, variance_inflation);
     if (!fit) return;
     const auto squared_t = [&](std::size_t j) {
@@ -358,6 +382,7 @@ void drop_terms_within_their_errors(std::span<const RecordedSample> observations
       if (!support[j] || levels[j]) continue;
       const std::optional<std::size_t> partner = phase_partner(terms, j);
       const bool pair = partner && support[*partner];
+      if (collinear(j) || (pair && collinear(*partner))) continue;
       const double share = (squared_t(j) + (pair ? squared_t(*partner) : 0.0)) / kLeastSquaredT[pair ? 2 : 1];
       if (share < weakest_share) { weakest_share = share; weakest = j; }
     }
@@ -693,7 +718,8 @@ std::optional<CandidateScore> search(std::span<const RecordedSample> observation
   drop_drift_that_does_not_extrapolate(z, residual, design.terms, support);
   drop_slow_terms_within_the_wander(z, residual, design.terms, support);
   drop_levels_within_the_wander(z, residual, levels, support);
-  drop_terms_within_their_errors(observations, rows, residual, design.terms, levels, settings.variance_inflation, support);
+  drop_terms_within_their_errors(observations, rows, residual, z, design.terms, levels, settings.variance_inflation,
+                                 support);
   if (count(support) == 0) return std::nullopt;
 
   std::vector<std::string> terms;
