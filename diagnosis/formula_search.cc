@@ -331,8 +331,9 @@ void drop_levels_within_the_wander(const Eigen::MatrixXd& z, const Eigen::Matrix
 /// a hair, and a formula that carries such terms counts more parameters than it uses: two speed
 /// terms (t = 22 and 5) came with a misalignment rate (t = 1.2) and twice per revolution (t = 0.9
 /// and 0.4), and as five terms lost to a channel gain and offset of four, which the next round left
-/// with a speed drag unclaimed (noise zoo power seed 20261310, draw 3). The channels' levels keep
-/// their own rule (drop_levels_within_the_wander).
+/// with a speed drag unclaimed (noise zoo power seed 20261310, draw 3). The channels' levels, where
+/// they are the intercepts (`levels`: the search within the channels), keep their own rule
+/// (drop_levels_within_the_wander).
 ///
 /// A term that others stand in for is not judged alone: where its variance inflation factor among
 /// the kept columns of `z` exceeds 10, its error is the collinearity's, not the data's silence, and

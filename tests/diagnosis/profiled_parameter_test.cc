@@ -7,7 +7,6 @@
 // an assembly misalignment took the claim (noise zoo power seed 20261287, draw 1: 1,088
 // N·m rms against 872 at the truth).
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -105,8 +104,6 @@ TEST(ProfiledParameter, AnAssemblyMisalignmentsDirectionIsFoundInItsValley) {
       const auto [fit, truth_cost] =
           fit_beside_truth(paper, truth, testing::paper_sequence(testing::nrel_upwind(), kind), "assembly_misalignment");
       const std::string which = std::string(to_string(kind)) + " at " + std::to_string(beta0) + " rad";
-      std::printf("%s: cost %.4f of the truth's, direction off by %.3f rad\n", which.c_str(), fit.sum_of_squares / truth_cost,
-                  std::remainder(testing::fitted_value(fit, "beta0_rad") - beta0, 2.0 * M_PI));
       EXPECT_LT(fit.sum_of_squares, 1.02 * truth_cost) << which;
       EXPECT_NEAR(std::remainder(testing::fitted_value(fit, "beta0_rad") - beta0, 2.0 * M_PI), 0.0, 0.05) << which;
     }
