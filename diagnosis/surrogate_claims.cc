@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "diagnosis/formula_search.h"
+#include "diagnosis/input_noise_in_prediction.h"
 #include "diagnosis/model_residuals.h"
+#include "diagnosis/prewhitening.h"
 #include "diagnosis/stacked_channels.h"
 
 namespace gc {
@@ -192,7 +194,11 @@ void demote_what_noise_explains(
   // The family is every candidate the round tried, not only those that came this far: the
   // claimable ones were picked from them on this same residual.
   const std::size_t family = ranking.size() + (formula ? 1 : 0) + also_tried;
-  const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed, family, parallel);
+  Prewhitening filter = Prewhitening::fitted(base);
+  if (!filter.identity()) {
+    filter.exposes_input_noise = exposes_input_noise(base, input_noise_in_prediction(model, observations, rows));
+  }
+  const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed, family, parallel, filter);
   for (std::size_t k = 0; k < tested.size(); ++k) {
     tested[k]->surrogate_p = p[k];
     if (p[k] <= settings.level) continue;
