@@ -38,8 +38,7 @@ Eigen::VectorXd autoregression(const Eigen::VectorXd& series) {
     }
   }
   if (order == 0) return {};
-  const Eigen::MatrixXd r = qr.matrixQR().topLeftCorner(order, order).triangularView<Eigen::Upper>();
-  const Eigen::VectorXd a = r.triangularView<Eigen::Upper>().solve(qty.head(order));
+  const Eigen::VectorXd a = qr.matrixQR().topLeftCorner(order, order).triangularView<Eigen::Upper>().solve(qty.head(order));
   return a.allFinite() ? a : Eigen::VectorXd{};
 }
 

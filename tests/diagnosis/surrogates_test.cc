@@ -140,8 +140,8 @@ TEST(Surrogates, OnRandomWalksASlowDesignIsClaimedAtMostAtTheLevel) {
 // on M_sz' alone, a torque staircase's effect, is found in at least 90 % of 100 fresh draws. As
 // a share of what varies, the walk explains itself as well as the steps do (the surrogates fit a
 // staircase about as well); prewhitened, each step is a jump of 6 sigma among unit steps. Without
-// the prewhitened statistic it was found in 5 of 100 (measured 2026-12-02); the size tests below
-// claimed 4, 2 and 2 of 300 before it and 3, 3 and 1 with it.
+// the prewhitened statistic it was found in 5 of 100, with it 99 (measured 2026-12-02); the size
+// tests on walks and wandering zeros claimed 4, 2 and 2 of 300 before it and 1, 1 and 1 with it.
 TEST(Surrogates, FindsAStaircaseUnderARandomWalkByItsSteps) {
   std::mt19937_64 random(20261320);
   const SurrogateDesign design = offset_and_staircase();
