@@ -24,7 +24,8 @@ struct Prewhitening {
   static Prewhitening fitted(const Eigen::MatrixX2d& x);
 
   /// The input sensors put white noise in the model's prediction that the filter would expose
-  /// (exposes_input_noise below): a share of the inputs on filtered rows is then not the noise's alone.
+  /// (exposes_input_noise below): a share of the inputs on filtered rows is then not the noise's
+  /// alone.
   bool exposes_input_noise = false;
 
   /// Both channels left as they are.
@@ -37,15 +38,15 @@ struct Prewhitening {
 
 /// Whether the input sensors put white noise in the prediction that a filter of `residual` would
 /// expose (Prewhitening::exposes_input_noise): `input_noise_nm`, per channel, is the white noise
-/// the input sensors put in the model's prediction (input_noise_in_prediction.h). A design made from the same measured inputs
-/// holds that noise too (errors in the variables). Under a random walk the walk drowns the
-/// correlation; filtered, the walk's increments are small and the inputs' noise is a share of
-/// about sigma_p^2 / sigma_r^2 of what is left (sigma_r the residual's white noise, from its second
-/// differences: core/input_noise.h), which a design of the inputs explains. A share that large
-/// stands out of noise's own on n rows unless it is under 1 / n, so the filter is clean only where
-/// it is, on both channels. Proximity probes' noise of 3.5e-5 rad beside brown noise gave a formula
-/// of slow terms and T zeta, 30 % held out, p = 0 filtered (the CI sample's draw 32, zoo seed
-/// 20250601).
+/// the input sensors put in the model's prediction (input_noise_in_prediction.h). A design made
+/// from the same measured inputs holds that noise too (errors in the variables). Under a random
+/// walk the walk drowns the correlation; filtered, the walk's increments are small and the inputs'
+/// noise is a share of about sigma_p^2 / sigma_r^2 of what is left (sigma_r the residual's white
+/// noise, from its second differences: core/input_noise.h), which a design of the inputs explains.
+/// A share that large stands out of noise's own on n rows unless it is under 1 / n, so the filter
+/// is clean only where it is, on both channels. Proximity probes' noise of 3.5e-5 rad beside brown
+/// noise gave a formula of slow terms and T zeta, 30 % held out, p = 0 filtered (the CI sample's
+/// draw 32, zoo seed 20250601).
 bool exposes_input_noise(const Eigen::MatrixX2d& residual, const Eigen::Array2d& input_noise_nm);
 
 }  // namespace gc

@@ -188,7 +188,8 @@ double explained_share(const Eigen::MatrixX2d& residual, const SurrogateDesign& 
 /// then taken in order: the p-values do not depend on the threads.
 ///
 /// `prewhitening`: the filter of the second statistic (Prewhitening::fitted of the residual),
-/// marked where the inputs' noise would show in it (exposes_input_noise); none, the default, judges the shares as they are alone.
+/// marked where the inputs' noise would show in it (exposes_input_noise); none, the default, judges
+/// the shares as they are alone.
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
                                        double level, std::uint64_t seed, std::size_t family_size = 0,
                                        const ParallelFor& parallel = serial_for(),
