@@ -625,8 +625,9 @@ constexpr double kWalkSum = 0.95;
 /// How a design is judged, from `filter` (the residual's, marked where the inputs' noise would show
 /// in it) and `noise`, what the null is drawn from.
 /// Where the null is a walk on both channels (its own autoregression's coefficients sum to
-/// kWalkSum or more: a walk and what a slow design leaves of it give 0.96-1.00, an AR(1) of 0.98
-/// beside as much white noise, less a slow term, 0.48-0.87), the share as it is has no calibrated
+/// kWalkSum or more: 5-95 % of 200 simulated draws of 600 rows, up to 12 lags, gave 0.96-1.00 for
+/// a walk less a staircase and 0.48-0.87 for an AR(1) of 0.98 beside as much white noise, less a
+/// slow term at 1.5 times it), the share as it is has no calibrated
 /// null: a phase-randomised surrogate is stationary, a walk is not, and a gain and offset took
 /// 62 % of a brown noise's variation where none of 12,000 surrogates reached 62 % (zoo size seed
 /// 20261317, draw 22). The filtered share then judges alone; and where the inputs' noise would
