@@ -689,6 +689,12 @@ double explained_share(const Eigen::MatrixX2d& residual, const SurrogateDesign& 
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
                                        double level, std::uint64_t seed, std::size_t family_size,
+                                       const ParallelFor& parallel) {
+  return surrogate_p_values(residual, designs, level, seed, family_size, parallel, Prewhitening{});
+}
+
+std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
+                                       double level, std::uint64_t seed, std::size_t family_size,
                                        const ParallelFor& parallel, const Prewhitening& filter) {
   std::vector<double> adjusted(designs.size(), 1.0);
   if (designs.empty() || !(level > 0.0)) return adjusted;
