@@ -339,10 +339,13 @@ DiagnosisRound search_round(const CouplingModel& model, const Eigen::MatrixX2d& 
     if (!round.unstructured_excess) {
       // The third test, as an effect's: noise with the residual's own spectrum, binned by the same
       // inputs, is explained as well (a random walk on a 6 s recording, whose rotation phase and
-      // temperature move with time, was "unexplained" with a 63 % fall through interleaved folds).
+      // temperature move with time, was "unexplained" with a 63 % fall through interleaved folds),
+      // judged by the same statistics as an effect's, prewhitened where the residual is coloured.
       if (const std::optional<SurrogateDesign> design = signature_design(observations, search, round.signature)) {
         const double p = surrogate_p_values(base, {*design}, settings.surrogate_claims.level,
-                                            settings.surrogate_claims.seed, 1, parallel).front();
+                                            settings.surrogate_claims.seed, 1, parallel,
+                                            surrogate_filter(model, observations, search, base))
+                             .front();
         round.unstructured_excess = p > settings.surrogate_claims.level;
       }
     }

@@ -165,6 +165,15 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
   return design;
 }
 
+Prewhitening surrogate_filter(const CouplingModel& model, std::span<const RecordedSample> observations,
+                              std::span<const std::size_t> rows, const Eigen::MatrixX2d& base) {
+  Prewhitening filter = Prewhitening::fitted(base);
+  if (!filter.identity()) {
+    filter.exposes_input_noise = exposes_input_noise(base, input_noise_in_prediction(model, observations, rows));
+  }
+  return filter;
+}
+
 void demote_what_noise_explains(
     std::vector<CandidateScore>& ranking, std::optional<CandidateScore>& formula,
     const std::vector<std::string>& time_terms, const CouplingModel& model,
@@ -194,10 +203,7 @@ void demote_what_noise_explains(
   // The family is every candidate the round tried, not only those that came this far: the
   // claimable ones were picked from them on this same residual.
   const std::size_t family = ranking.size() + (formula ? 1 : 0) + also_tried;
-  Prewhitening filter = Prewhitening::fitted(base);
-  if (!filter.identity()) {
-    filter.exposes_input_noise = exposes_input_noise(base, input_noise_in_prediction(model, observations, rows));
-  }
+  const Prewhitening filter = surrogate_filter(model, observations, rows, base);
   const std::vector<double> p = surrogate_p_values(base, designs, settings.level, settings.seed, family, parallel, filter);
   for (std::size_t k = 0; k < tested.size(); ++k) {
     tested[k]->surrogate_p = p[k];

@@ -16,6 +16,7 @@
 #include "core/coupling_model.h"
 #include "diagnosis/candidate_score.h"
 #include "diagnosis/parallel_for.h"
+#include "diagnosis/prewhitening.h"
 #include "diagnosis/surrogate_test.h"
 #include "core/effects/effect_registry.h"
 #include "core/recorded_sample.h"
@@ -29,6 +30,12 @@ std::optional<SurrogateDesign> effect_design(const CandidateScore& candidate, co
                                              const CouplingModel& model, std::span<const RecordedSample> observations,
                                              std::span<const std::size_t> rows, const Eigen::MatrixX2d& base,
                                              const ParallelFor& parallel);
+
+/// The residual's own filter for the surrogate test's second statistic (Prewhitening::fitted of
+/// `base`, the residual on `rows`), marked where the inputs' noise carried through `model` would
+/// show in it (exposes_input_noise); the identity where `base` is white.
+Prewhitening surrogate_filter(const CouplingModel& model, std::span<const RecordedSample> observations,
+                              std::span<const std::size_t> rows, const Eigen::MatrixX2d& base);
 
 struct SurrogateClaimSettings {
   /// Family-wise: the most a claim on such noise may be made, per round (0: the test is not made).
