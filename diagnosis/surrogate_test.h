@@ -194,7 +194,7 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
                                        const ParallelFor& parallel, const Prewhitening& prewhitening);
 
 /// The same with no filter: the shares as they are alone. (An overload, not a default argument:
-/// clang does not emit Eigen's inline constructors for a `= {}` aggregate default in a caller's
+/// clang 14 does not emit Eigen's inline constructors for a `= {}` aggregate default in a caller's
 /// translation unit, and the library would not link under the fuzz build.)
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,
                                        double level, std::uint64_t seed, std::size_t family_size = 0,
