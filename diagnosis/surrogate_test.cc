@@ -623,7 +623,8 @@ struct Statistics {
 constexpr double kWalkSum = 0.95;
 
 /// How a design is judged, from `filter` (the residual's, marked where the inputs' noise would show
-/// in it) and `noise`, what the null is drawn from.
+/// in it) and `noise`, what the null is drawn from (`of_the_residual`: the residual itself, whose
+/// filter is `filter`).
 /// Where the null is a walk on both channels (its own autoregression's coefficients sum to
 /// kWalkSum or more: 5-95 % of 200 simulated draws of 600 rows, up to 12 lags, gave 0.96-1.00 for
 /// a walk less a staircase and 0.48-0.87 for an AR(1) of 0.98 beside as much white noise, less a
@@ -634,9 +635,9 @@ constexpr double kWalkSum = 0.95;
 /// show in it, both must pass, each at the level (an intersection-union test: valid when either
 /// statistic is). Elsewhere, the share as it is, and the filtered one beside it (the smaller
 /// p-value, doubled) where the inputs are clean.
-Statistics statistics_for(const Prewhitening& filter, const Eigen::MatrixX2d& noise) {
+Statistics statistics_for(const Prewhitening& filter, const Eigen::MatrixX2d& noise, bool of_the_residual) {
   if (filter.identity()) return {};
-  const Prewhitening own = Prewhitening::fitted(noise);
+  const Prewhitening own = of_the_residual ? filter : Prewhitening::fitted(noise);
   bool walk = true;
   for (const Eigen::VectorXd& a : own.coefficients) walk = walk && a.size() > 0 && a.sum() >= kWalkSum;
   if (walk) return {filter.exposes_input_noise, true, filter.exposes_input_noise};
@@ -733,7 +734,7 @@ std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const s
       const SurrogateSpectrum shape = of_the_residual ? SurrogateSpectrum{} : left_shape(residual, left, span, designs[d]);
       SurrogateSource surrogates(of_the_residual ? residual : left, seed + d, shape);
       // Which statistics judge the design, and how (Statistics, below).
-      const Statistics statistics = statistics_for(filter, of_the_residual ? residual : left);
+      const Statistics statistics = statistics_for(filter, of_the_residual ? residual : left, of_the_residual);
       std::optional<WhitenedDesign> whitened;
       if (statistics.filtered) whitened.emplace(designs[d], filter, residual.rows());
       const std::size_t first = statistics.as_it_is ? 0 : 1, last = statistics.filtered ? 2 : 1;
