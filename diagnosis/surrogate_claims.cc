@@ -86,6 +86,7 @@ std::optional<SurrogateDesign> formula_design(const CandidateScore& formula, con
     out.level = true;
     out.level_against_the_residual = true;
   }
+  out.own_profiles = time_profiles(columns, n);
   return out;
 }
 

@@ -138,25 +138,6 @@ double extrapolated_rise_variance(const Eigen::VectorXd& x, int channel, const C
   return 1.25 * 1.25 * (std::max(white, 0.0) * rise(0) + walk * rise(1));
 }
 
-/// How many distinct time profiles the chosen columns of `span` (past its two levels, 2n rows
-/// stacked as the channels) follow: the rank of their channels' parts as series of n rows, each
-/// part at unit scale (a speed term on M_sy' and one on M_sz' follow one profile), eigenvalues of
-/// their Gram matrix under a hundredth of the largest taken as none.
-int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
-  Eigen::MatrixXd parts(n, 2 * std::max<Eigen::Index>(span.cols() - 2, 0));
-  Eigen::Index m = 0;
-  for (Eigen::Index j = 2; j < span.cols(); ++j) {
-    for (int c = 0; c < 2; ++c) {
-      const auto part = span.col(j).segment(c * n, n);
-      if (part.squaredNorm() > 1e-6) parts.col(m++) = part.normalized();
-    }
-  }
-  if (m == 0) return 0;
-  const Eigen::MatrixXd gram = parts.leftCols(m).transpose() * parts.leftCols(m);
-  const Eigen::VectorXd eigen = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gram).eigenvalues();
-  return static_cast<int>((eigen.array() > 0.01 * eigen.maxCoeff()).count());
-}
-
 /// The rise variance of the noise a candidate leaves, per channel: the larger of the leftover's
 /// own rise, given back the share the design's `span` (orthonormal) took of the rise's direction
 /// (as the spectrum is, SurrogateSpectrum::removed), and the rise its blocks extrapolate to
@@ -174,17 +155,22 @@ int distinct_profiles(const Eigen::MatrixXd& span, Eigen::Index n) {
 /// found less often the stronger it was (6 and 3 of 100 at 0.5 and 0.8 noise sigma; 100 and 100 with
 /// the leftover's; a drag between the channels, two terms, 15 and 12: 100 and 100), and a zoo speed
 /// drag of 45 % of the held-out error was no claim (power seed 20261299, draw 7). Terms of several
-/// profiles (distinct_profiles) take the slow subspace together, the wander from the blocks with it,
+/// profiles (time_profiles) take the slow subspace together, the wander from the blocks with it,
 /// and keep the residual's own rise (five slow terms took a brown noise's rise of 17 kN·m, its
 /// leftover's blocks said 0.9). On wandering zeros one slow term chosen was claimed in 2 of 300
 /// draws (5 with the residual's rise); two and three in 10 and 17 with the residual's rise, about 19
 /// and 30 with the leftover's, and 3 and 5 with the larger of the two, which lost 3 of 30 zoo
 /// twice-per-revolution draws under brown and hidden AR(1) noise, a forward order's cosine and sine
 /// (power seeds 20261299 draws 0 and 4, 20261303 draw 0), so it is not used.
+/// `profiles`: those of the chosen terms. Where the candidate claims terms other than the greedy
+/// choice on the residual takes (SurrogateDesign::own_profiles), its own count: a speed drag's
+/// speed on M_sy' and M_sz', claimed, where the greedy choice took speed on M_sy' and t^3 on M_sz'
+/// (two profiles), had the residual's rise, the drag's own, and surrogate p = 0.38 with a held-out
+/// cut of 44 % (zoo power seed 20261329, draw 4).
 Eigen::Array2d rise_of_the_noise(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left,
-                                 const Eigen::MatrixXd& span, bool chosen) {
+                                 const Eigen::MatrixXd& span, bool chosen, int profiles) {
   const Eigen::Index n = left.rows();
-  if (chosen && distinct_profiles(span, n) > 1) return {rise_variance(residual.col(0)), rise_variance(residual.col(1))};
+  if (chosen && profiles > 1) return {rise_variance(residual.col(0)), rise_variance(residual.col(1))};
   const ContrastVariances projected(span, n), own(Eigen::MatrixXd(2 * n, 0), n);
   Eigen::Array2d out;
   for (int c = 0; c < 2; ++c) {
@@ -602,7 +588,9 @@ namespace {
 /// the share of each frequency its columns (`span`, orthonormal) took.
 SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left, const Eigen::MatrixXd& span,
                              const SurrogateDesign& design) {
-  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose > 0), {}};
+  const int profiles =
+      design.own_profiles.value_or(time_profiles(span.rightCols(std::max<Eigen::Index>(span.cols() - 2, 0)), residual.rows()));
+  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose > 0, profiles), {}};
   for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
   return shape;
 }
@@ -686,6 +674,23 @@ double explained_share(const Eigen::MatrixX2d& residual, const SurrogateDesign& 
     best = std::max(best, Projector(SurrogateDesign{columns, 0, false, {}}, residual.rows()).share(y));
   }
   return best;
+}
+
+int time_profiles(const Eigen::MatrixXd& columns, Eigen::Index n) {
+  Eigen::MatrixXd parts(n, 2 * columns.cols());
+  Eigen::Index m = 0;
+  for (Eigen::Index j = 0; j < columns.cols(); ++j) {
+    for (int c = 0; c < 2; ++c) {
+      Eigen::VectorXd part = columns.col(j).segment(c * n, n);
+      part.array() -= part.mean();
+      // A part under a millionth of its column's squares is the other channel's rounding.
+      if (part.squaredNorm() > 1e-6 * columns.col(j).squaredNorm()) parts.col(m++) = part.normalized();
+    }
+  }
+  if (m == 0) return 0;
+  const Eigen::MatrixXd gram = parts.leftCols(m).transpose() * parts.leftCols(m);
+  const Eigen::VectorXd eigen = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gram).eigenvalues();
+  return static_cast<int>((eigen.array() > 0.01 * eigen.maxCoeff()).count());
 }
 
 std::vector<double> surrogate_p_values(const Eigen::MatrixX2d& residual, const std::vector<SurrogateDesign>& designs,

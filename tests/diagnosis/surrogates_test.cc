@@ -435,6 +435,30 @@ TEST(Surrogates, TermsOfOneProfileThatFollowASlowInputAreFoundInWhiteNoise) {
   }
 }
 
+// The time profiles a formula's own terms follow (time_profiles), which say which rise its null
+// is given: a speed term on each channel is one profile, a speed term and t^3 beside it are two,
+// a channel's constant is none, and the other channel's rounding is no part.
+TEST(Surrogates, TimeProfilesCountWhatTheTermsFollowTheirLevelsAside) {
+  Eigen::MatrixXd speed = Eigen::MatrixXd::Zero(2 * kRows, 2), mixed = speed, constant = Eigen::MatrixXd::Zero(2 * kRows, 1);
+  const Eigen::VectorXd programme = programme_ending_elsewhere();
+  for (int i = 0; i < kRows; ++i) {
+    const double t = static_cast<double>(i) / kRows;
+    const double n = 10.0 + programme(i);  // a speed about 10 rpm: mostly a level
+    speed(i, 0) = n;
+    speed(kRows + i, 1) = n;
+    speed(kRows + i, 0) = 1e-9 * n;  // rounding on the other channel
+    mixed(i, 0) = n;
+    mixed(kRows + i, 1) = t * t * t;
+    constant(i, 0) = 1.0;
+  }
+  EXPECT_EQ(time_profiles(speed, kRows), 1);
+  EXPECT_EQ(time_profiles(mixed, kRows), 2);
+  EXPECT_EQ(time_profiles(constant, kRows), 0);
+  Eigen::MatrixXd with_constant(2 * kRows, 3);
+  with_constant << speed, constant;
+  EXPECT_EQ(time_profiles(with_constant, kRows), 1);
+}
+
 // A level's standard error from 21 block means (level_standard_error). Independent means (white
 // noise) give about 1.7 / sqrt(21) of their spread: a level of 2.845 such errors is p = 0.01 at 20
 // degrees of freedom, and white noise reaches it in about 0.1 % of draws (the 1 % bound on the
