@@ -143,9 +143,9 @@ struct SurrogateDesign {
   /// chosen take the very wander the level is judged against.
   bool level_against_the_residual = false;
   /// The time profiles (time_profiles) of the terms the candidate claims, where the design is
-  /// chosen again (`choose` > 0) and those terms are not what the greedy choice on the residual
-  /// takes: the null's rise is judged by them (surrogate_test.cc, rise_of_the_noise). Empty: by
-  /// the greedy choice's.
+  /// chosen again (`choose` > 0): the null's rise is judged by them (surrogate_test.cc,
+  /// rise_of_the_noise), not by the terms the greedy choice takes on the residual, which can be
+  /// others. Empty: by the greedy choice's.
   std::optional<int> own_profiles = std::nullopt;
 };
 
@@ -153,8 +153,7 @@ struct SurrogateDesign {
 /// channel's level aside: the rank of their channels' parts as series of n rows, each part less
 /// its mean and at unit scale (a speed term on M_sy' and one on M_sz' follow one profile; a
 /// channel's constant follows none; a part under a millionth of its column's squares is none),
-/// eigenvalues of their Gram matrix under a hundredth of the
-/// largest taken as none.
+/// eigenvalues of their Gram matrix under a hundredth of the largest taken as none.
 int time_profiles(const Eigen::MatrixXd& columns, Eigen::Index n);
 
 /// The standard error of a level from the means of contiguous blocks of what wanders about it:
