@@ -588,9 +588,14 @@ namespace {
 /// the share of each frequency its columns (`span`, orthonormal) took.
 SurrogateSpectrum left_shape(const Eigen::MatrixX2d& residual, const Eigen::MatrixX2d& left, const Eigen::MatrixXd& span,
                              const SurrogateDesign& design) {
-  const int profiles =
-      design.own_profiles.value_or(time_profiles(span.rightCols(std::max<Eigen::Index>(span.cols() - 2, 0)), residual.rows()));
-  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, design.choose > 0, profiles), {}};
+  // Counted only for a design chosen again, and from the greedy choice only where the claimed
+  // terms are not given (an effect's fixed design has no choice to count).
+  const bool chosen = design.choose > 0;
+  const int profiles = !chosen                 ? 0
+                       : design.own_profiles   ? *design.own_profiles
+                                               : time_profiles(span.rightCols(std::max<Eigen::Index>(span.cols() - 2, 0)),
+                                                               residual.rows());
+  SurrogateSpectrum shape{rise_of_the_noise(residual, left, span, chosen, profiles), {}};
   for (int c = 0; c < 2; ++c) shape.removed[static_cast<std::size_t>(c)] = SurrogateSpectrum::leverage(span, residual.rows(), c);
   return shape;
 }
